@@ -1,0 +1,131 @@
+#include "expression.hpp"
+
+#include <cctype>
+
+#include "error.hpp"
+
+namespace sg {
+namespace {
+
+// Recursive descent over:  expr := term (('+'|'-') term)*
+//                          term := unary (('*'|'/') unary)*
+//                          unary := ('+'|'-') unary | power
+//                          power := atom ('^' unary)?
+//                          atom := integer | name | '(' expr ')'
+class Parser {
+ public:
+  Parser(std::string_view text, const Bindings& bindings) : text_(text), bindings_(bindings) {}
+
+  Rational parse() {
+    Rational value = expr();
+    skip_space();
+    if (pos_ != text_.size()) fail("unexpected '" + std::string(1, text_[pos_]) + "'");
+    return value;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const {
+    throw Error("in expression \"" + std::string(text_) + "\" at position " + std::to_string(pos_ + 1) + ": " + what);
+  }
+  void skip_space() {
+    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+  }
+  bool accept(char c) {
+    skip_space();
+    if (pos_ < text_.size() && text_[pos_] == c) {
+      ++pos_;
+      return true;
+    }
+    return false;
+  }
+  Rational expr() {
+    Rational value = term();
+    for (;;) {
+      if (accept('+')) value += term();
+      else if (accept('-')) value -= term();
+      else return value;
+    }
+  }
+  Rational term() {
+    Rational value = unary();
+    for (;;) {
+      if (accept('*')) {
+        value *= unary();
+      } else if (accept('/')) {
+        const std::size_t at = pos_;
+        Rational divisor = unary();
+        if (divisor == 0) {
+          pos_ = at;
+          fail("division by zero");
+        }
+        value /= divisor;
+      } else {
+        return value;
+      }
+    }
+  }
+  Rational unary() {
+    if (accept('-')) return -unary();
+    if (accept('+')) return unary();
+    return power();
+  }
+  Rational power() {
+    Rational base = atom();
+    if (!accept('^')) return base;
+    const std::size_t at = pos_;
+    Rational exponent = unary();
+    if (denominator(exponent) != 1) {
+      pos_ = at;
+      fail("exponent must be an integer");
+    }
+    if (abs(exponent) > 4096) {
+      pos_ = at;
+      fail("exponent too large");
+    }
+    long e = numerator(exponent).convert_to<long>();
+    if (e < 0 && base == 0) fail("zero to a negative power");
+    Rational result = 1;
+    for (long i = 0; i < (e < 0 ? -e : e); ++i) result *= base;
+    return e < 0 ? Rational(1 / result) : result;
+  }
+  Rational atom() {
+    skip_space();
+    if (pos_ >= text_.size()) fail("unexpected end");
+    const char c = text_[pos_];
+    if (c == '(') {
+      ++pos_;
+      Rational value = expr();
+      if (!accept(')')) fail("missing ')'");
+      return value;
+    }
+    if (std::isdigit(static_cast<unsigned char>(c))) {
+      const std::size_t start = pos_;
+      while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+      return Rational(Integer(std::string(text_.substr(start, pos_ - start))));
+    }
+    if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+      const std::size_t start = pos_;
+      while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_')) ++pos_;
+      const std::string name(text_.substr(start, pos_ - start));
+      const auto it = bindings_.find(name);
+      if (it == bindings_.end()) {
+        pos_ = start;
+        fail("unknown name '" + name + "'");
+      }
+      return it->second;
+    }
+    fail("unexpected '" + std::string(1, c) + "'");
+  }
+
+  std::string_view text_;
+  const Bindings& bindings_;
+  std::size_t pos_ = 0;
+};
+
+}  // namespace
+
+Rational evaluate_expression(std::string_view text, const Bindings& bindings) {
+  return Parser(text, bindings).parse();
+}
+
+}  // namespace sg

@@ -1,0 +1,13 @@
+#pragma once
+#include <string>
+
+#include "curve_table.hpp"
+
+namespace sg {
+
+// An SVG drawing of every scaling function of a table (the paper's Figure 2):
+// one coloured polyline per function through its exact grid values, in global
+// coordinates (special functions at their column, uniform ones at 0).
+std::string plot_table_svg(const CurveTable& table);
+
+}  // namespace sg

@@ -1,0 +1,11 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace sg {
+
+// "24" -> 1..24, "12-24" -> 12..24, "3,5,7" -> {3,5,7}; mixed lists like "1-4,8" too.
+// Sorted, without duplicates. Throws sg::Error on anything else or a rate < 1.
+std::vector<long> parse_rate_spec(const std::string& spec, const std::string& what = "--n");
+
+}  // namespace sg

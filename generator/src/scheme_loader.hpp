@@ -1,0 +1,22 @@
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scheme.hpp"
+
+namespace sg {
+
+// Directory searched for `--scheme NAME`: $STENCILGEN_SCHEMES_DIR, else the
+// source tree's schemes/ folder.
+std::filesystem::path default_schemes_dir();
+
+// `spec` is a file path (contains '/' or ends in .json) or a scheme name looked
+// up in `dir`. `overrides` are NAME=RATIONAL strings for declared parameters.
+CurveScheme load_curve_scheme(const std::string& spec, const std::vector<std::string>& overrides = {},
+                              const std::filesystem::path& dir = default_schemes_dir());
+
+// Names of the *.json files in `dir` (sorted), for listings and error messages.
+std::vector<std::string> available_schemes(const std::filesystem::path& dir = default_schemes_dir());
+
+}  // namespace sg

@@ -1,0 +1,23 @@
+#pragma once
+// Layout constants of the compact binary curve table (docs/table-format.md).
+// Shared by the generator's writer and the runtime's reader.
+#include <cstdint>
+
+namespace stencil_runtime::format {
+
+inline constexpr char kCurveMagic[8] = {'S', 'G', 'C', 'U', 'R', 'V', 'E', '\0'};
+inline constexpr std::uint32_t kCurveVersion = 1;
+
+enum class Placement : std::uint8_t { Everywhere = 0, AtMost = 1, AtLeast = 2, Single = 3 };
+
+// 64-bit FNV-1a, used for the trailing checksum.
+inline std::uint64_t fnv1a64(const unsigned char* data, std::uint64_t size) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (std::uint64_t i = 0; i < size; ++i) {
+    h ^= data[i];
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+}  // namespace stencil_runtime::format

@@ -1,0 +1,44 @@
+#pragma once
+// Loads the compact binary curve tables written by stencilgen (format in
+// docs/table-format.md) and evaluates curves from them. Doubles only.
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "binary_format.hpp"
+
+namespace stencil_runtime {
+
+struct LoadError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct CurveFunction {
+  std::string name;
+  format::Placement placement = format::Placement::Everywhere;
+  std::int64_t position = 0;
+  std::int64_t first = 0;       // grid index of values[0]
+  std::vector<double> values;   // phi(k/n) for k = first, first+1, ...
+  double at(std::int64_t k) const {
+    const std::int64_t i = k - first;
+    return (i >= 0 && i < static_cast<std::int64_t>(values.size())) ? values[static_cast<std::size_t>(i)] : 0.0;
+  }
+};
+
+struct CurveTable {
+  std::uint64_t scheme_hash = 0;
+  std::uint32_t arity = 2, n = 1;
+  std::vector<CurveFunction> functions;
+};
+
+// Throws LoadError naming the file and what is wrong (missing, truncated,
+// bad magic, unsupported version, checksum mismatch, or a scheme hash other
+// than `expected_hash` when that is nonzero).
+CurveTable load_curve_table(const std::string& path, std::uint64_t expected_hash = 0);
+
+// Limit point of a uniform curve scheme at parameter k/n:
+// sum_j points[j] * phi(k/n - j) over the control points given.
+double evaluate_uniform_curve(const CurveTable& table, const std::vector<double>& points, std::int64_t k);
+
+}  // namespace stencil_runtime

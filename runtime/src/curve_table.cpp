@@ -1,0 +1,63 @@
+#include "stencil_runtime/curve_table.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "binary_reader.hpp"
+
+namespace stencil_runtime {
+
+CurveTable load_curve_table(const std::string& path, std::uint64_t expected_hash) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw LoadError(path + ": cannot open");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string bytes = buffer.str();
+  detail::BinaryReader r(bytes, path);
+  if (bytes.size() < sizeof format::kCurveMagic + 8) r.fail("truncated (only " + std::to_string(bytes.size()) + " bytes)");
+  if (r.get_string(sizeof format::kCurveMagic) != std::string(format::kCurveMagic, sizeof format::kCurveMagic))
+    r.fail("not a stencilgen binary curve table (bad magic)");
+  const auto stored = [&] {
+    std::uint64_t v;
+    std::memcpy(&v, bytes.data() + bytes.size() - 8, 8);
+    return v;
+  }();
+  if (stored != format::fnv1a64(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size() - 8))
+    r.fail("checksum mismatch: the file is corrupt or truncated");
+  CurveTable t;
+  const auto version = r.get<std::uint32_t>();
+  if (version != format::kCurveVersion)
+    r.fail("format version " + std::to_string(version) + " is not supported (expected " + std::to_string(format::kCurveVersion) + ")");
+  t.arity = r.get<std::uint32_t>();
+  t.n = r.get<std::uint32_t>();
+  const auto count = r.get<std::uint32_t>();
+  t.scheme_hash = r.get<std::uint64_t>();
+  if (expected_hash != 0 && t.scheme_hash != expected_hash) r.fail("made from a different scheme (hash mismatch)");
+  if (t.n == 0 || (t.arity != 2 && t.arity != 3)) r.fail("invalid header (n or arity)");
+  for (std::uint32_t i = 0; i < count; ++i) {
+    CurveFunction f;
+    f.name = r.get_string(r.get<std::uint32_t>());
+    const auto placement = r.get<std::uint8_t>();
+    if (placement > 3) r.fail("invalid placement code " + std::to_string(placement));
+    f.placement = static_cast<format::Placement>(placement);
+    f.position = r.get<std::int64_t>();
+    f.first = r.get<std::int64_t>();
+    const auto size = r.get<std::uint32_t>();
+    if (size > (bytes.size() - r.position()) / 8) r.fail("truncated value block in function '" + f.name + "'");
+    f.values.resize(size);
+    for (auto& v : f.values) v = r.get<double>();
+    t.functions.push_back(std::move(f));
+  }
+  if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
+  return t;
+}
+
+double evaluate_uniform_curve(const CurveTable& table, const std::vector<double>& points, std::int64_t k) {
+  if (table.functions.size() != 1) throw LoadError("evaluate_uniform_curve needs a uniform (one-function) table");
+  const CurveFunction& phi = table.functions.front();
+  double sum = 0;
+  for (std::size_t j = 0; j < points.size(); ++j) sum += points[j] * phi.at(k - static_cast<std::int64_t>(j) * table.n);
+  return sum;
+}
+
+}  // namespace stencil_runtime
