@@ -1,0 +1,30 @@
+#pragma once
+// Runs the stencilgen executable and captures its exit code and output.
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+struct CliResult {
+  int status;
+  std::string output;  // stdout and stderr together
+};
+
+inline CliResult run_stencilgen(const std::string& args) {
+  const std::string cmd = std::string(STENCILGEN_EXE) + " " + args + " 2>&1";
+  CliResult r{0, ""};
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf{};
+  while (std::size_t got = std::fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), got);
+  const int raw = pclose(pipe);
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return r;
+}
+
+// A fresh empty directory under the system temp dir.
+inline std::filesystem::path scratch_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("stencilgen-test-" + name + "-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}

@@ -1,0 +1,114 @@
+// Every bad input gets a clear error, a nonzero exit code, and leaves no file.
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "cli.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+fs::path write_scheme(const fs::path& dir, const std::string& name, const std::string& body) {
+  const fs::path p = dir / (name + ".json");
+  std::ofstream(p) << body;
+  return p;
+}
+std::string uniform(const std::string& first, const std::string& coeffs, int arity = 2) {
+  return R"({"format": "stencilgen-scheme", "version": 1, "name": "bad", "type": "curve-uniform", "arity": )" +
+         std::to_string(arity) + R"(, "mask": {"first": )" + first + R"(, "coefficients": [)" + coeffs + "]}}";
+}
+// Runs a generation that must fail, with `expected` in its message and nothing under `out`.
+void expect_failure(const std::string& args, const std::string& expected, const fs::path& out) {
+  const CliResult r = run_stencilgen(args + " --out " + out.string());
+  INFO(args << "\n" << r.output);
+  CHECK(r.status != 0);
+  CHECK(r.output.find(expected) != std::string::npos);
+  CHECK(r.output.find("error") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+  // No staging directory left beside it either.
+  for (const auto& e : fs::directory_iterator(out.parent_path()))
+    CHECK(e.path().filename().string().find("staging") == std::string::npos);
+}
+}  // namespace
+
+TEST_CASE("malformed scheme files are rejected with the file and field named") {
+  const fs::path dir = scratch_dir("malformed");
+  const fs::path out = dir / "out";
+  expect_failure("--scheme " + write_scheme(dir, "json", "{ not json").string() + " --n 3", "not valid JSON", out);
+  expect_failure("--scheme " + write_scheme(dir, "float", uniform("-1", "0.5, 1, 0.5")).string() + " --n 3",
+                 "mask.coefficients[0]", out);
+  expect_failure("--scheme " + write_scheme(dir, "nofirst", R"({"format": "stencilgen-scheme", "version": 1, "name": "x", "type": "curve-uniform", "arity": 2, "mask": {"coefficients": ["1"]}})").string() + " --n 3",
+                 "missing required field 'first'", out);
+  expect_failure("--scheme " + write_scheme(dir, "arity", uniform("-1", "\"1/2\", \"1\", \"1/2\"", 4)).string() + " --n 3",
+                 "arity: must be 2 or 3", out);
+  expect_failure("--scheme " + write_scheme(dir, "type", R"({"format": "stencilgen-scheme", "version": 1, "name": "x", "type": "surface"})").string() + " --n 3",
+                 "unknown type 'surface'", out);
+  expect_failure("--scheme " + write_scheme(dir, "expr", uniform("-1", "\"1/2 + q\", \"1\", \"1/2\"")).string() + " --n 3",
+                 "unknown name 'q'", out);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("masks without a unique solution are refused with the reason") {
+  const fs::path dir = scratch_dir("singular");
+  const fs::path out = dir / "out";
+  // Sub-masks 1/2 + 1/2 and 1: partition of unity is impossible.
+  expect_failure("--scheme " + write_scheme(dir, "nopou", uniform("-1", "\"1/2\", \"1\", \"1/2\", \"1/2\"")).string() + " --n 2",
+                 "no solution", out);
+  // phi = box on [0, 3] / 3 (mask 1 + z^3): at n = 5 the residue cycle {1/5, 2/5, 4/5, 3/5}
+  // leaves a free solution space, reported with its dimension.
+  expect_failure("--scheme " + write_scheme(dir, "free", uniform("-1", "\"1\", \"0\", \"0\", \"1\"")).string() + " --n 5",
+                 "solution space of dimension", out);
+  // The box mask 1 + z: phi is discontinuous, the grid values cannot sum to 1.
+  expect_failure("--scheme " + write_scheme(dir, "box", uniform("0", "\"1\", \"1\"")).string() + " --n 3",
+                 "no solution", out);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("unknown schemes, bad rates and bad parameters are refused") {
+  const fs::path dir = scratch_dir("args");
+  const fs::path out = dir / "out";
+  expect_failure("--scheme no-such-scheme --n 3", "unknown scheme 'no-such-scheme'", out);
+  expect_failure("--scheme ./missing.json --n 3", "no such scheme file", out);
+  expect_failure("--scheme fourpoint --n 0", "less than 1", out);
+  expect_failure("--scheme fourpoint --n=-2", "not a positive integer", out);
+  expect_failure("--scheme fourpoint --n 3 --param q=1/2", "has no parameter 'q'", out);
+  expect_failure("--scheme fourpoint --n 3 --param w=1/0", "division by zero", out);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a successful run writes JSON and binary tables for every rate, and verify accepts them") {
+  const fs::path dir = scratch_dir("ok");
+  const CliResult r = run_stencilgen("--scheme fourpoint --n 2-4 --out " + (dir / "t").string());
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  for (int n = 2; n <= 4; ++n) {
+    CHECK(fs::exists(dir / "t" / "fourpoint" / ("n" + std::to_string(n) + ".json")));
+    CHECK(fs::exists(dir / "t" / "fourpoint" / ("n" + std::to_string(n) + ".sgc")));
+  }
+  CHECK_FALSE(fs::exists(dir / "t" / "fourpoint" / "n1.json"));
+  const CliResult v = run_stencilgen("verify " + (dir / "t" / "fourpoint" / "n3.json").string());
+  INFO(v.output);
+  CHECK(v.status == 0);
+  CHECK(v.output.find("OK") != std::string::npos);
+
+  // A tampered table fails verification with a nonzero exit code.
+  const fs::path table = dir / "t" / "fourpoint" / "n3.json";
+  std::string text;
+  {
+    std::ifstream in(table);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto at = text.find("\"4240/5589\"");
+  REQUIRE(at != std::string::npos);
+  text.replace(at, 11, "\"4241/5589\"");
+  std::ofstream(table) << text;
+  const CliResult bad = run_stencilgen("verify " + table.string());
+  CHECK(bad.status != 0);
+  CHECK(bad.output.find("FAIL") != std::string::npos);
+
+  const CliResult plot = run_stencilgen("plot --scheme fourpoint --n 21 --out " + (dir / "p.svg").string());
+  CHECK(plot.status == 0);
+  CHECK(fs::file_size(dir / "p.svg") > 1000);
+  fs::remove_all(dir);
+}
