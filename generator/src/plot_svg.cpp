@@ -12,7 +12,8 @@ std::string plot_table_svg(const CurveTable& t) {
   struct Line { std::string name; std::vector<std::pair<double, double>> pts; };
   std::vector<Line> lines;
   for (const auto& f : t.functions) {
-    const double offset = f.placement == Placement::Single ? static_cast<double>(f.position) : 0.0;
+    // Each non-uniform type is drawn as the basis of the control point it is placed at.
+    const double offset = f.placement == Placement::Everywhere ? 0.0 : static_cast<double>(f.position);
     Line line{f.name, {}};
     const double lo = to_double(f.support_lo) + offset, hi = to_double(f.support_hi) + offset;
     line.pts.emplace_back(lo, 0.0);
