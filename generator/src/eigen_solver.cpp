@@ -5,6 +5,7 @@
 
 #include "error.hpp"
 #include "exact_linear_system.hpp"
+#include "integer_division.hpp"
 
 namespace sg {
 
@@ -44,8 +45,7 @@ CurveSolution solve_by_eigenvector(const CurveScheme& s, long n) {
     std::vector<std::pair<std::size_t, Rational>> eq;
     for (std::size_t h : types) {
       // -(K - n p) in yr[h]  <=>  p in [(K + y_first)/n, (K + y_last)/n]
-      const long pmin = (K + yr[h].first) >= 0 ? (K + yr[h].first + n - 1) / n : -((-(K + yr[h].first)) / n);
-      const long pmax = (K + yr[h].last) >= 0 ? (K + yr[h].last) / n : -((-(K + yr[h].last) + n - 1) / n);
+      const long pmin = ceil_div(K + yr[h].first, n), pmax = floor_div(K + yr[h].last, n);
       for (long p = pmin; p <= pmax; ++p)
         if (s.types[h].placed_at(p)) eq.emplace_back(static_cast<std::size_t>(index(h, -(K - n * p))), Rational(1));
     }

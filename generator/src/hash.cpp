@@ -2,15 +2,13 @@
 
 #include <cstdio>
 
+#include "stencil_runtime/binary_format.hpp"
+
 namespace sg {
 
 std::uint64_t fnv1a64(std::string_view bytes) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
+  // One definition shared with the runtime's table checksum.
+  return stencil_runtime::format::fnv1a64(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
 }
 
 std::string hex64(std::uint64_t value) {

@@ -2,12 +2,9 @@
 
 #include <algorithm>
 
-namespace sg {
-namespace {
-long floor_div(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-long ceil_div(long a, long b) { return -floor_div(-a, b); }
-}  // namespace
+#include "integer_division.hpp"
 
+namespace sg {
 std::vector<std::vector<std::size_t>> pou_groups(const CurveScheme& s, const std::vector<std::size_t>& invariant) {
   std::vector<std::size_t> left, right;
   for (std::size_t h : invariant) {

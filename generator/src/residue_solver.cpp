@@ -5,13 +5,11 @@
 
 #include "error.hpp"
 #include "exact_linear_system.hpp"
+#include "integer_division.hpp"
 #include "partition_of_unity.hpp"
 
 namespace sg {
 namespace {
-
-long floor_div(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-long pos_mod(long a, long b) { return ((a % b) + b) % b; }
 
 // Unknowns of one residue class r: values phi_h(j + r/n) for invariant types h.
 struct ResidueLayout {
@@ -46,7 +44,7 @@ class InvariantPart {
       ResidueLayout& L = layouts_[r];
       for (std::size_t h : inv_) {
         const GridRange& g = sol.types[h].range;
-        const long jmin = floor_div(g.first - r + n - 1, n), jmax = floor_div(g.last - r, n);
+        const long jmin = ceil_div(g.first - r, n), jmax = floor_div(g.last - r, n);
         if (jmax < jmin) continue;
         L.blocks.push_back({h, jmin, jmax, L.size});
         L.size += static_cast<std::size_t>(jmax - jmin + 1);
