@@ -1,5 +1,8 @@
 // The paper's non-uniform cubic B-spline against Cox-de Boor on its knot vector.
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
 
 #include "eigen_solver.hpp"
 #include "independent.hpp"
@@ -8,8 +11,10 @@
 
 using independent::Q;
 
-TEST_CASE("nubspline3 equals the non-uniform cubic B-spline basis after reparameterisation, n = 1..24") {
-  const sg::CurveScheme s = sg::load_curve_scheme("nubspline3");
+TEST_CASE("nubspline3, from knots and from explicit columns, equals the non-uniform cubic B-spline basis after "
+          "reparameterisation, n = 1..24") {
+  for (const std::string name : {"nubspline3", "nubspline3-columns"}) {
+  const sg::CurveScheme s = sg::load_curve_scheme(name);
   REQUIRE(s.types.size() == 5);  // left, right and the three special columns of the paper
   auto knot = [](long i) { return i < 0 ? Q(2 * i) : Q(i); };
   auto t_of = [](const Q& x) { return x < 0 ? Q(2 * x) : x; };
@@ -23,10 +28,11 @@ TEST_CASE("nubspline3 equals the non-uniform cubic B-spline basis after reparame
       REQUIRE(type < s.types.size());
       for (long k = (j - 3) * n; k <= (j + 3) * n; ++k) {
         const Q x(k, n);
-        INFO("n = " << n << " control " << j << " x = " << x.str());
+        INFO(name << " n = " << n << " control " << j << " x = " << x.str());
         REQUIRE(sol.types[type].at(k - j * n) == independent::cox_de_boor(knot, j - 2, 3, t_of(x)));
       }
     }
+  }
   }
 }
 
@@ -42,4 +48,30 @@ TEST_CASE("nubspline3 has the paper's five column types with uniform cubic B-spl
     REQUIRE(s.types[h].terms.size() == 5);
     for (std::size_t i = 0; i < 5; ++i) CHECK(s.types[h].terms[i].coeff == cubic[i]);
   }
+}
+
+TEST_CASE("column schemes are validated: contiguous special columns, uniform columns reaching only uniform points") {
+  const auto dir = std::filesystem::temp_directory_path() / ("stencilgen-columns-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  auto scheme_with = [&](const std::string& name, const std::string& columns) {
+    const auto path = dir / (name + ".json");
+    std::ofstream(path) << R"({"format": "stencilgen-scheme", "version": 1, "name": ")" << name
+                        << R"(", "type": "curve-columns", "arity": 2, "mask": {"first": -2, "coefficients": ["1/8", "1/2", "3/4", "1/2", "1/8"]}, "special_columns": [)"
+                        << columns << "]}";
+    return path.string();
+  };
+  const std::string col = R"("first": -2, "coefficients": ["1/8", "1/2", "3/4", "1/2", "1/8"]})";
+  // Uniform columns written out as special ones: the basis is still the uniform cubic B-spline.
+  const sg::CurveScheme plain = sg::load_curve_scheme(scheme_with("plain", R"({"index": -1, "first": -4, "coefficients": ["1/8", "1/2", "3/4", "1/2", "1/8"]}, {"index": 0, )" + col + R"(, {"index": 1, "first": 0, "coefficients": ["1/8", "1/2", "3/4", "1/2", "1/8"]})"));
+  const sg::CurveSolution sol = sg::solve_by_residues(plain, 5);
+  auto knot = [](long i) { return Q(i - 2); };
+  for (std::size_t h = 0; h < plain.types.size(); ++h)
+    for (long k = -15; k <= 15; ++k) REQUIRE(sol.types[h].at(k) == independent::cox_de_boor(knot, 0, 3, Q(k, 5)));
+  CHECK_THROWS_WITH(sg::load_curve_scheme(scheme_with("gap", R"({"index": -1, "first": -4, "coefficients": ["1"]}, {"index": 1, "first": 0, "coefficients": ["1"]})")),
+                    Catch::Contains("contiguous"));
+  CHECK_THROWS_WITH(sg::load_curve_scheme(scheme_with("narrow", R"({"index": 0, )" + col)),
+                    Catch::Contains("list more columns as special"));
+  CHECK_THROWS_WITH(sg::load_curve_scheme(scheme_with("twice", R"({"index": 0, )" + col + R"(, {"index": 0, )" + col)),
+                    Catch::Contains("listed twice"));
+  std::filesystem::remove_all(dir);
 }

@@ -66,8 +66,13 @@ CurveSolution solve_by_eigenvector(const CurveScheme& s, long n) {
   for (std::size_t h = 0; h < T; ++h) far = std::max({far, std::labs(yr[h].first), std::labs(yr[h].last)});
   if (!has_special)
     for (long K = 0; K < n; ++K) add_pou(K, all);  // translation invariance: one period
-  else
-    for (long K = lo - far - n; K <= hi + far + n; ++K) add_pou(K, all);
+  else {
+    // Every point of the special region, and one period on each side far enough
+    // out that only one uniform type is present there.
+    for (long K = lo; K <= hi; ++K) add_pou(K, all);
+    for (long K = lo - far - n; K < lo - far; ++K) add_pou(K, all);
+    for (long K = hi + far + 1; K <= hi + far + n; ++K) add_pou(K, all);
+  }
 
   const LinearSolution result = sys.solve();
   if (result.status != LinearSolution::Status::Unique)
