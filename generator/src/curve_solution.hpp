@@ -27,7 +27,4 @@ struct CurveSolution {
   bool operator==(const CurveSolution& o) const;
 };
 
-// Which route produced a solution; both must agree.
-enum class Route { Residue, Eigen };
-
 }  // namespace sg

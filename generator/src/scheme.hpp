@@ -11,7 +11,6 @@
 // basis of control point p is phi_h(x - p). Parameters are global: control
 // point j sits at x = j, and the special point is x = 0.
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,9 +62,8 @@ struct CurveScheme {
   Bindings parameters;         // resolved values (after command-line overrides)
   std::uint64_t hash = 0;      // of the canonical scheme content, parameters included
   std::vector<ScalingType> types;
-  std::optional<KnotSpec> knots;
 
-  // Uniform mask of a one-type scheme: coefficients s_first .. s_last.
+  // A uniform scheme has a single type, placed at every integer.
   bool is_uniform() const { return types.size() == 1; }
 };
 

@@ -256,7 +256,6 @@ CurveScheme load_curve_scheme(const std::string& spec, const std::vector<std::st
     k.left_spacing = ctx.rational(ctx.require(spacing, "left", "knot_spacing"), "knot_spacing.left", s.parameters);
     k.right_spacing = ctx.rational(ctx.require(spacing, "right", "knot_spacing"), "knot_spacing.right", s.parameters);
     if (k.left_spacing <= 0 || k.right_spacing <= 0) ctx.fail("knot_spacing", "spacings must be positive");
-    s.knots = k;
     build_from_knots(s, k, ctx);
   } else {
     ctx.fail("type", "unknown type '" + kind + "' (expected curve-uniform, curve-columns or curve-knots)");
