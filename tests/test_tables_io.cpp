@@ -14,6 +14,15 @@
 
 namespace fs = std::filesystem;
 
+namespace {
+// Solves `s` at rate n exactly and writes its binary table to `file`; returns the exact table.
+sg::CurveTable write_binary_table(const sg::CurveScheme& s, long n, const fs::path& file) {
+  sg::CurveTable t = sg::make_table(s, sg::solve_by_residues(s, n));
+  std::ofstream(file, std::ios::binary) << sg::curve_table_to_binary(t, s.hash);
+  return t;
+}
+}  // namespace
+
 TEST_CASE("JSON tables round-trip exactly, for uniform and non-uniform schemes") {
   for (const std::string name : {"fourpoint", "nubspline3", "ternary-dd4"}) {
     const sg::CurveScheme s = sg::load_curve_scheme(name);
@@ -28,9 +37,8 @@ TEST_CASE("JSON tables round-trip exactly, for uniform and non-uniform schemes")
 TEST_CASE("the runtime loads binary tables whose values are the exact ones rounded to double") {
   const fs::path dir = scratch_dir("binary");
   const sg::CurveScheme s = sg::load_curve_scheme("nubspline3");
-  const sg::CurveTable t = sg::make_table(s, sg::solve_by_residues(s, 24));
   const fs::path file = dir / "n24.sgc";
-  std::ofstream(file, std::ios::binary) << sg::curve_table_to_binary(t, s.hash);
+  const sg::CurveTable t = write_binary_table(s, 24, file);
 
   const auto loaded = stencil_runtime::load_curve_table(file.string(), s.hash);
   CHECK(loaded.n == 24);
@@ -67,9 +75,8 @@ TEST_CASE("the runtime loads binary tables whose values are the exact ones round
 TEST_CASE("a runtime curve evaluation from binary tables reproduces the exact limit point") {
   const fs::path dir = scratch_dir("evalcurve");
   const sg::CurveScheme s = sg::load_curve_scheme("dd6");
-  const sg::CurveTable t = sg::make_table(s, sg::solve_by_residues(s, 5));
   const fs::path file = dir / "n5.sgc";
-  std::ofstream(file, std::ios::binary) << sg::curve_table_to_binary(t, s.hash);
+  write_binary_table(s, 5, file);
   const auto table = stencil_runtime::load_curve_table(file.string());
   // Control points p_j = j^5 are reproduced by DD6 (degree-5 exactness): the limit at x is x^5.
   std::vector<double> points;

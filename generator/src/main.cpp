@@ -1,14 +1,13 @@
 // stencilgen: exact evaluation stencils for stationary subdivision schemes.
 #include <CLI/CLI.hpp>
 #include <chrono>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "atomic_output.hpp"
 #include "error.hpp"
 #include "generate.hpp"
 #include "plot_svg.hpp"
+#include "read_file.hpp"
 #include "rate_spec.hpp"
 #include "residue_solver.hpp"
 #include "scheme_loader.hpp"
@@ -16,14 +15,6 @@
 #include "verify.hpp"
 
 namespace {
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw sg::Error(path + ": cannot open");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 int run_generate(const std::string& scheme_spec, const std::string& rates_spec, const std::string& out,
                  const std::vector<std::string>& params, const std::string& route, bool quiet) {
@@ -48,7 +39,7 @@ int run_verify(const std::vector<std::string>& files, const std::string& scheme_
                const std::vector<std::string>& params) {
   int bad = 0;
   for (const std::string& file : files) {
-    const sg::CurveTable table = sg::curve_table_from_json(read_file(file), file);
+    const sg::CurveTable table = sg::curve_table_from_json(sg::read_file(file), file);
     std::vector<std::string> overrides = params;
     if (overrides.empty())
       for (const auto& [k, v] : table.parameters) overrides.push_back(k + "=" + sg::to_string(v));

@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "error.hpp"
 #include "hash.hpp"
 #include "knot_insertion.hpp"
+#include "read_file.hpp"
 #include "support.hpp"
 
 namespace sg {
@@ -175,15 +174,10 @@ CurveScheme load_curve_scheme(const std::string& spec, const std::vector<std::st
   }
   const Context ctx(file.string());
   json doc;
-  {
-    std::ifstream in(file);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    try {
-      doc = json::parse(buffer.str());
-    } catch (const json::parse_error& e) {
-      ctx.fail("", std::string("not valid JSON: ") + e.what());
-    }
+  try {
+    doc = json::parse(read_file(file));
+  } catch (const json::parse_error& e) {
+    ctx.fail("", std::string("not valid JSON: ") + e.what());
   }
   if (!doc.is_object()) ctx.fail("", "expected a JSON object");
   if (ctx.require(doc, "format", "") != "stencilgen-scheme") ctx.fail("format", "expected \"stencilgen-scheme\"");
