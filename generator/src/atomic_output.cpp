@@ -26,6 +26,8 @@ void OutputTransaction::commit() {
   if (ec) abandon("cannot create staging directory " + staging.string() + ": " + ec.message());
   for (const auto& [name, bytes] : files_) {
     const fs::path file = staging / name;
+    fs::create_directories(file.parent_path(), ec);
+    if (ec) abandon("cannot create " + file.parent_path().string() + ": " + ec.message());
     std::ofstream out(file, std::ios::binary);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     out.close();
@@ -38,7 +40,8 @@ void OutputTransaction::commit() {
   }
   // Target exists: move file by file (each rename is atomic; all files are already complete).
   for (const auto& [name, bytes] : files_) {
-    fs::rename(staging / name, target / name, ec);
+    fs::create_directories((target / name).parent_path(), ec);
+    if (!ec) fs::rename(staging / name, target / name, ec);
     if (ec) abandon("cannot move " + name + " into " + target.string() + ": " + ec.message());
   }
   fs::remove_all(staging, ec);

@@ -12,6 +12,7 @@ namespace sg {
 class OutputTransaction {
  public:
   explicit OutputTransaction(std::filesystem::path target_dir) : target_(std::move(target_dir)) {}
+  // `relative_name` may contain subdirectories ("v5/n24.json").
   void add(const std::string& relative_name, std::string bytes) { files_[relative_name] = std::move(bytes); }
   std::size_t size() const { return files_.size(); }
   // Throws sg::Error (naming the path) on any failure, leaving nothing behind.

@@ -6,6 +6,9 @@
 #include "atomic_output.hpp"
 #include "error.hpp"
 #include "generate.hpp"
+#include "generate_surface.hpp"
+#include "quad_scheme_loader.hpp"
+#include "smoothness_analysis.hpp"
 #include "plot_svg.hpp"
 #include "read_file.hpp"
 #include "rate_spec.hpp"
@@ -33,6 +36,59 @@ int run_generate(const std::string& scheme_spec, const std::string& rates_spec, 
   std::cout << "wrote " << tables.size() << " exact tables (JSON + binary) for '" << scheme.name << "' to "
             << (std::filesystem::path(out) / scheme.name).string() << " in " << secs << " s\n";
   return 0;
+}
+
+std::vector<int> parse_valences(const std::string& spec) {
+  std::vector<int> valences;
+  for (long v : sg::parse_rate_spec(spec, "--valence")) {
+    if (v < 3) throw sg::Error("--valence: valences start at 3, got " + std::to_string(v));
+    valences.push_back(static_cast<int>(v));
+  }
+  return valences;
+}
+
+int run_generate_surface(const std::string& scheme_spec, const std::string& rates_spec, const std::string& valence_spec,
+                         const std::string& out, const std::vector<std::string>& params, const std::string& precision,
+                         bool quiet) {
+  const auto rates = sg::parse_rate_spec(rates_spec);
+  const auto valences = parse_valences(valence_spec);
+  const sg::QuadScheme scheme = sg::load_quad_scheme(scheme_spec, params);
+  const auto start = std::chrono::steady_clock::now();
+  for (int v : valences) {
+    scheme.vertex_rule(v);
+    const sg::SmoothnessReport report = sg::analyse_valence(scheme, v, 16);
+    if (!report.ok())
+      std::cerr << "stencilgen: warning: '" << scheme.name << "' fails the smoothness analysis at valence " << v
+                << " (tables are still exact; see `stencilgen analyze`):\n"
+                << sg::format_report(report);
+  }
+  auto progress = [&](const std::string& line) {
+    if (!quiet) std::cerr << line << "\n";
+  };
+  const auto set = sg::generate_surface_tables(scheme, valences, rates, progress);
+  const std::size_t bytes = sg::write_surface_tables(
+      scheme, set, out, precision == "single" ? sg::BinaryPrecision::Single : sg::BinaryPrecision::Double);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "wrote exact surface tables for '" << scheme.name << "' (valences " << valence_spec << ", rates "
+            << rates.front() << ".." << rates.back() << ", " << rates.size() * valences.size() << " tables) to "
+            << (std::filesystem::path(out) / scheme.name).string() << " in " << secs << " s; binary "
+            << scheme.name << ".sgs: " << bytes << " bytes (" << precision << " precision)\n";
+  return 0;
+}
+
+int run_analyze(const std::string& scheme_spec, const std::string& valence_spec, const std::vector<std::string>& params,
+                long samples) {
+  const sg::QuadScheme scheme = sg::load_quad_scheme(scheme_spec, params);
+  int failed = 0;
+  std::cout << "smoothness analysis of '" << scheme.name << "' (" << scheme.source << ")\n";
+  for (int v : parse_valences(valence_spec)) {
+    scheme.vertex_rule(v);
+    const sg::SmoothnessReport r = sg::analyse_valence(scheme, v, samples);
+    if (!r.ok()) ++failed;
+    std::cout << sg::format_report(r);
+  }
+  std::cout << (failed == 0 ? "all valences pass\n" : std::to_string(failed) + " valence(s) FAIL\n");
+  return failed == 0 ? 0 : 1;
 }
 
 int run_verify(const std::vector<std::string>& files, const std::string& scheme_spec,
@@ -78,6 +134,9 @@ int main(int argc, char** argv) {
       "Solves the scaling relations of a scheme (described as data in schemes/*.json) exactly on the\n"
       "grid (1/n)Z, by two independent routes, verifies the result, and writes exact JSON tables plus a\n"
       "compact binary form.\n\n"
+      "Quad surface schemes (type \"quad\") get tables around extraordinary vertices of the given valences.\n\n"
+      "  stencilgen --scheme nonpoly --valence 3-8 --n 24 --out tables\n"
+      "  stencilgen analyze --scheme nonpoly --valence 3-16\n"
       "  stencilgen --scheme fourpoint --n 24 --out tables     rates 1..24\n"
       "  stencilgen --scheme nubspline3 --n 12-24 --out tables\n"
       "  stencilgen --scheme fourpoint --param w=1/32 --n 3,5,7 --out tables\n"
@@ -95,6 +154,20 @@ int main(int argc, char** argv) {
   app.add_option("--route", route, "solver: residue (a), eigen (b) or both, cross-checked (default)")
       ->check(CLI::IsMember({"residue", "eigen", "both"}));
   app.add_flag("-q,--quiet", quiet, "no progress lines on stderr");
+  std::string valences, precision = "double";
+  app.add_option("--valence", valences, "quad schemes: valences, e.g. 3-8 or 3,5,6 (default 3-8)");
+  app.add_option("--binary-precision", precision, "quad schemes: scalars of the .sgs file, double (default) or single")
+      ->check(CLI::IsMember({"double", "single"}));
+
+  CLI::App* analyze = app.add_subcommand("analyze", "smoothness analysis of a quad scheme's extraordinary rules");
+  std::string analyze_scheme, analyze_valences = "3-16";
+  std::vector<std::string> analyze_params;
+  long analyze_samples = 32;
+  analyze->add_option("--scheme", analyze_scheme, "quad scheme name or path")->required();
+  analyze->add_option("--valence", analyze_valences, "valences, e.g. 3-16 (default)");
+  analyze->add_option("--samples", analyze_samples, "characteristic map sampled on the grid 1/S per sector (default 32)")
+      ->check(CLI::Range(2, 512));
+  analyze->add_option("--param", analyze_params, "parameter overrides NAME=RATIONAL");
 
   CLI::App* verify = app.add_subcommand("verify", "re-check tables from disk exactly against their scheme");
   std::vector<std::string> verify_files;
@@ -118,6 +191,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     if (verify->parsed()) return run_verify(verify_files, verify_scheme, verify_params);
+    if (analyze->parsed()) return run_analyze(analyze_scheme, analyze_valences, analyze_params, analyze_samples);
     if (plot->parsed()) return run_plot(plot_scheme, plot_n, plot_out, plot_params);
     if (list->parsed()) {
       std::cout << "schemes in " << sg::default_schemes_dir().string() << ":\n";
@@ -128,6 +202,9 @@ int main(int argc, char** argv) {
       std::cerr << "stencilgen: error: generation needs --scheme, --n and --out (see --help)\n";
       return 2;
     }
+    if (sg::scheme_type(scheme) == "quad")
+      return run_generate_surface(scheme, rates, valences.empty() ? "3-8" : valences, out, params, precision, quiet);
+    if (!valences.empty()) throw sg::Error("--valence applies to quad surface schemes; '" + scheme + "' is a curve scheme");
     return run_generate(scheme, rates, out, params, route, quiet);
   } catch (const sg::Error& e) {
     std::cerr << "stencilgen: error: " << e.what() << "\n";

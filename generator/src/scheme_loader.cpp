@@ -8,6 +8,7 @@
 #include "hash.hpp"
 #include "knot_insertion.hpp"
 #include "read_file.hpp"
+#include "scheme_file.hpp"
 #include "support.hpp"
 
 namespace sg {
@@ -22,31 +23,10 @@ struct Mask {
   long last() const { return first + static_cast<long>(coefficients.size()) - 1; }
 };
 
-// Error context: "FILE: FIELD: message".
-class Context {
+// Error context "FILE: FIELD: message", plus the curve mask reader.
+class Context : public SchemeContext {
  public:
-  explicit Context(std::string file) : file_(std::move(file)) {}
-  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
-    throw Error(file_ + ": " + (field.empty() ? "" : field + ": ") + what);
-  }
-  const json& require(const json& obj, const std::string& key, const std::string& field) const {
-    if (!obj.is_object() || !obj.contains(key)) fail(field, "missing required field '" + key + "'");
-    return obj.at(key);
-  }
-  long integer(const json& j, const std::string& field) const {
-    if (!j.is_number_integer()) fail(field, "expected an integer, got " + j.dump());
-    return j.get<long>();
-  }
-  Rational rational(const json& j, const std::string& field, const Bindings& b) const {
-    if (j.is_number_integer()) return Rational(j.get<long>());
-    if (!j.is_string())
-      fail(field, "expected an exact rational string such as \"-1/16\" (floating point is not exact), got " + j.dump());
-    try {
-      return evaluate_expression(j.get<std::string>(), b);
-    } catch (const Error& e) {
-      fail(field, e.what());
-    }
-  }
+  using SchemeContext::SchemeContext;
   Mask mask(const json& j, const std::string& field, const Bindings& b) const {
     Mask m;
     m.first = integer(require(j, "first", field), field + ".first");
@@ -63,10 +43,6 @@ class Context {
     m.first += static_cast<long>(lead);
     return m;
   }
-  const std::string& file() const { return file_; }
-
- private:
-  std::string file_;
 };
 
 std::vector<Term> mask_terms(const Mask& m, std::size_t type) {
@@ -163,55 +139,15 @@ std::vector<std::string> available_schemes(const fs::path& dir) {
 }
 
 CurveScheme load_curve_scheme(const std::string& spec, const std::vector<std::string>& overrides, const fs::path& dir) {
-  const bool is_path = spec.find('/') != std::string::npos || spec.ends_with(".json");
-  const fs::path file = is_path ? fs::path(spec) : dir / (spec + ".json");
-  if (spec.empty()) throw Error("empty scheme name");
-  if (!fs::is_regular_file(file)) {
-    if (is_path) throw Error(spec + ": no such scheme file");
-    std::string list;
-    for (const auto& n : available_schemes(dir)) list += (list.empty() ? "" : ", ") + n;
-    throw Error("unknown scheme '" + spec + "' (no " + file.string() + "); available: " + list);
-  }
+  const fs::path file = resolve_scheme_file(spec, dir);
   const Context ctx(file.string());
-  json doc;
-  try {
-    doc = json::parse(read_file(file));
-  } catch (const json::parse_error& e) {
-    ctx.fail("", std::string("not valid JSON: ") + e.what());
-  }
-  if (!doc.is_object()) ctx.fail("", "expected a JSON object");
-  if (ctx.require(doc, "format", "") != "stencilgen-scheme") ctx.fail("format", "expected \"stencilgen-scheme\"");
-  if (ctx.integer(ctx.require(doc, "version", ""), "version") != 1) ctx.fail("version", "only version 1 is supported");
+  const json doc = read_scheme_document(file, ctx);
 
   CurveScheme s;
   s.source = file.string();
-  const json& name = ctx.require(doc, "name", "");
-  if (!name.is_string() || name.get<std::string>().empty()) ctx.fail("name", "expected a non-empty string");
-  s.name = name.get<std::string>();
+  s.name = doc.at("name").get<std::string>();
   s.description = doc.value("description", "");
-
-  // Parameters: declared defaults, then overrides NAME=VALUE.
-  if (doc.contains("parameters")) {
-    if (!doc["parameters"].is_object()) ctx.fail("parameters", "expected an object");
-    for (const auto& [key, value] : doc["parameters"].items())
-      s.parameters[key] = ctx.rational(value, "parameters." + key, {});
-  }
-  for (const std::string& o : overrides) {
-    const auto eq = o.find('=');
-    if (eq == std::string::npos) throw Error("parameter override '" + o + "' is not NAME=VALUE");
-    const std::string key = o.substr(0, eq);
-    if (!s.parameters.count(key)) {
-      std::string known;
-      for (const auto& [k, v] : s.parameters) known += (known.empty() ? "" : ", ") + k;
-      throw Error("scheme '" + s.name + "' has no parameter '" + key + "'" +
-                  (known.empty() ? " (it has none)" : " (it has: " + known + ")"));
-    }
-    try {
-      s.parameters[key] = evaluate_expression(o.substr(eq + 1), {});
-    } catch (const Error& e) {
-      throw Error("parameter override '" + o + "': " + e.what());
-    }
-  }
+  s.parameters = resolve_parameters(doc, overrides, s.name, ctx);
 
   const json& type = ctx.require(doc, "type", "");
   if (!type.is_string()) ctx.fail("type", "expected a string");
@@ -252,7 +188,7 @@ CurveScheme load_curve_scheme(const std::string& spec, const std::vector<std::st
     if (k.left_spacing <= 0 || k.right_spacing <= 0) ctx.fail("knot_spacing", "spacings must be positive");
     build_from_knots(s, k, ctx);
   } else {
-    ctx.fail("type", "unknown type '" + kind + "' (expected curve-uniform, curve-columns or curve-knots)");
+    ctx.fail("type", kind == "quad" ? "is a quad surface scheme, not a curve scheme" : "unknown type '" + kind + "' (expected curve-uniform, curve-columns, curve-knots or quad)");
   }
 
   compute_supports(s);

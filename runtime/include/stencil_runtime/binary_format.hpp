@@ -21,3 +21,11 @@ inline std::uint64_t fnv1a64(const unsigned char* data, std::uint64_t size) {
 }
 
 }  // namespace stencil_runtime::format
+
+namespace stencil_runtime::format {
+
+// Compact binary surface tables (*.sgs): every valence and rate of one quad scheme.
+inline constexpr char kSurfaceMagic[8] = {'S', 'G', 'S', 'U', 'R', 'F', '\0', '\0'};
+inline constexpr std::uint32_t kSurfaceVersion = 1;
+
+}  // namespace stencil_runtime::format

@@ -1,0 +1,79 @@
+#include "generate_surface.hpp"
+
+#include <algorithm>
+#include <mutex>
+#include <tbb/parallel_for.h>
+
+#include "atomic_output.hpp"
+#include "curve_table.hpp"
+#include "error.hpp"
+#include "ev_patch_solver.hpp"
+#include "residue_solver.hpp"
+#include "surface_table_json.hpp"
+#include "table_json.hpp"
+
+namespace sg {
+
+SurfaceTableSet generate_surface_tables(const QuadScheme& scheme, const std::vector<int>& valences,
+                                        const std::vector<long>& rates,
+                                        const std::function<void(const std::string&)>& progress) {
+  if (valences.empty() || rates.empty()) throw Error("nothing to generate: no valences or no rates");
+  for (int v : valences) scheme.vertex_rule(v);  // range check with the scheme's own message
+  SurfaceTableSet set;
+  set.rates = rates;
+  set.valences = valences;
+  set.regular.resize(rates.size());
+  tbb::parallel_for(std::size_t(0), rates.size(),
+                    [&](std::size_t r) { set.regular[r] = solve_by_residues(scheme.curve, 2 * rates[r]); });
+
+  set.tables.assign(valences.size(), std::vector<SurfaceTable>(rates.size()));
+  // Largest jobs first, so that the last ones to finish are short.
+  std::vector<std::pair<std::size_t, std::size_t>> jobs;
+  for (std::size_t v = 0; v < valences.size(); ++v)
+    for (std::size_t r = 0; r < rates.size(); ++r) jobs.emplace_back(v, r);
+  std::sort(jobs.begin(), jobs.end(), [&](auto a, auto b) {
+    return rates[a.second] * (valences[a.first] + 4) > rates[b.second] * (valences[b.first] + 4);
+  });
+  std::mutex report;
+  std::vector<std::size_t> done(valences.size(), 0);
+  tbb::parallel_for(std::size_t(0), jobs.size(), [&](std::size_t k) {
+    const auto [v, r] = jobs[k];
+    const PatchGrid patch = solve_ev_patch(scheme, valences[v], 2 * rates[r], set.regular[r]);
+    SurfaceTable table = make_surface_table(scheme, patch);
+    const auto failures = check_surface_table(table);
+    if (!failures.empty())
+      throw Error("scheme '" + scheme.name + "', valence " + std::to_string(valences[v]) + ", n = " +
+                  std::to_string(rates[r]) + ": check failed: " + failures.front());
+    set.tables[v][r] = std::move(table);
+    if (progress) {
+      std::lock_guard lock(report);
+      if (++done[v] == rates.size())
+        progress(scheme.name + ": valence " + std::to_string(valences[v]) + " solved and checked for " +
+                 std::to_string(rates.size()) + " rates");
+    }
+  });
+  return set;
+}
+
+std::size_t write_surface_tables(const QuadScheme& scheme, const SurfaceTableSet& set,
+                                 const std::filesystem::path& out_dir, BinaryPrecision precision) {
+  OutputTransaction tx(out_dir / scheme.name);
+  for (std::size_t r = 0; r < set.rates.size(); ++r)
+    tx.add("regular/n" + std::to_string(2 * set.rates[r]) + ".json",
+           curve_table_to_json(make_table(scheme.curve, set.regular[r])));
+  // Serialising the exact numbers is a good part of the work: do it in parallel.
+  std::vector<const SurfaceTable*> all;
+  for (const auto& by_rate : set.tables)
+    for (const SurfaceTable& t : by_rate) all.push_back(&t);
+  std::vector<std::string> texts(all.size());
+  tbb::parallel_for(std::size_t(0), all.size(), [&](std::size_t k) { texts[k] = surface_table_to_json(*all[k]); });
+  for (std::size_t k = 0; k < all.size(); ++k)
+    tx.add("v" + std::to_string(all[k]->valence) + "/n" + std::to_string(all[k]->n) + ".json", std::move(texts[k]));
+  std::string binary = surface_tables_to_binary(set, scheme.hash, precision);
+  const std::size_t size = binary.size();
+  tx.add(scheme.name + ".sgs", std::move(binary));
+  tx.commit();
+  return size;
+}
+
+}  // namespace sg

@@ -1,0 +1,48 @@
+#include "surface_table.hpp"
+
+#include "error.hpp"
+#include "hash.hpp"
+#include "patch_layout.hpp"
+
+namespace sg {
+
+SurfaceTable make_surface_table(const QuadScheme& scheme, const PatchGrid& patch) {
+  if (patch.grid % 2 != 0) throw Error("internal: surface tables need the patch solved on the grid 2n");
+  SurfaceTable t;
+  t.scheme = scheme.name;
+  t.scheme_hash = hex64(scheme.hash);
+  t.parameters = scheme.parameters;
+  t.valence = patch.valence;
+  t.n = patch.grid / 2;
+  t.points = patch.points;
+  t.reflection = PatchLayout(patch.valence).reflection();
+  auto at = [&](long i, long j) { return patch.scaled[static_cast<std::size_t>(j * (patch.grid + 1) + i)]; };
+  for (long j = 0; j <= t.n; ++j)
+    for (long i = 0; i <= j; ++i) t.nodes.push_back({i, j, at(2 * i, 2 * j)});
+  for (long j = 0; j < t.n; ++j)
+    for (long i = 0; i <= j; ++i) t.centres.push_back({i, j, at(2 * i + 1, 2 * j + 1)});
+  return t;
+}
+
+std::vector<std::string> check_surface_table(const SurfaceTable& t) {
+  std::vector<std::string> failures;
+  auto check = [&](const SurfaceTable::Entry& e, const char* kind) {
+    Integer sum = 0;
+    for (const auto& x : e.weights.num) sum += x;
+    if (e.weights.num.size() != t.points || sum != e.weights.den)
+      failures.push_back(std::string(kind) + " (" + std::to_string(e.i) + "," + std::to_string(e.j) +
+                         "): the weights do not sum to 1");
+    if (e.i == e.j)
+      for (std::size_t h = 0; h < t.points; ++h)
+        if (e.weights.num[h] != e.weights.num[t.reflection[h]]) {
+          failures.push_back(std::string(kind) + " (" + std::to_string(e.i) + "," + std::to_string(e.j) +
+                             "): not symmetric under the reflection on the diagonal");
+          break;
+        }
+  };
+  for (const auto& e : t.nodes) check(e, "node");
+  for (const auto& e : t.centres) check(e, "centre");
+  return failures;
+}
+
+}  // namespace sg

@@ -1,0 +1,25 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "curve_solution.hpp"
+#include "quad_scheme.hpp"
+#include "surface_table.hpp"
+
+namespace sg {
+
+// Everything `stencilgen --scheme Q --valence ... --n ...` produced.
+struct SurfaceTableSet {
+  std::vector<long> rates;
+  std::vector<CurveSolution> regular;             // per rate n: the curve on the grid 2n
+  std::vector<int> valences;
+  std::vector<std::vector<SurfaceTable>> tables;  // [valence][rate]
+};
+
+enum class BinaryPrecision { Double = 8, Single = 4 };
+
+// One .sgs file: regular curve values and, per valence, the stencils of all
+// rates, each distinct parameter point stored once (docs/table-format.md).
+std::string surface_tables_to_binary(const SurfaceTableSet& set, std::uint64_t scheme_hash, BinaryPrecision precision);
+
+}  // namespace sg
