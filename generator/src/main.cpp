@@ -39,8 +39,10 @@ int run_generate(const std::string& scheme_spec, const std::string& rates_spec, 
 }
 
 std::vector<int> parse_valences(const std::string& spec) {
+  // Unlike --n, a single number means that one valence, not 1..N.
+  const bool single = !spec.empty() && spec.find_first_not_of("0123456789") == std::string::npos;
   std::vector<int> valences;
-  for (long v : sg::parse_rate_spec(spec, "--valence")) {
+  for (long v : sg::parse_rate_spec(single ? spec + "," + spec : spec, "--valence")) {
     if (v < 3) throw sg::Error("--valence: valences start at 3, got " + std::to_string(v));
     valences.push_back(static_cast<int>(v));
   }
@@ -155,7 +157,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"residue", "eigen", "both"}));
   app.add_flag("-q,--quiet", quiet, "no progress lines on stderr");
   std::string valences, precision = "double";
-  app.add_option("--valence", valences, "quad schemes: valences, e.g. 3-8 or 3,5,6 (default 3-8)");
+  app.add_option("--valence", valences, "quad schemes: valences, e.g. 3-8, 5 or 3,5,6 (default 3-8)");
   app.add_option("--binary-precision", precision, "quad schemes: scalars of the .sgs file, double (default) or single")
       ->check(CLI::IsMember({"double", "single"}));
 

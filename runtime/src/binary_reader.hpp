@@ -2,6 +2,8 @@
 // Bounds-checked little-endian reader over a byte buffer.
 #include <cstdint>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "stencil_runtime/curve_table.hpp"
@@ -36,5 +38,26 @@ class BinaryReader {
   std::string origin_;
   std::size_t pos_ = 0;
 };
+
+// Whole file as bytes; LoadError naming the path when it cannot be read.
+inline std::string read_binary_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw LoadError(path + ": cannot open");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+// Checks the leading magic and the trailing FNV-1a checksum, and leaves the
+// reader just past the magic.
+inline void check_envelope(const std::string& bytes, BinaryReader& r, const char (&magic)[8], const char* what) {
+  if (bytes.size() < sizeof magic + 8) r.fail("truncated (only " + std::to_string(bytes.size()) + " bytes)");
+  if (r.get_string(sizeof magic) != std::string(magic, sizeof magic))
+    r.fail(std::string("not a stencilgen ") + what + " (bad magic)");
+  std::uint64_t stored;
+  std::memcpy(&stored, bytes.data() + bytes.size() - 8, 8);
+  if (stored != format::fnv1a64(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size() - 8))
+    r.fail("checksum mismatch: the file is corrupt or truncated");
+}
 
 }  // namespace stencil_runtime::detail

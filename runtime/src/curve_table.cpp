@@ -1,29 +1,13 @@
 #include "stencil_runtime/curve_table.hpp"
 
-#include <fstream>
-#include <sstream>
-
 #include "binary_reader.hpp"
 
 namespace stencil_runtime {
 
 CurveTable load_curve_table(const std::string& path, std::uint64_t expected_hash) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw LoadError(path + ": cannot open");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string bytes = buffer.str();
+  const std::string bytes = detail::read_binary_file(path);
   detail::BinaryReader r(bytes, path);
-  if (bytes.size() < sizeof format::kCurveMagic + 8) r.fail("truncated (only " + std::to_string(bytes.size()) + " bytes)");
-  if (r.get_string(sizeof format::kCurveMagic) != std::string(format::kCurveMagic, sizeof format::kCurveMagic))
-    r.fail("not a stencilgen binary curve table (bad magic)");
-  const auto stored = [&] {
-    std::uint64_t v;
-    std::memcpy(&v, bytes.data() + bytes.size() - 8, 8);
-    return v;
-  }();
-  if (stored != format::fnv1a64(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size() - 8))
-    r.fail("checksum mismatch: the file is corrupt or truncated");
+  detail::check_envelope(bytes, r, format::kCurveMagic, "binary curve table");
   CurveTable t;
   const auto version = r.get<std::uint32_t>();
   if (version != format::kCurveVersion)

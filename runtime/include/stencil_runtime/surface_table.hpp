@@ -1,0 +1,56 @@
+#pragma once
+// Loads the compact binary surface tables (*.sgs) written by stencilgen for a
+// quad scheme (format in docs/table-format.md) and gives the stencils of the
+// regular patch and of the patch around an extraordinary vertex, at the grid
+// nodes (i/n, j/n) and cell centres ((2i+1)/(2n), (2j+1)/(2n)) of every stored
+// rate n. Control point order: docs/table-format.md (regular: 16 points row by
+// row; extraordinary: 2v+8 points, EV first). Doubles only.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "curve_table.hpp"
+
+namespace stencil_runtime {
+
+class SurfaceTables {
+ public:
+  // Throws LoadError naming the file (missing, truncated, bad magic, version,
+  // checksum, inconsistent contents, or a scheme hash other than a nonzero
+  // `expected_hash`).
+  static SurfaceTables load(const std::string& path, std::uint64_t expected_hash = 0);
+
+  std::uint64_t scheme_hash() const { return hash_; }
+  const std::vector<int>& rates() const { return rates_; }
+  std::vector<int> valences() const;  // extraordinary valences stored (4 is the regular patch)
+  bool has_rate(int n) const { return rate_slot(n) >= 0; }
+  bool has_valence(int v) const;
+  static int points(int valence) { return valence == 4 ? 16 : 2 * valence + 8; }
+
+  // Weights over the patch's control points (16 for the regular patch or
+  // valence 4, 2v+8 otherwise) at node (i/n, j/n), 0 <= i,j <= n, or at the
+  // centre of cell (i,j), 0 <= i,j < n. Throws std::out_of_range for a rate,
+  // valence or index that is not in the table.
+  void node_stencil(int valence, int n, int i, int j, double* weights) const;
+  void centre_stencil(int valence, int n, int i, int j, double* weights) const;
+
+ private:
+  struct Valence {
+    int valence = 0, points = 0;
+    std::vector<std::uint32_t> reflection;
+    std::vector<double> weights;  // stencil_count * points
+    std::vector<std::vector<std::uint32_t>> nodes, centres;  // per rate slot, (i <= j) j-major
+  };
+  int rate_slot(int n) const;
+  const Valence& valence_data(int v) const;
+  // Stencil at parameter (a/g, b/g), g = 2n, a and b both even (node) or both odd (centre).
+  void stencil(int valence, int slot, long a, long b, bool centre, double* weights) const;
+
+  std::uint64_t hash_ = 0;
+  std::vector<int> rates_;
+  std::vector<std::vector<double>> regular_;  // per rate slot: phi(k/(2n)) for k = regular_first_ + ...
+  std::vector<std::int64_t> regular_first_;
+  std::vector<Valence> valences_;
+};
+
+}  // namespace stencil_runtime

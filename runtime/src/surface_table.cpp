@@ -1,0 +1,140 @@
+#include "stencil_runtime/surface_table.hpp"
+
+#include <stdexcept>
+
+#include "binary_reader.hpp"
+
+namespace stencil_runtime {
+
+namespace {
+
+std::vector<double> read_scalars(detail::BinaryReader& r, std::size_t count, std::uint32_t bytes, std::size_t available) {
+  if (count > available / bytes) r.fail("truncated scalar block");
+  std::vector<double> out(count);
+  for (auto& x : out) x = bytes == 8 ? r.get<double>() : static_cast<double>(r.get<float>());
+  return out;
+}
+
+std::size_t half_count(long side) { return static_cast<std::size_t>(side * (side + 1) / 2); }
+
+}  // namespace
+
+SurfaceTables SurfaceTables::load(const std::string& path, std::uint64_t expected_hash) {
+  const std::string bytes = detail::read_binary_file(path);
+  detail::BinaryReader r(bytes, path);
+  detail::check_envelope(bytes, r, format::kSurfaceMagic, "binary surface table");
+  const auto version = r.get<std::uint32_t>();
+  if (version != format::kSurfaceVersion)
+    r.fail("format version " + std::to_string(version) + " is not supported (expected " +
+           std::to_string(format::kSurfaceVersion) + ")");
+  const auto scalar = r.get<std::uint32_t>();
+  if (scalar != 4 && scalar != 8) r.fail("invalid scalar size " + std::to_string(scalar));
+  SurfaceTables t;
+  t.hash_ = r.get<std::uint64_t>();
+  if (expected_hash != 0 && t.hash_ != expected_hash) r.fail("made from a different scheme (hash mismatch)");
+  auto left = [&] { return bytes.size() - r.position(); };
+  const auto rate_count = r.get<std::uint32_t>();
+  if (rate_count > left() / 4) r.fail("truncated rate list");
+  for (std::uint32_t k = 0; k < rate_count; ++k) {
+    const auto n = r.get<std::uint32_t>();
+    if (n == 0 || n > 100000) r.fail("invalid rate " + std::to_string(n));
+    t.rates_.push_back(static_cast<int>(n));
+  }
+  for (std::uint32_t k = 0; k < rate_count; ++k) {
+    t.regular_first_.push_back(r.get<std::int32_t>());
+    const auto count = r.get<std::uint32_t>();
+    t.regular_.push_back(read_scalars(r, count, scalar, left()));
+  }
+  const auto valence_count = r.get<std::uint32_t>();
+  for (std::uint32_t k = 0; k < valence_count; ++k) {
+    Valence v;
+    v.valence = static_cast<int>(r.get<std::uint32_t>());
+    v.points = static_cast<int>(r.get<std::uint32_t>());
+    if (v.valence < 3 || v.valence > 100000 || v.points != points(v.valence)) r.fail("invalid valence header");
+    const auto stencils = r.get<std::uint32_t>();
+    for (int h = 0; h < v.points; ++h) {
+      v.reflection.push_back(r.get<std::uint32_t>());
+      if (v.reflection.back() >= static_cast<std::uint32_t>(v.points)) r.fail("invalid reflection permutation");
+    }
+    v.weights = read_scalars(r, static_cast<std::size_t>(stencils) * static_cast<std::size_t>(v.points), scalar, left());
+    for (int n : t.rates_) {
+      for (int kind = 0; kind < 2; ++kind) {
+        const std::size_t count = half_count(kind == 0 ? n + 1 : n);
+        if (count > left() / 4) r.fail("truncated index block");
+        std::vector<std::uint32_t> index(count);
+        for (auto& x : index) {
+          x = r.get<std::uint32_t>();
+          if (x >= stencils) r.fail("stencil index out of range");
+        }
+        (kind == 0 ? v.nodes : v.centres).push_back(std::move(index));
+      }
+    }
+    t.valences_.push_back(std::move(v));
+  }
+  if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
+  return t;
+}
+
+std::vector<int> SurfaceTables::valences() const {
+  std::vector<int> out;
+  for (const auto& v : valences_) out.push_back(v.valence);
+  return out;
+}
+
+bool SurfaceTables::has_valence(int v) const {
+  if (v == 4) return true;
+  for (const auto& x : valences_)
+    if (x.valence == v) return true;
+  return false;
+}
+
+int SurfaceTables::rate_slot(int n) const {
+  for (std::size_t k = 0; k < rates_.size(); ++k)
+    if (rates_[k] == n) return static_cast<int>(k);
+  return -1;
+}
+
+const SurfaceTables::Valence& SurfaceTables::valence_data(int v) const {
+  for (const auto& x : valences_)
+    if (x.valence == v) return x;
+  throw std::out_of_range("valence " + std::to_string(v) + " is not in the surface table");
+}
+
+void SurfaceTables::node_stencil(int valence, int n, int i, int j, double* weights) const {
+  const int slot = rate_slot(n);
+  if (slot < 0) throw std::out_of_range("rate " + std::to_string(n) + " is not in the surface table");
+  if (i < 0 || j < 0 || i > n || j > n) throw std::out_of_range("node index outside 0..n");
+  stencil(valence, slot, 2L * i, 2L * j, false, weights);
+}
+
+void SurfaceTables::centre_stencil(int valence, int n, int i, int j, double* weights) const {
+  const int slot = rate_slot(n);
+  if (slot < 0) throw std::out_of_range("rate " + std::to_string(n) + " is not in the surface table");
+  if (i < 0 || j < 0 || i >= n || j >= n) throw std::out_of_range("cell index outside 0..n-1");
+  stencil(valence, slot, 2L * i + 1, 2L * j + 1, true, weights);
+}
+
+void SurfaceTables::stencil(int valence, int slot, long a, long b, bool centre, double* weights) const {
+  const long g = 2L * rates_[static_cast<std::size_t>(slot)];
+  if (valence == 4) {  // regular: phi(x - p) phi(y - q), points row by row
+    const auto& phi = regular_[static_cast<std::size_t>(slot)];
+    const std::int64_t first = regular_first_[static_cast<std::size_t>(slot)];
+    auto at = [&](long k) {
+      const std::int64_t idx = k - first;
+      return idx >= 0 && idx < static_cast<std::int64_t>(phi.size()) ? phi[static_cast<std::size_t>(idx)] : 0.0;
+    };
+    for (int q = -1; q <= 2; ++q)
+      for (int p = -1; p <= 2; ++p) weights[(q + 1) * 4 + (p + 1)] = at(a - p * g) * at(b - q * g);
+    return;
+  }
+  const Valence& v = valence_data(valence);
+  const bool mirrored = a > b;
+  const long lo = mirrored ? b : a, hi = mirrored ? a : b;
+  const long i = centre ? (lo - 1) / 2 : lo / 2, j = centre ? (hi - 1) / 2 : hi / 2;
+  const auto& index = centre ? v.centres[static_cast<std::size_t>(slot)] : v.nodes[static_cast<std::size_t>(slot)];
+  const double* w = v.weights.data() + static_cast<std::size_t>(index[static_cast<std::size_t>(j * (j + 1) / 2 + i)]) *
+                                           static_cast<std::size_t>(v.points);
+  for (int h = 0; h < v.points; ++h) weights[mirrored ? v.reflection[static_cast<std::size_t>(h)] : h] = w[h];
+}
+
+}  // namespace stencil_runtime
