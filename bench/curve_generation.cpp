@@ -25,7 +25,7 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 int main(int argc, char** argv) {
   const long n_max = argc > 1 ? std::stol(argv[1]) : 64;
   std::vector<sg::CurveScheme> schemes;
-  for (const auto& name : sg::available_schemes()) schemes.push_back(sg::load_curve_scheme(name));
+  for (const auto& name : sg::available_schemes(sg::default_schemes_dir(), sg::SchemeFamily::Curve)) schemes.push_back(sg::load_curve_scheme(name));
   struct Job { std::size_t scheme; long n; };
   std::vector<Job> jobs;
   for (std::size_t s = 0; s < schemes.size(); ++s)

@@ -9,7 +9,7 @@
 #include "verify.hpp"
 
 TEST_CASE("both solvers give identical rationals for every shipped scheme, n = 1..24, and tables verify") {
-  const auto names = sg::available_schemes();
+  const auto names = sg::available_schemes(sg::default_schemes_dir(), sg::SchemeFamily::Curve);
   REQUIRE(names.size() >= 14);
   for (const std::string& name : names) {
     const sg::CurveScheme s = sg::load_curve_scheme(name);

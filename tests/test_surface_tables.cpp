@@ -221,3 +221,25 @@ TEST_CASE("binary surface tables load in the runtime and hold the exact stencils
   CHECK_THROWS_WITH(stencil_runtime::SurfaceTables::load(file), Catch::Contains("checksum mismatch"));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("valence 16 at rate 64 works end to end, with progress output", "[surface][scale]") {
+  const auto dir = scratch_dir("surface-scale");
+  const CliResult r = run_stencilgen("--scheme nonpoly --valence 3,16 --n 63,64 --out " + dir.string());
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  CHECK(r.output.find("nonpoly: valence 16 solved and checked for 2 rates") != std::string::npos);
+  const auto t = stencil_runtime::SurfaceTables::load((dir / "nonpoly" / "nonpoly.sgs").string());
+  REQUIRE(t.valences() == std::vector<int>{3, 16});
+  for (int v : {3, 4, 16})
+    for (int n : {63, 64}) {
+      std::vector<double> w(static_cast<std::size_t>(stencil_runtime::SurfaceTables::points(v)));
+      for (int j = 0; j <= n; j += 7)
+        for (int i = 0; i <= n; i += 5) {
+          t.node_stencil(v, n, i, j, w.data());
+          double sum = 0;
+          for (double x : w) sum += x;
+          REQUIRE(sum == Approx(1).epsilon(1e-14));
+        }
+    }
+  std::filesystem::remove_all(dir);
+}

@@ -197,7 +197,10 @@ int main(int argc, char** argv) {
     if (plot->parsed()) return run_plot(plot_scheme, plot_n, plot_out, plot_params);
     if (list->parsed()) {
       std::cout << "schemes in " << sg::default_schemes_dir().string() << ":\n";
-      for (const auto& name : sg::available_schemes()) std::cout << "  " << name << "\n";
+      for (const auto& name : sg::available_schemes(sg::default_schemes_dir(), sg::SchemeFamily::Curve))
+        std::cout << "  " << name << " (curve)\n";
+      for (const auto& name : sg::available_schemes(sg::default_schemes_dir(), sg::SchemeFamily::Quad))
+        std::cout << "  " << name << " (quad surface)\n";
       return 0;
     }
     if (scheme.empty() || rates.empty() || out.empty()) {

@@ -129,11 +129,22 @@ fs::path default_schemes_dir() {
   return STENCILGEN_SCHEMES_DIR;
 }
 
-std::vector<std::string> available_schemes(const fs::path& dir) {
+std::vector<std::string> available_schemes(const fs::path& dir, SchemeFamily family) {
   std::vector<std::string> names;
   std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(dir, ec))
-    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    if (entry.path().extension() != ".json") continue;
+    if (family != SchemeFamily::Any) {
+      std::string type;
+      try {
+        type = json::parse(read_file(entry.path())).value("type", "");
+      } catch (const std::exception&) {
+        continue;  // unreadable files belong to no family; loading them reports why
+      }
+      if ((type == "quad") != (family == SchemeFamily::Quad)) continue;
+    }
+    names.push_back(entry.path().stem().string());
+  }
   std::sort(names.begin(), names.end());
   return names;
 }

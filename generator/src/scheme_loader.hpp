@@ -16,7 +16,11 @@ std::filesystem::path default_schemes_dir();
 CurveScheme load_curve_scheme(const std::string& spec, const std::vector<std::string>& overrides = {},
                               const std::filesystem::path& dir = default_schemes_dir());
 
-// Names of the *.json files in `dir` (sorted), for listings and error messages.
-std::vector<std::string> available_schemes(const std::filesystem::path& dir = default_schemes_dir());
+enum class SchemeFamily { Any, Curve, Quad };
+
+// Names of the *.json files in `dir` (sorted), for listings and error messages;
+// with a family, only the files whose "type" belongs to it.
+std::vector<std::string> available_schemes(const std::filesystem::path& dir = default_schemes_dir(),
+                                           SchemeFamily family = SchemeFamily::Any);
 
 }  // namespace sg

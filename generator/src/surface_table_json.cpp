@@ -50,10 +50,9 @@ std::string surface_table_to_json(const SurfaceTable& t) {
   head["symmetry"] =
       "only points with x <= y are listed; the stencil at (y,x) has weight w[h] at index reflection[h], where w is "
       "the stencil at (x,y)";
-  head["reflection"] = t.reflection;
   std::string out = head.dump(1);
-  out.pop_back();  // reopen the object: the long arrays follow, one stencil per line
-  out += ",\n";
+  out.resize(out.size() - 2);  // reopen the object ("\n}"): compact arrays follow, one stencil per line
+  out += ",\n \"reflection\": " + ojson(t.reflection).dump() + ",\n";
   append_entries(out, "nodes", t.nodes, 2 * t.n, 0, false);
   append_entries(out, "centres", t.centres, 2 * t.n, 1, true);
   out += "}\n";
