@@ -243,3 +243,33 @@ TEST_CASE("valence 16 at rate 64 works end to end, with progress output", "[surf
     }
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("verify re-solves surface JSON tables and rejects a changed weight", "[surface][tables]") {
+  const auto dir = scratch_dir("surface-verify");
+  REQUIRE(run_stencilgen("--scheme catmull-clark --valence 5 --n 4 --out " + dir.string() + " -q").status == 0);
+  const auto file = dir / "catmull-clark" / "v5" / "n4.json";
+  const CliResult ok = run_stencilgen("verify " + file.string());
+  INFO(ok.output);
+  CHECK(ok.status == 0);
+  CHECK(ok.output.find(": OK (catmull-clark surface") != std::string::npos);
+  // Move weight between two entries of one stencil: the sum stays 1, the stencil is wrong.
+  std::string text;
+  {
+    std::ifstream in(file);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto at = text.find("\"at\":[\"1/4\",\"1/2\"]");
+  REQUIRE(at != std::string::npos);
+  const auto nums = text.find("\"numerators\":[\"", at) + 15;
+  const auto end = text.find('"', nums);
+  const long first = std::stol(text.substr(nums, end - nums));
+  text.replace(nums, end - nums, std::to_string(first + 1));
+  const auto second = text.find("\",\"", nums) + 3;
+  const auto second_end = text.find('"', second);
+  text.replace(second, second_end - second, std::to_string(std::stol(text.substr(second, second_end - second)) - 1));
+  std::ofstream(file) << text;
+  const CliResult bad = run_stencilgen("verify " + file.string());
+  CHECK(bad.status == 1);
+  CHECK(bad.output.find("nodes at (1/4, 1/2): differs from the re-solved stencil") != std::string::npos);
+  std::filesystem::remove_all(dir);
+}

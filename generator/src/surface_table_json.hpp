@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <vector>
 
 #include "surface_table.hpp"
 
@@ -10,5 +11,18 @@ inline constexpr int kSurfaceTableVersion = 1;
 
 // Exact JSON, one stencil per line (docs/table-format.md).
 std::string surface_table_to_json(const SurfaceTable& table);
+
+}  // namespace sg
+
+namespace sg {
+
+// Re-solves the patch of a surface JSON table and compares every stored
+// stencil exactly; also checks partition of unity, the scheme hash and the
+// reflection. Returns failure descriptions (empty when the table is right).
+std::vector<std::string> verify_surface_json(const std::string& text, const std::string& origin,
+                                             const QuadScheme& scheme);
+
+// The "format" field of a table file, or "" when it has none.
+std::string table_format(const std::string& text);
 
 }  // namespace sg
