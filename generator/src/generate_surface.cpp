@@ -69,7 +69,7 @@ std::size_t write_surface_tables(const QuadScheme& scheme, const SurfaceTableSet
   tbb::parallel_for(std::size_t(0), all.size(), [&](std::size_t k) { texts[k] = surface_table_to_json(*all[k]); });
   for (std::size_t k = 0; k < all.size(); ++k)
     tx.add("v" + std::to_string(all[k]->valence) + "/n" + std::to_string(all[k]->n) + ".json", std::move(texts[k]));
-  std::string binary = surface_tables_to_binary(set, scheme.hash, precision);
+  std::string binary = surface_tables_to_binary(scheme, set, precision);
   const std::size_t size = binary.size();
   tx.add(scheme.name + ".sgs", std::move(binary));
   tx.commit();

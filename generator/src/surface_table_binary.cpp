@@ -36,11 +36,27 @@ std::pair<long, long> reduced(long p, long q) {
 
 }  // namespace
 
-std::string surface_tables_to_binary(const SurfaceTableSet& set, std::uint64_t scheme_hash, BinaryPrecision precision) {
+std::string surface_tables_to_binary(const QuadScheme& scheme, const SurfaceTableSet& set, BinaryPrecision precision) {
   std::string out(fmt::kSurfaceMagic, sizeof fmt::kSurfaceMagic);
   put<std::uint32_t>(out, fmt::kSurfaceVersion);
   put<std::uint32_t>(out, static_cast<std::uint32_t>(precision));
-  put<std::uint64_t>(out, scheme_hash);
+  put<std::uint64_t>(out, scheme.hash);
+  // The subdivision rules, so that the runtime can refine a mesh with the
+  // scheme's own step (isolating extraordinary vertices) without the scheme file.
+  put<double>(out, to_double(scheme.face_corner));
+  put<double>(out, to_double(scheme.edge_end));
+  put<double>(out, to_double(scheme.edge_wing));
+  std::vector<int> rule_valences{4};
+  for (int v : set.valences)
+    if (v != 4) rule_valences.push_back(v);
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(rule_valences.size()));
+  for (int v : rule_valences) {
+    const VertexRule r = scheme.vertex_rule(v);
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(v));
+    put<double>(out, to_double(r.centre));
+    put<double>(out, to_double(r.edge));
+    put<double>(out, to_double(r.face));
+  }
   put<std::uint32_t>(out, static_cast<std::uint32_t>(set.rates.size()));
   for (long n : set.rates) put<std::uint32_t>(out, static_cast<std::uint32_t>(n));
   for (const CurveSolution& c : set.regular) {

@@ -18,8 +18,8 @@ struct SurfaceTableSet {
 
 enum class BinaryPrecision { Double = 8, Single = 4 };
 
-// One .sgs file: regular curve values and, per valence, the stencils of all
+// One .sgs file: the scheme's subdivision rules (double), regular curve values and, per valence, the stencils of all
 // rates, each distinct parameter point stored once (docs/table-format.md).
-std::string surface_tables_to_binary(const SurfaceTableSet& set, std::uint64_t scheme_hash, BinaryPrecision precision);
+std::string surface_tables_to_binary(const QuadScheme& scheme, const SurfaceTableSet& set, BinaryPrecision precision);
 
 }  // namespace sg

@@ -33,6 +33,19 @@ SurfaceTables SurfaceTables::load(const std::string& path, std::uint64_t expecte
   t.hash_ = r.get<std::uint64_t>();
   if (expected_hash != 0 && t.hash_ != expected_hash) r.fail("made from a different scheme (hash mismatch)");
   auto left = [&] { return bytes.size() - r.position(); };
+  t.face_corner_ = r.get<double>();
+  t.edge_end_ = r.get<double>();
+  t.edge_wing_ = r.get<double>();
+  const auto rule_count = r.get<std::uint32_t>();
+  if (rule_count > left() / 28) r.fail("truncated rule list");
+  for (std::uint32_t k = 0; k < rule_count; ++k) {
+    VertexRule rule;
+    rule.valence = static_cast<int>(r.get<std::uint32_t>());
+    rule.centre = r.get<double>();
+    rule.edge = r.get<double>();
+    rule.face = r.get<double>();
+    t.rules_.push_back(rule);
+  }
   const auto rate_count = r.get<std::uint32_t>();
   if (rate_count > left() / 4) r.fail("truncated rate list");
   for (std::uint32_t k = 0; k < rate_count; ++k) {
@@ -75,6 +88,12 @@ SurfaceTables SurfaceTables::load(const std::string& path, std::uint64_t expecte
   return t;
 }
 
+const SurfaceTables::VertexRule* SurfaceTables::vertex_rule(int valence) const {
+  for (const auto& rule : rules_)
+    if (rule.valence == valence) return &rule;
+  return nullptr;
+}
+
 std::vector<int> SurfaceTables::valences() const {
   std::vector<int> out;
   for (const auto& v : valences_) out.push_back(v.valence);
@@ -112,6 +131,17 @@ void SurfaceTables::centre_stencil(int valence, int n, int i, int j, double* wei
   if (slot < 0) throw std::out_of_range("rate " + std::to_string(n) + " is not in the surface table");
   if (i < 0 || j < 0 || i >= n || j >= n) throw std::out_of_range("cell index outside 0..n-1");
   stencil(valence, slot, 2L * i + 1, 2L * j + 1, true, weights);
+}
+
+void SurfaceTables::regular_weights(int n, long a, double* w4) const {
+  const int slot = rate_slot(n);
+  if (slot < 0) throw std::out_of_range("rate " + std::to_string(n) + " is not in the surface table");
+  const auto& phi = regular_[static_cast<std::size_t>(slot)];
+  const std::int64_t first = regular_first_[static_cast<std::size_t>(slot)];
+  for (int p = -1; p <= 2; ++p) {
+    const std::int64_t idx = a - 2L * n * p - first;
+    w4[p + 1] = idx >= 0 && idx < static_cast<std::int64_t>(phi.size()) ? phi[static_cast<std::size_t>(idx)] : 0.0;
+  }
 }
 
 void SurfaceTables::stencil(int valence, int slot, long a, long b, bool centre, double* weights) const {

@@ -21,6 +21,17 @@ class SurfaceTables {
   static SurfaceTables load(const std::string& path, std::uint64_t expected_hash = 0);
 
   std::uint64_t scheme_hash() const { return hash_; }
+
+  // The scheme's subdivision rules, as stored (double).
+  struct VertexRule {
+    int valence = 4;
+    double centre = 0, edge = 0, face = 0;
+  };
+  double face_corner() const { return face_corner_; }
+  double edge_end() const { return edge_end_; }
+  double edge_wing() const { return edge_wing_; }
+  // nullptr when the table has no rule for that valence.
+  const VertexRule* vertex_rule(int valence) const;
   const std::vector<int>& rates() const { return rates_; }
   std::vector<int> valences() const;  // extraordinary valences stored (4 is the regular patch)
   bool has_rate(int n) const { return rate_slot(n) >= 0; }
@@ -33,6 +44,11 @@ class SurfaceTables {
   // valence or index that is not in the table.
   void node_stencil(int valence, int n, int i, int j, double* weights) const;
   void centre_stencil(int valence, int n, int i, int j, double* weights) const;
+
+  // The regular patch is a tensor product: its weight for point (p, q) at
+  // (a/(2n), b/(2n)) is w(a)[p+1] * w(b)[q+1], with w(a) the four values
+  // phi(a/(2n) - p), p = -1..2, written here (0 <= a <= 2n).
+  void regular_weights(int n, long a, double* w4) const;
 
  private:
   struct Valence {
@@ -47,6 +63,8 @@ class SurfaceTables {
   void stencil(int valence, int slot, long a, long b, bool centre, double* weights) const;
 
   std::uint64_t hash_ = 0;
+  double face_corner_ = 0, edge_end_ = 0, edge_wing_ = 0;
+  std::vector<VertexRule> rules_;
   std::vector<int> rates_;
   std::vector<std::vector<double>> regular_;  // per rate slot: phi(k/(2n)) for k = regular_first_ + ...
   std::vector<std::int64_t> regular_first_;

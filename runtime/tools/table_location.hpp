@@ -1,0 +1,54 @@
+#pragma once
+// Shared by the runtime's command-line tools: finding the .sgs file behind
+// --tables, and parsing exact parameters like "1/3".
+#include <filesystem>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace stencil_tools {
+
+// --tables is a .sgs file, or a directory holding exactly one (e.g. tables/nonpoly).
+inline std::filesystem::path find_table_file(const std::string& spec) {
+  namespace fs = std::filesystem;
+  const fs::path p(spec);
+  if (fs::is_regular_file(p)) return p;
+  if (!fs::is_directory(p)) throw std::runtime_error(spec + ": no such table file or directory");
+  fs::path found;
+  for (const auto& e : fs::directory_iterator(p))
+    if (e.path().extension() == ".sgs") {
+      if (!found.empty()) throw std::runtime_error(spec + ": holds several .sgs files; name one");
+      found = e.path();
+    }
+  if (found.empty())
+    throw std::runtime_error(spec + ": no .sgs table file here (make one with: stencilgen --scheme nonpoly --valence 3-8 --n 24 --out tables)");
+  return found;
+}
+
+struct Fraction {
+  long num = 0, den = 1;
+};
+
+// "1/3", "0", "1", "2/4" (reduced); must lie in [0, 1].
+inline Fraction parse_parameter(const std::string& text) {
+  Fraction f;
+  try {
+    std::size_t used = 0;
+    f.num = std::stol(text, &used);
+    if (used < text.size()) {
+      if (text[used] != '/') throw std::invalid_argument(text);
+      const std::string rest = text.substr(used + 1);
+      f.den = std::stol(rest, &used);
+      if (used != rest.size()) throw std::invalid_argument(text);
+    }
+  } catch (const std::exception&) {
+    throw std::runtime_error("parameter '" + text + "' is not an exact rational such as 1/3");
+  }
+  if (f.den <= 0) throw std::runtime_error("parameter '" + text + "' has a zero or negative denominator");
+  const long g = std::gcd(f.num, f.den);
+  f.num /= g, f.den /= g;
+  if (f.num < 0 || f.num > f.den) throw std::runtime_error("parameter '" + text + "' is outside [0, 1]");
+  return f;
+}
+
+}  // namespace stencil_tools
