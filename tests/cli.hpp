@@ -10,8 +10,8 @@ struct CliResult {
   std::string output;  // stdout and stderr together
 };
 
-inline CliResult run_stencilgen(const std::string& args) {
-  const std::string cmd = std::string(STENCILGEN_EXE) + " " + args + " 2>&1";
+inline CliResult run_command(const std::string& exe, const std::string& args) {
+  const std::string cmd = exe + " " + args + " 2>&1";
   CliResult r{0, ""};
   FILE* pipe = popen(cmd.c_str(), "r");
   std::array<char, 4096> buf{};
@@ -20,6 +20,12 @@ inline CliResult run_stencilgen(const std::string& args) {
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   return r;
 }
+
+inline CliResult run_stencilgen(const std::string& args) { return run_command(STENCILGEN_EXE, args); }
+#ifdef STENCILEVAL_EXE
+inline CliResult run_stencileval(const std::string& args) { return run_command(STENCILEVAL_EXE, args); }
+inline CliResult run_stenciltess(const std::string& args) { return run_command(STENCILTESS_EXE, args); }
+#endif
 
 // A fresh empty directory under the system temp dir.
 inline std::filesystem::path scratch_dir(const std::string& name) {

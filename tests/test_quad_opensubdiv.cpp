@@ -39,6 +39,7 @@
 #include <set>
 #include <vector>
 
+#include "bfr_reference.hpp"
 #include "ev_patch_solver.hpp"
 #include "patch_layout.hpp"
 #include "quad_scheme_loader.hpp"
@@ -50,7 +51,7 @@ using namespace OpenSubdiv;
 
 // Refinement levels Bfr uses to approximate the limit surface around the EV
 // (see the file comment: any L >= 3 is exact at these grid points, L <= 2 is not).
-constexpr int kApproxLevel = 10;
+constexpr int kApproxLevel = bfr_reference::kApproxLevel;
 constexpr int kBlocks = 3;     // K: the patch's support reaches chart distance 2 < K
 constexpr double kRelTol = 1e-12;
 
@@ -59,15 +60,7 @@ std::unique_ptr<Far::TopologyRefiner> make_refiner(const sector_mesh::SectorMesh
   sizes.assign(mesh.faces().size(), 4);
   indices.clear();
   for (const auto& f : mesh.faces()) indices.insert(indices.end(), f.begin(), f.end());
-  Far::TopologyDescriptor desc;
-  desc.numVertices = mesh.num_vertices();
-  desc.numFaces = static_cast<int>(mesh.faces().size());
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = indices.data();
-  Sdc::Options sdc;
-  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  return std::unique_ptr<Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
+  return bfr_reference::make_refiner(mesh.num_vertices(), sizes, indices);
 }
 
 }  // namespace

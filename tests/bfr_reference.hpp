@@ -1,0 +1,66 @@
+#pragma once
+// OpenSubdiv (Bfr) as the reference limit surface for Catmull-Clark meshes.
+// Approximation level 10: every parameter farther than 2^-10 from an
+// extraordinary vertex lies in an exact B-spline sub-patch (see
+// test_quad_opensubdiv.cpp for the measurements behind this choice).
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/far/topologyRefinerFactory.h>
+
+#include <array>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+namespace bfr_reference {
+
+namespace osd = OpenSubdiv;
+
+inline std::unique_ptr<osd::Far::TopologyRefiner> make_refiner(int num_vertices, const std::vector<int>& sizes,
+                                                               const std::vector<int>& indices) {
+  osd::Far::TopologyDescriptor desc;
+  desc.numVertices = num_vertices;
+  desc.numFaces = static_cast<int>(sizes.size());
+  desc.numVertsPerFace = sizes.data();
+  desc.vertIndicesPerFace = indices.data();
+  osd::Sdc::Options sdc;
+  sdc.SetVtxBoundaryInterpolation(osd::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  using Factory = osd::Far::TopologyRefinerFactory<osd::Far::TopologyDescriptor>;
+  return std::unique_ptr<osd::Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(osd::Sdc::SCHEME_CATMARK, sdc)));
+}
+
+inline constexpr int kApproxLevel = 10;
+
+class CatmullClarkLimit {
+ public:
+  CatmullClarkLimit(const std::vector<std::array<double, 3>>& positions, const std::vector<int>& sizes,
+                    const std::vector<int>& indices)
+      : sizes_(sizes), indices_(indices), refiner_(make_refiner(static_cast<int>(positions.size()), sizes_, indices_)) {
+    if (!refiner_) throw std::runtime_error("OpenSubdiv refused the mesh");
+    osd::Bfr::SurfaceFactory::Options options;
+    options.SetApproxLevelSmooth(kApproxLevel).SetApproxLevelSharp(kApproxLevel);
+    factory_ = std::make_unique<osd::Bfr::RefinerSurfaceFactory<>>(*refiner_, options);
+    for (const auto& p : positions) flat_.insert(flat_.end(), p.begin(), p.end());
+  }
+
+  std::array<double, 3> evaluate(int face, double u, double v) {
+    osd::Bfr::Surface<double> surface;
+    if (!factory_->InitVertexSurface(face, &surface) || !surface.IsValid())
+      throw std::runtime_error("Bfr has no surface for face " + std::to_string(face));
+    std::vector<double> patch(static_cast<std::size_t>(surface.GetNumPatchPoints()) * 3);
+    surface.PreparePatchPoints(flat_.data(), 3, patch.data(), 3);
+    const double uv[2] = {u, v};
+    std::array<double, 3> out{};
+    surface.Evaluate(uv, patch.data(), 3, out.data());
+    return out;
+  }
+
+ private:
+  std::vector<int> sizes_, indices_;
+  std::unique_ptr<osd::Far::TopologyRefiner> refiner_;
+  std::unique_ptr<osd::Bfr::RefinerSurfaceFactory<>> factory_;
+  std::vector<double> flat_;
+};
+
+}  // namespace bfr_reference

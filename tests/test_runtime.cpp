@@ -1,0 +1,240 @@
+// The runtime against independent references: OpenSubdiv's Catmull-Clark limit
+// on the bundled meshes (through the runtime's own topology, isolation step,
+// patch gathering and rotations), continuity across shared edges for the
+// non-polynomial scheme, watertightness by an independent edge count, and the
+// command-line tools' errors.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <set>
+
+#include "bfr_reference.hpp"
+#include "cli.hpp"
+#include "stencil_runtime/tessellation.hpp"
+
+using namespace stencil_runtime;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
+
+// Tables generated once per test process.
+fs::path tables_for(const std::string& scheme) {
+  static std::map<std::string, fs::path> made;
+  if (!made.count(scheme)) {
+    const fs::path dir = scratch_dir("runtime-tables-" + scheme);
+    const CliResult r = run_stencilgen("--scheme " + scheme + " --valence 3-8 --n 24 --out " + dir.string() + " -q");
+    if (r.status != 0) throw std::runtime_error(r.output);
+    made[scheme] = dir / scheme / (scheme + ".sgs");
+  }
+  return made[scheme];
+}
+
+double extent(const Mesh& m) {
+  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const auto& p : m.positions)
+    for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], p[c]), hi[c] = std::max(hi[c], p[c]);
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+double distance(const Point& a, const Point& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+const char* kBundled[] = {"cube", "torus-3-5", "chess-piece", "bumpy-sphere"};
+
+}  // namespace
+
+TEST_CASE("runtime Catmull-Clark evaluation equals OpenSubdiv on every bundled mesh", "[runtime][opensubdiv]") {
+  const SurfaceTables tables = SurfaceTables::load(tables_for("catmull-clark").string());
+  for (const char* name : kBundled) {
+    const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
+    const LimitSurface surface(tables, mesh, "catmull-clark");
+    bfr_reference::CatmullClarkLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices);
+    const double size = extent(mesh);
+    double worst = 0;
+    for (std::size_t f = 0; f < mesh.face_count(); f += (mesh.face_count() > 100 ? 3 : 1))
+      for (long n : {1L, 2L, 3L, 5L, 8L})
+        for (long j = 0; j <= n; ++j)
+          for (long i = 0; i <= n; ++i) {
+            const Point ours = surface.evaluate(f, i, j, n);
+            const auto ref = reference.evaluate(static_cast<int>(f), double(i) / n, double(j) / n);
+            const double err = distance(ours, ref) / size;
+            worst = std::max(worst, err);
+            INFO(name << " face " << f << " at (" << i << "/" << n << ", " << j << "/" << n << "): " << err);
+            REQUIRE(err < 1e-12);
+          }
+    INFO(name << ": largest difference " << worst);
+    SUCCEED();
+  }
+}
+
+TEST_CASE("the non-polynomial surface is continuous across every edge and vertex of the bundled meshes", "[runtime]") {
+  const SurfaceTables tables = SurfaceTables::load(tables_for("nonpoly").string());
+  for (const char* name : kBundled) {
+    const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
+    const LimitSurface surface(tables, mesh, "nonpoly");
+    const QuadTopology topo(mesh);
+    const double size = extent(mesh);
+    const long n = 12;
+    // A point on edge c -> c+1 of face f at fraction t/n from corner c, in f's parameters.
+    auto on_edge = [&](std::size_t f, int c, long t) {
+      const long u[4] = {t, n, n - t, 0}, v[4] = {0, t, n, n - t};
+      return surface.evaluate(f, u[c & 3], v[c & 3], n);
+    };
+    for (std::uint32_t h = 0; h < 4 * topo.faces(); ++h) {
+      const std::uint32_t o = topo.twin(h);
+      for (long t = 0; t <= n; ++t) {
+        const Point a = on_edge(QuadTopology::face_of(h), QuadTopology::corner_of(h), t);
+        const Point b = on_edge(QuadTopology::face_of(o), QuadTopology::corner_of(o), n - t);
+        INFO(name << " half-edge " << h << " t = " << t << "/" << n);
+        REQUIRE(distance(a, b) / size < 1e-13);
+      }
+    }
+  }
+}
+
+TEST_CASE("tessellations are closed oriented 2-manifolds for random rate mixes 1..24", "[runtime][tessellation]") {
+  const SurfaceTables tables = SurfaceTables::load(tables_for("nonpoly").string());
+  std::mt19937 rng(20261122u);
+  for (const char* name : kBundled) {
+    const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
+    const LimitSurface surface(tables, mesh, "nonpoly");
+    const long chi_expected = [&] {  // Euler characteristic of the control mesh
+      std::set<std::pair<int, int>> edges;
+      std::size_t off = 0;
+      for (int k : mesh.face_sizes) {
+        for (int c = 0; c < k; ++c) {
+          const int a = mesh.face_vertices[off + static_cast<std::size_t>(c)], b = mesh.face_vertices[off + static_cast<std::size_t>((c + 1) % k)];
+          edges.insert({std::min(a, b), std::max(a, b)});
+        }
+        off += static_cast<std::size_t>(k);
+      }
+      return static_cast<long>(mesh.vertex_count()) - static_cast<long>(edges.size()) + static_cast<long>(mesh.face_count());
+    }();
+    for (int trial = 0; trial < 4; ++trial) {
+      std::vector<int> rates(mesh.face_count());
+      for (int& r : rates) r = std::uniform_int_distribution<int>(1, 24)(rng);
+      std::vector<int> prepared = prepared_rates(surface, rates);
+      for (int& r : prepared) r = table_rate_at_least(tables, r);
+      const PolygonSoup soup = tessellate(surface, prepared);
+      // Independent count: every directed edge exactly once, its reverse exactly once.
+      std::map<std::pair<int, int>, int> directed;
+      auto add = [&](const int* poly, int k) {
+        for (int c = 0; c < k; ++c) ++directed[{poly[c], poly[(c + 1) % k]}];
+      };
+      for (const auto& q : soup.quads) add(q.data(), 4);
+      for (const auto& t : soup.triangles) add(t.data(), 3);
+      std::set<int> used;
+      for (const auto& [e, count] : directed) {
+        INFO(name << " trial " << trial << " edge " << e.first << "->" << e.second);
+        REQUIRE(count == 1);
+        REQUIRE(directed.count({e.second, e.first}) == 1);
+        used.insert(e.first);
+      }
+      REQUIRE(used.size() == soup.positions.size());  // no unused or duplicate-free-floating vertex
+      const long chi = static_cast<long>(soup.positions.size()) - static_cast<long>(directed.size() / 2) +
+                       static_cast<long>(soup.quads.size() + soup.triangles.size());
+      REQUIRE(chi == chi_expected);
+      // Every limit point computed once: no two output vertices coincide.
+      std::set<std::array<float, 3>> distinct(soup.positions.begin(), soup.positions.end());
+      REQUIRE(distinct.size() == soup.positions.size());
+    }
+  }
+}
+
+TEST_CASE("tessellation vertices equal stencileval at their parameters", "[runtime][tessellation]") {
+  const auto table = tables_for("nonpoly");
+  const Mesh mesh = read_obj((kMeshes / "torus-3-5.obj").string());
+  const SurfaceTables tables = SurfaceTables::load(table.string());
+  const LimitSurface surface(tables, mesh, "nonpoly");
+  // Original rate 6 -> prepared faces at rate 3 after one isolation step; the
+  // centre (i, j) of child c of face F lies at an original parameter on the grid 1/12.
+  const PolygonSoup soup = tessellate(surface, prepared_rates(surface, std::vector<int>(mesh.face_count(), 6)));
+  REQUIRE(surface.prepared().steps == 1);
+  const long n = 3;
+  const fs::path dir = scratch_dir("tess-eval");
+  std::ofstream queries(dir / "q.txt");
+  std::vector<std::size_t> sample;
+  for (std::size_t k = 0; k < soup.positions.size(); k += 7) {
+    const std::size_t face = k / (n * n), cell = k % (n * n);
+    const long i = static_cast<long>(cell % n), j = static_cast<long>(cell / n);
+    const std::size_t original = face / 4;
+    const int c = static_cast<int>(face % 4);
+    // Child grid (2i+1, 2j+1) / 2n -> parent-aligned quadrant coordinates -> original face on the grid 1/(4n).
+    const long a = 2 * i + 1, b = 2 * j + 1, m = 2 * n;
+    long x = 0, y = 0;
+    switch (c) {
+      case 0: x = a, y = b; break;
+      case 1: x = m - b, y = a; break;
+      case 2: x = m - a, y = m - b; break;
+      default: x = b, y = m - a; break;
+    }
+    const long u = x + ((c == 1 || c == 2) ? m : 0), v = y + ((c >= 2) ? m : 0);
+    queries << original << " " << u << "/" << 2 * m << " " << v << "/" << 2 * m << "\n";
+    sample.push_back(k);
+  }
+  queries.close();
+  const CliResult r = run_stencileval("--tables " + table.string() + " --mesh " + (kMeshes / "torus-3-5.obj").string() +
+                                      " --batch " + (dir / "q.txt").string());
+  REQUIRE(r.status == 0);
+  std::istringstream lines(r.output);
+  for (std::size_t k : sample) {
+    Point p{};
+    REQUIRE(static_cast<bool>(lines >> p[0] >> p[1] >> p[2]));
+    const auto& q = soup.positions[k];
+    INFO("vertex " << k);
+    REQUIRE(distance(p, {q[0], q[1], q[2]}) < 1e-6);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("bad tables and bad meshes get clear errors, and nothing is written", "[runtime][errors]") {
+  const fs::path dir = scratch_dir("runtime-errors");
+  const auto good = tables_for("nonpoly");
+  const std::string cube = (kMeshes / "cube.obj").string();
+  auto eval = [&](const std::string& tables, const std::string& mesh, const std::string& extra = "--face 0 --uv 1/2,1/2") {
+    return run_stencileval("--tables " + tables + " --mesh " + mesh + " " + extra);
+  };
+  auto write = [&](const std::string& file, const std::string& text) {
+    std::ofstream(dir / file) << text;
+    return (dir / file).string();
+  };
+  // Tables: truncated, corrupt, not a table, missing.
+  std::string bytes;
+  {
+    std::ifstream in(good, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  CHECK(eval(write("short.sgs", bytes.substr(0, bytes.size() / 2)), cube).output.find("checksum mismatch") != std::string::npos);
+  std::string flipped = bytes;
+  flipped[bytes.size() / 3] ^= 0x20;
+  CHECK(eval(write("flipped.sgs", flipped), cube).output.find("checksum mismatch") != std::string::npos);
+  CHECK(eval(write("text.sgs", "hello, this is not a table at all"), cube).output.find("bad magic") != std::string::npos);
+  CHECK(eval((dir / "none.sgs").string(), cube).output.find("no such table file") != std::string::npos);
+  // Meshes.
+  const std::string quadv = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+  CHECK(eval(good.string(), write("open.obj", quadv + "f 1 2 3 4\n")).output.find("has a boundary") != std::string::npos);
+  CHECK(eval(good.string(), write("tri.obj", quadv + "f 1 2 3\nf 1 3 4\n")).output.find("face 0 has 3 vertices") != std::string::npos);
+  CHECK(eval(good.string(), write("badindex.obj", quadv + "f 1 2 3 9\n")).output.find("badindex.obj:5: face index 9") != std::string::npos);
+  CHECK(eval(good.string(), cube, "--face 6 --uv 0,0").output.find("face 6 does not exist") != std::string::npos);
+  CHECK(eval(good.string(), cube, "--face 0 --uv 1/29,0").output.find("--n 29") != std::string::npos);
+  CHECK(eval(good.string(), cube, "--face 0 --uv 3/2,0").output.find("outside [0, 1]") != std::string::npos);
+  // A valence the tables lack: name the vertex and the stencilgen call.
+  const fs::path only5 = dir / "only5";
+  REQUIRE(run_stencilgen("--scheme nonpoly --valence 5 --n 4 --out " + only5.string() + " -q").status == 0);
+  const CliResult missing = eval((only5 / "nonpoly").string(), cube);
+  CHECK(missing.status == 1);
+  CHECK(missing.output.find("vertex 0 has valence 3") != std::string::npos);
+  CHECK(missing.output.find("stencilgen --scheme nonpoly --valence 3") != std::string::npos);
+  // stenciltess: no output file on failure.
+  const CliResult tess = run_stenciltess("--tables " + good.string() + " --mesh " + write("open2.obj", quadv + "f 1 2 3 4\n") +
+                                         " --rate 4 --out " + (dir / "out.ply").string());
+  CHECK(tess.status == 1);
+  CHECK_FALSE(fs::exists(dir / "out.ply"));
+  CHECK_FALSE(fs::exists(dir / "out.ply.partial"));
+  fs::remove_all(dir);
+}
