@@ -35,9 +35,9 @@ Measured run(const sg::QuadScheme& s, const std::vector<int>& valences, long n_m
   std::vector<std::size_t> json_sizes(all.size());
   tbb::parallel_for(std::size_t(0), all.size(), [&](std::size_t k) { json_sizes[k] = sg::surface_table_to_json(*all[k]).size(); });
   Measured m;
-  m.binary_double = sg::surface_tables_to_binary(set, s.hash, sg::BinaryPrecision::Double).size();
+  m.binary_double = sg::surface_tables_to_binary(s, set, sg::BinaryPrecision::Double).size();
   m.seconds = seconds_since(t0);
-  m.binary_single = sg::surface_tables_to_binary(set, s.hash, sg::BinaryPrecision::Single).size();
+  m.binary_single = sg::surface_tables_to_binary(s, set, sg::BinaryPrecision::Single).size();
   for (std::size_t b : json_sizes) m.json += b;
   return m;
 }

@@ -6,10 +6,12 @@
 namespace stencil_runtime {
 
 LimitSurface::LimitSurface(const SurfaceTables& tables, const Mesh& mesh, const std::string& scheme_name)
-    : tables_(tables), original_faces_(mesh.face_count()), prepared_(prepare_mesh(mesh, tables, scheme_name)) {
-  const QuadTopology topo(prepared_.mesh);
-  patches_.reserve(topo.faces());
-  for (std::size_t f = 0; f < topo.faces(); ++f) patches_.push_back(gather_patch(topo, f));
+    : tables_(tables),
+      original_faces_(mesh.face_count()),
+      prepared_(prepare_mesh(mesh, tables, scheme_name)),
+      topology_(prepared_.mesh) {
+  patches_.reserve(topology_.faces());
+  for (std::size_t f = 0; f < topology_.faces(); ++f) patches_.push_back(gather_patch(topology_, f));
 }
 
 void LimitSurface::stencil(std::size_t face, long a, long b, long n, double* weights) const {
@@ -29,9 +31,11 @@ void LimitSurface::evaluate_centres(std::size_t face, int n, std::array<float, 3
   const auto& pos = prepared_.mesh.positions;
   if (p.valence == 4) {
     // Rows first: R[q][i] = sum_p wx(i)[p] P(p, q), then each point sums 4 rows.
-    std::vector<double> wx(4 * static_cast<std::size_t>(n));
+    thread_local std::vector<double> wx;
+    thread_local std::vector<std::array<double, 3>> rows;
+    wx.resize(4 * static_cast<std::size_t>(n));
+    rows.resize(4 * static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) tables_.regular_weights(n, 2L * i + 1, wx.data() + 4 * i);
-    std::vector<std::array<double, 3>> rows(4 * static_cast<std::size_t>(n));
     for (int q = 0; q < 4; ++q)
       for (int i = 0; i < n; ++i) {
         std::array<double, 3> acc{0, 0, 0};
@@ -56,14 +60,23 @@ void LimitSurface::evaluate_centres(std::size_t face, int n, std::array<float, 3
     return;
   }
   const std::size_t m = p.points.size();
+  // The control points, contiguous, and in reflected order for mirrored stencils.
+  thread_local std::vector<std::array<double, 3>> local, reflected;
+  local.resize(m);
+  reflected.resize(m);
+  const std::uint32_t* reflect = tables_.reflection(p.valence);
+  for (std::size_t h = 0; h < m; ++h) local[h] = pos[static_cast<std::size_t>(p.points[h])];
+  for (std::size_t h = 0; h < m; ++h) reflected[h] = local[reflect[h]];
+  (void)w;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      stencil(face, 2L * i + 1, 2L * j + 1, n, w);
+      long pa = 0, pb = 0;
+      p.to_patch(2L * i + 1, 2L * j + 1, 2L * n, pa, pb);
+      bool mirrored = false;
+      const double* wt = tables_.centre_weights(p.valence, n, static_cast<int>(pa / 2), static_cast<int>(pb / 2), mirrored);
+      const auto& P = mirrored ? reflected : local;
       double x = 0, y = 0, z = 0;
-      for (std::size_t h = 0; h < m; ++h) {
-        const auto& P = pos[static_cast<std::size_t>(p.points[h])];
-        x += w[h] * P[0], y += w[h] * P[1], z += w[h] * P[2];
-      }
+      for (std::size_t h = 0; h < m; ++h) x += wt[h] * P[h][0], y += wt[h] * P[h][1], z += wt[h] * P[h][2];
       out[static_cast<std::size_t>(j * n + i)] = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
     }
 }

@@ -84,6 +84,7 @@ PreparedMesh prepare_mesh(const Mesh& mesh, const SurfaceTables& tables, const s
   QuadTopology topo(mesh);
   for (std::size_t v = 0; v < topo.vertices(); ++v) {
     const int val = topo.valence(static_cast<int>(v));
+    if (val > 64) throw MeshError("vertex " + std::to_string(v) + " has valence " + std::to_string(val) + "; the runtime supports valences up to 64");
     if (!tables.has_valence(val) || !tables.vertex_rule(val))
       throw MeshError("vertex " + std::to_string(v) + " has valence " + std::to_string(val) +
                       ", which the tables do not cover; generate it with: stencilgen --scheme " + scheme_name +

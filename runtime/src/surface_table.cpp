@@ -85,6 +85,11 @@ SurfaceTables SurfaceTables::load(const std::string& path, std::uint64_t expecte
     t.valences_.push_back(std::move(v));
   }
   if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
+  for (std::size_t k = 0; k < t.rates_.size(); ++k) {
+    const auto n = static_cast<std::size_t>(t.rates_[k]);
+    if (t.slot_of_rate_.size() <= n) t.slot_of_rate_.resize(n + 1, -1);
+    t.slot_of_rate_[n] = static_cast<int>(k);
+  }
   return t;
 }
 
@@ -108,9 +113,7 @@ bool SurfaceTables::has_valence(int v) const {
 }
 
 int SurfaceTables::rate_slot(int n) const {
-  for (std::size_t k = 0; k < rates_.size(); ++k)
-    if (rates_[k] == n) return static_cast<int>(k);
-  return -1;
+  return n >= 0 && static_cast<std::size_t>(n) < slot_of_rate_.size() ? slot_of_rate_[static_cast<std::size_t>(n)] : -1;
 }
 
 const SurfaceTables::Valence& SurfaceTables::valence_data(int v) const {
@@ -131,6 +134,17 @@ void SurfaceTables::centre_stencil(int valence, int n, int i, int j, double* wei
   if (slot < 0) throw std::out_of_range("rate " + std::to_string(n) + " is not in the surface table");
   if (i < 0 || j < 0 || i >= n || j >= n) throw std::out_of_range("cell index outside 0..n-1");
   stencil(valence, slot, 2L * i + 1, 2L * j + 1, true, weights);
+}
+
+const double* SurfaceTables::centre_weights(int valence, int n, int i, int j, bool& mirrored) const {
+  const int slot = rate_slot(n);
+  if (slot < 0) throw std::out_of_range("rate " + std::to_string(n) + " is not in the surface table");
+  const Valence& v = valence_data(valence);
+  mirrored = i > j;
+  const long lo = mirrored ? j : i, hi = mirrored ? i : j;
+  const auto& index = v.centres[static_cast<std::size_t>(slot)];
+  return v.weights.data() +
+         static_cast<std::size_t>(index[static_cast<std::size_t>(hi * (hi + 1) / 2 + lo)]) * static_cast<std::size_t>(v.points);
 }
 
 void SurfaceTables::regular_weights(int n, long a, double* w4) const {

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <tbb/global_control.h>
+#include <memory>
+#include <tbb/task_arena.h>
 #include <tbb/parallel_for.h>
 
 namespace stencil_runtime {
@@ -74,82 +75,132 @@ std::vector<int> prepared_rates(const LimitSurface& surface, const std::vector<i
 }
 
 PolygonSoup tessellate(const LimitSurface& surface, const std::vector<int>& rates, const TessellationOptions& options) {
+  PolygonSoup soup;
+  tessellate_into(surface, rates, soup, options);
+  return soup;
+}
+
+void tessellate_into(const LimitSurface& surface, const std::vector<int>& rates, PolygonSoup& soup,
+                     const TessellationOptions& options) {
   const Mesh& mesh = surface.prepared().mesh;
-  const QuadTopology topo(mesh);
-  const std::size_t nf = topo.faces();
+  const QuadTopology& topo = surface.topology();
+  const std::size_t nf = topo.faces(), nh = 4 * nf, nv = topo.vertices();
   if (rates.size() != nf) throw std::invalid_argument("need one rate per prepared face");
   const SurfaceTables& tables = surface.tables();
   for (std::size_t f = 0; f < nf; ++f)
     if (!tables.has_rate(rates[f]))
       throw std::out_of_range("face " + std::to_string(f) + ": rate " + std::to_string(rates[f]) + " is not in the tables");
+  (void)mesh;
 
-  // Offsets: points and interior quads per face; strip polygons per edge
-  // (owned by the half-edge with the smaller index); polygons per vertex.
-  std::vector<std::size_t> point_offset(nf + 1, 0), quad_offset(nf + 1, 0);
+  // Counts and offsets (serial, O(faces)): points and interior quads per face;
+  // the zipper of each edge (owned by its smaller half-edge) and the polygon of
+  // each vertex (owned by its first outgoing half-edge in face order).
+  std::vector<std::size_t> point_offset(nf + 1, 0), quad_offset(nh + nv + 1, 0), tri_offset(nh + nv + 1, 0);
+  std::vector<std::uint32_t> vertex_owner(nv, UINT32_MAX);
+  for (std::uint32_t h = 0; h < nh; ++h) {
+    const int v = topo.vertex(QuadTopology::face_of(h), QuadTopology::corner_of(h));
+    if (vertex_owner[static_cast<std::size_t>(v)] == UINT32_MAX) vertex_owner[static_cast<std::size_t>(v)] = h;
+  }
+  // Slots: [0, nf) interior quads per face (in quad_offset), then per half-edge, then per vertex.
+  std::vector<std::size_t> interior_offset(nf + 1, 0);
   for (std::size_t f = 0; f < nf; ++f) {
     const std::size_t n = static_cast<std::size_t>(rates[f]);
     point_offset[f + 1] = point_offset[f] + n * n;
-    quad_offset[f + 1] = quad_offset[f] + (n - 1) * (n - 1);
+    interior_offset[f + 1] = interior_offset[f] + (n - 1) * (n - 1);
   }
-  PolygonSoup soup;
+  for (std::uint32_t h = 0; h < nh; ++h) {
+    std::size_t q = 0, t = 0;
+    const std::uint32_t o = topo.twin(h);
+    if (h < o) {
+      const std::size_t na = static_cast<std::size_t>(rates[QuadTopology::face_of(h)]);
+      const std::size_t nb = static_cast<std::size_t>(rates[QuadTopology::face_of(o)]);
+      if (na == nb) q = na - 1;
+      else t = na + nb - 2;
+    }
+    quad_offset[h + 1] = quad_offset[h] + q;
+    tri_offset[h + 1] = tri_offset[h] + t;
+  }
+  for (std::size_t v = 0; v < nv; ++v) {
+    const int k = topo.valence(static_cast<int>(v));
+    quad_offset[nh + v + 1] = quad_offset[nh + v] + (k == 4 ? 1 : 0);
+    tri_offset[nh + v + 1] = tri_offset[nh + v] + (k == 4 ? 0 : static_cast<std::size_t>(k - 2));
+  }
+  const std::size_t interior_quads = interior_offset[nf];
   soup.positions.resize(point_offset[nf]);
-  std::vector<std::array<int, 4>> interior(quad_offset[nf]);
+  soup.quads.resize(interior_quads + quad_offset[nh + nv]);
+  soup.triangles.resize(tri_offset[nh + nv]);
 
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
-                            options.threads > 0 ? static_cast<std::size_t>(options.threads)
-                                                : tbb::this_task_arena::max_concurrency());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nf), [&](const tbb::blocked_range<std::size_t>& range) {
-    std::vector<double> w(2 * 64 + 8);
-    for (std::size_t f = range.begin(); f != range.end(); ++f) {
+  // Small jobs and one thread run as plain loops: task scheduling would cost
+  // more than it saves.
+  const int threads = options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
+  const bool parallel = threads > 1 && point_offset[nf] >= 20000;
+  std::unique_ptr<tbb::task_arena> arena;
+  if (parallel) arena = std::make_unique<tbb::task_arena>(threads);
+  auto for_range = [&](std::size_t count, const auto& body) {
+    if (!parallel) {
+      body(std::size_t(0), count);
+      return;
+    }
+    arena->execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count),
+                        [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); });
+    });
+  };
+  // Faces: limit points at the cell centres and the quads between them.
+  for_range(nf, [&](std::size_t begin, std::size_t end) {
+    double w[2 * 64 + 8];
+    for (std::size_t f = begin; f != end; ++f) {
       const int n = rates[f];
-      std::array<float, 3>* out = soup.positions.data() + point_offset[f];
-      surface.evaluate_centres(f, n, out, w.data());
+      surface.evaluate_centres(f, n, soup.positions.data() + point_offset[f], w);
       const int base = static_cast<int>(point_offset[f]);
-      std::array<int, 4>* q = interior.data() + quad_offset[f];
+      std::array<int, 4>* q = soup.quads.data() + interior_offset[f];
       for (int j = 0; j + 1 < n; ++j)
         for (int i = 0; i + 1 < n; ++i)
           *q++ = {base + j * n + i, base + j * n + i + 1, base + (j + 1) * n + i + 1, base + (j + 1) * n + i};
     }
   });
-
-  // Edge zippers and vertex polygons (cheap; serial).
-  soup.quads = std::move(interior);
-  for (std::uint32_t h = 0; h < 4 * nf; ++h) {
-    const std::uint32_t o = topo.twin(h);
-    if (o < h) continue;
-    const std::size_t f = QuadTopology::face_of(h), g = QuadTopology::face_of(o);
-    const int kf = QuadTopology::corner_of(h), kg = QuadTopology::corner_of(o);
-    const int na = rates[f], nb = rates[g];
-    const int fa = static_cast<int>(point_offset[f]), gb = static_cast<int>(point_offset[g]);
-    auto A = [&](int t) { return fa + row_cell(kf, t, na); };
-    auto B = [&](int t) { return gb + row_cell(kg, nb - 1 - t, nb); };  // g's row reversed into f's direction
-    zipper(
-        na, nb, [&](int a, int b) { soup.quads.push_back({B(b), B(b + 1), A(a + 1), A(a)}); },
-        [&](int a, int b, bool advance_a) {
-          if (advance_a) soup.triangles.push_back({B(b), A(a + 1), A(a)});
-          else soup.triangles.push_back({B(b), B(b + 1), A(a)});
-        });
-  }
-  std::vector<char> done(topo.vertices(), 0);
-  std::vector<int> ring;
-  for (std::uint32_t h = 0; h < 4 * nf; ++h) {
-    const std::size_t f0 = QuadTopology::face_of(h);
-    const int v = topo.vertex(f0, QuadTopology::corner_of(h));
-    if (done[static_cast<std::size_t>(v)]) continue;
-    done[static_cast<std::size_t>(v)] = 1;
-    ring.clear();
-    std::uint32_t e = h;
-    do {
-      const std::size_t f = QuadTopology::face_of(e);
-      const int c = QuadTopology::corner_of(e);
-      ring.push_back(static_cast<int>(point_offset[f]) + corner_cell(c, rates[f]));
-      e = topo.twin(QuadTopology::half_edge(f, c + 3));
-    } while (e != h);
-    if (ring.size() == 4) soup.quads.push_back({ring[0], ring[1], ring[2], ring[3]});
-    else
-      for (std::size_t k = 1; k + 1 < ring.size(); ++k) soup.triangles.push_back({ring[0], ring[k], ring[k + 1]});
-  }
-  return soup;
+  // Edges: the zipper between the two faces' rows of centres.
+  for_range(nh, [&](std::size_t begin, std::size_t end) {
+    for (std::uint32_t h = static_cast<std::uint32_t>(begin); h != end; ++h) {
+      const std::uint32_t o = topo.twin(h);
+      if (o < h) continue;
+      const std::size_t f = QuadTopology::face_of(h), g = QuadTopology::face_of(o);
+      const int kf = QuadTopology::corner_of(h), kg = QuadTopology::corner_of(o);
+      const int na = rates[f], nb = rates[g];
+      const int fa = static_cast<int>(point_offset[f]), gb = static_cast<int>(point_offset[g]);
+      auto A = [&](int t) { return fa + row_cell(kf, t, na); };
+      auto B = [&](int t) { return gb + row_cell(kg, nb - 1 - t, nb); };  // g's row, in f's direction
+      std::array<int, 4>* q = soup.quads.data() + interior_quads + quad_offset[h];
+      std::array<int, 3>* t = soup.triangles.data() + tri_offset[h];
+      zipper(
+          na, nb, [&](int a, int b) { *q++ = {B(b), B(b + 1), A(a + 1), A(a)}; },
+          [&](int a, int b, bool advance_a) {
+            if (advance_a) *t++ = {B(b), A(a + 1), A(a)};
+            else *t++ = {B(b), B(b + 1), A(a)};
+          });
+    }
+  });
+  // Vertices: the polygon of the corner centres around each mesh vertex.
+  for_range(nv, [&](std::size_t begin, std::size_t end) {
+    int ring[64];
+    for (std::size_t v = begin; v != end; ++v) {
+      const std::uint32_t h = vertex_owner[v];
+      int k = 0;
+      std::uint32_t e = h;
+      do {
+        const std::size_t f = QuadTopology::face_of(e);
+        const int c = QuadTopology::corner_of(e);
+        ring[k++] = static_cast<int>(point_offset[f]) + corner_cell(c, rates[f]);
+        e = topo.twin(QuadTopology::half_edge(f, c + 3));
+      } while (e != h && k < 64);
+      if (k == 4) {
+        soup.quads[interior_quads + quad_offset[nh + v]] = {ring[0], ring[1], ring[2], ring[3]};
+      } else {
+        std::array<int, 3>* t = soup.triangles.data() + tri_offset[nh + v];
+        for (int i = 1; i + 1 < k; ++i) *t++ = {ring[0], ring[i], ring[i + 1]};
+      }
+    }
+  });
 }
 
 }  // namespace stencil_runtime

@@ -23,6 +23,7 @@ class LimitSurface {
   std::size_t original_faces() const { return original_faces_; }
   const PreparedMesh& prepared() const { return prepared_; }
   const Patch& patch(std::size_t prepared_face) const { return patches_[prepared_face]; }
+  const QuadTopology& topology() const { return topology_; }  // of the prepared mesh
 
   // Limit point of original face `face` at (i/n, j/n), 0 <= i, j <= n, in the
   // face's parameterisation ((0,0) at its first vertex, u along v0->v1, v along
@@ -46,6 +47,7 @@ class LimitSurface {
   const SurfaceTables& tables_;
   std::size_t original_faces_;
   PreparedMesh prepared_;
+  QuadTopology topology_;
   std::vector<Patch> patches_;
 };
 

@@ -45,6 +45,13 @@ class SurfaceTables {
   void node_stencil(int valence, int n, int i, int j, double* weights) const;
   void centre_stencil(int valence, int n, int i, int j, double* weights) const;
 
+  // Direct access for extraordinary patches (valence != 4): the stored weights
+  // at cell centre (i, j) of rate n in patch coordinates. When `mirrored` comes
+  // back true they are the weights at (j, i): apply them to the control points
+  // permuted by reflection(valence), i.e. weight h multiplies point reflection[h].
+  const double* centre_weights(int valence, int n, int i, int j, bool& mirrored) const;
+  const std::uint32_t* reflection(int valence) const { return valence_data(valence).reflection.data(); }
+
   // The regular patch is a tensor product: its weight for point (p, q) at
   // (a/(2n), b/(2n)) is w(a)[p+1] * w(b)[q+1], with w(a) the four values
   // phi(a/(2n) - p), p = -1..2, written here (0 <= a <= 2n).
@@ -66,6 +73,7 @@ class SurfaceTables {
   double face_corner_ = 0, edge_end_ = 0, edge_wing_ = 0;
   std::vector<VertexRule> rules_;
   std::vector<int> rates_;
+  std::vector<int> slot_of_rate_;  // rate -> slot, -1 when absent
   std::vector<std::vector<double>> regular_;  // per rate slot: phi(k/(2n)) for k = regular_first_ + ...
   std::vector<std::int64_t> regular_first_;
   std::vector<Valence> valences_;

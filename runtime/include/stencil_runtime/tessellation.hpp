@@ -19,6 +19,11 @@ struct TessellationOptions {
 // `rates[f]` for every face of the *prepared* mesh; each must be in the tables.
 PolygonSoup tessellate(const LimitSurface& surface, const std::vector<int>& rates, const TessellationOptions& options = {});
 
+// The same into `out`, reusing its storage: repeated tessellations (animation,
+// changing view) then allocate nothing once the arrays are large enough.
+void tessellate_into(const LimitSurface& surface, const std::vector<int>& rates, PolygonSoup& out,
+                     const TessellationOptions& options = {});
+
 // Rates of the prepared mesh from rates of the original faces: a face refined
 // s times covers 4^s prepared faces of half the size per step, which get
 // ceil(rate / 2^s) (at least 1), rounded up to a rate the tables hold.

@@ -1,0 +1,128 @@
+// Benchmark: watertight tessellation throughput (triangles per second; a quad
+// counts as two) on the bundled meshes and on a large one (the chess piece
+// refined by the scheme's own rules to >= 100k control faces), uniform rates
+// 4, 8, 16, 24 and a random adaptive mix 1..24, with 1 and 2 threads. For
+// Catmull-Clark, OpenSubdiv 3.5's Bfr tessellates the same meshes at the same
+// rates in the same run (positions only, float, preallocated arrays), and the
+// ratio is printed. Also: table load time and memory.
+// Usage: bench_tessellation [NONPOLY.sgs] [CATMULL-CLARK.sgs] [MESH-NAME-FILTER]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "osd_tessellation.hpp"
+#include "stencil_runtime/tessellation.hpp"
+
+using namespace stencil_runtime;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double resident_mb() {
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return resident * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1e6;
+}
+
+struct NamedMesh {
+  std::string name;
+  Mesh mesh;
+};
+
+Mesh refined(Mesh mesh, const SurfaceTables& rules, std::size_t min_faces) {
+  while (mesh.face_count() < min_faces) mesh = subdivide_once(mesh, QuadTopology(mesh), rules);
+  return mesh;
+}
+
+std::vector<int> rate_set(std::size_t faces, int rate, std::mt19937& rng) {
+  std::vector<int> r(faces, rate);
+  if (rate == 0)
+    for (int& x : r) x = std::uniform_int_distribution<int>(1, 24)(rng);
+  return r;
+}
+
+// Median of three runs of `f`, which returns seconds.
+template <class F>
+double median3(F f) {
+  double t[3] = {f(), f(), f()};
+  std::sort(t, t + 3);
+  return t[1];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string nonpoly_path = argc > 1 ? argv[1] : "tables/nonpoly/nonpoly.sgs";
+  const std::string cc_path = argc > 2 ? argv[2] : "tables/catmull-clark/catmull-clark.sgs";
+  const std::string mesh_dir = std::string(STENCIL_SOURCE_DIR) + "/meshes/";
+  const std::string only = argc > 3 ? argv[3] : "";  // optional: only meshes whose name contains this
+
+  const double before = resident_mb();
+  const auto t0 = Clock::now();
+  const SurfaceTables nonpoly = SurfaceTables::load(nonpoly_path);
+  const double load_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  std::printf("# table load: %s, %.1f ms, resident memory +%.1f MB\n", nonpoly_path.c_str(), load_s * 1e3,
+              resident_mb() - before);
+  const SurfaceTables cc = SurfaceTables::load(cc_path);
+
+  std::printf("\n| scheme | mesh | control faces | rate | threads | triangles | ours (M tri/s) | OpenSubdiv Bfr (M tri/s) | ratio |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  for (const auto* scheme : {"nonpoly", "catmull-clark"}) {
+    const SurfaceTables& tables = std::string(scheme) == "nonpoly" ? nonpoly : cc;
+    std::vector<NamedMesh> meshes;
+    for (const char* name : {"cube", "torus-3-5", "chess-piece", "bumpy-sphere"})
+      meshes.push_back({name, read_obj(mesh_dir + name + ".obj")});
+    meshes.push_back({"chess-piece, refined", refined(read_obj(mesh_dir + "chess-piece.obj"), tables, 100000)});
+    for (const NamedMesh& m : meshes) {
+      if (m.name.find(only) == std::string::npos) continue;
+      const LimitSurface surface(tables, m.mesh, scheme);
+      const bool with_osd = std::string(scheme) == "catmull-clark";
+      std::unique_ptr<osd_bench::BfrTessellator> osd;
+      if (with_osd) osd = std::make_unique<osd_bench::BfrTessellator>(
+          osd_bench::Input{&m.mesh.positions, &m.mesh.face_sizes, &m.mesh.face_vertices});
+      for (int rate : {4, 8, 16, 24, 0}) {
+        std::mt19937 rng(7);
+        const std::vector<int> rates = rate_set(m.mesh.face_count(), rate, rng);
+        std::vector<int> prepared = prepared_rates(surface, rates);
+        for (int& r : prepared) r = table_rate_at_least(tables, r);
+        for (int threads : {1, 2}) {
+          std::size_t triangles = 0;
+          PolygonSoup soup;  // reused across runs, as OpenSubdiv's side reuses preallocated arrays
+          tessellate_into(surface, prepared, soup, {threads});
+          const double ours = median3([&] {
+            const auto s = Clock::now();
+            tessellate_into(surface, prepared, soup, {threads});
+            const double secs = std::chrono::duration<double>(Clock::now() - s).count();
+            triangles = soup.triangle_count();
+            return secs;
+          });
+          const double ours_rate = triangles / ours / 1e6;
+          if (with_osd) {
+            std::size_t osd_triangles = 0;
+            const double theirs = median3([&] {
+              const osd_bench::Result r = osd->run(rates, threads);
+              osd_triangles = r.triangles;
+              return r.seconds;
+            });
+            const double osd_rate = osd_triangles / theirs / 1e6;
+            std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | %.1f | %.2f |\n", scheme, m.name.c_str(),
+                        m.mesh.face_count(), rate ? std::to_string(rate).c_str() : "mix 1..24", threads, triangles,
+                        ours_rate, osd_rate, ours_rate / osd_rate);
+          } else {
+            std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | | |\n", scheme, m.name.c_str(), m.mesh.face_count(),
+                        rate ? std::to_string(rate).c_str() : "mix 1..24", threads, triangles, ours_rate);
+          }
+          std::fflush(stdout);
+        }
+      }
+    }
+  }
+  return 0;
+}
