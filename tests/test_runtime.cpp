@@ -238,3 +238,42 @@ TEST_CASE("bad tables and bad meshes get clear errors, and nothing is written", 
   CHECK_FALSE(fs::exists(dir / "out.ply.partial"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("stenciltess writes closed meshes in every rate mode", "[runtime][tessellation]") {
+  const fs::path dir = scratch_dir("tess-modes");
+  const auto table = tables_for("nonpoly").string();
+  const std::string torus = (kMeshes / "torus-3-5.obj").string();
+  {
+    std::ofstream rates(dir / "rates.txt");
+    for (int f = 0; f < 96; ++f) rates << 1 + (f * 7) % 24 << "\n";
+  }
+  for (const std::string& mode : {std::string("--rate 5"), "--rates " + (dir / "rates.txt").string(),
+                                  std::string("--tolerance 0.002"), std::string("--camera 0,-6,3,0,0,0 --pixels 5")}) {
+    const fs::path out = dir / "t.obj";
+    const CliResult r = run_stenciltess("--tables " + table + " --mesh " + torus + " " + mode + " --out " + out.string());
+    INFO(mode << "\n" << r.output);
+    REQUIRE(r.status == 0);
+    const Mesh m = read_obj(out.string());
+    std::map<std::pair<int, int>, int> directed;
+    std::size_t off = 0;
+    for (int k : m.face_sizes) {
+      for (int c = 0; c < k; ++c)
+        ++directed[{m.face_vertices[off + static_cast<std::size_t>(c)], m.face_vertices[off + static_cast<std::size_t>((c + 1) % k)]}];
+      off += static_cast<std::size_t>(k);
+    }
+    for (const auto& [e, count] : directed) {
+      REQUIRE(count == 1);
+      REQUIRE(directed.count({e.second, e.first}) == 1);
+    }
+    REQUIRE(static_cast<long>(m.vertex_count()) - static_cast<long>(directed.size() / 2) + static_cast<long>(m.face_count()) == 0);
+  }
+  // Binary PLY: header and size match the counts.
+  const fs::path ply = dir / "t.ply";
+  REQUIRE(run_stenciltess("--tables " + table + " --mesh " + torus + " --rate 4 --out " + ply.string()).status == 0);
+  std::ifstream in(ply, std::ios::binary);
+  std::string header, line;
+  while (std::getline(in, line) && line != "end_header") header += line + "\n";
+  CHECK(header.find("format binary_little_endian 1.0") != std::string::npos);
+  CHECK(header.find("element vertex ") != std::string::npos);
+  fs::remove_all(dir);
+}

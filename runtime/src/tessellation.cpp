@@ -133,7 +133,7 @@ void tessellate_into(const LimitSurface& surface, const std::vector<int>& rates,
   // Small jobs and one thread run as plain loops: task scheduling would cost
   // more than it saves.
   const int threads = options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
-  const bool parallel = threads > 1 && point_offset[nf] >= 20000;
+  const bool parallel = threads > 1 && point_offset[nf] >= 4096;
   std::unique_ptr<tbb::task_arena> arena;
   if (parallel) arena = std::make_unique<tbb::task_arena>(threads);
   auto for_range = [&](std::size_t count, const auto& body) {
