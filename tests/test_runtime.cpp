@@ -277,3 +277,33 @@ TEST_CASE("stenciltess writes closed meshes in every rate mode", "[runtime][tess
   CHECK(header.find("element vertex ") != std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST_CASE("the runtime loads the exact JSON tables too, with the same stencils as the binary file", "[runtime][tables]") {
+  const fs::path dir = scratch_dir("json-tables");
+  REQUIRE(run_stencilgen("--scheme nonpoly --valence 3,5 --n 1-6 --out " + dir.string() + " -q").status == 0);
+  const fs::path json_dir = dir / "nonpoly";
+  fs::rename(json_dir / "nonpoly.sgs", dir / "nonpoly.sgs");
+  const SurfaceTables binary = SurfaceTables::load((dir / "nonpoly.sgs").string());
+  const SurfaceTables exact = SurfaceTables::load(json_dir.string(), binary.scheme_hash());
+  REQUIRE(exact.rates() == binary.rates());
+  REQUIRE(exact.valences() == binary.valences());
+  REQUIRE(exact.face_corner() == binary.face_corner());
+  REQUIRE(exact.vertex_rule(5)->edge == binary.vertex_rule(5)->edge);
+  for (int v : {3, 4, 5})
+    for (int n = 1; n <= 6; ++n) {
+      std::vector<double> a(static_cast<std::size_t>(SurfaceTables::points(v))), b(a.size());
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          exact.centre_stencil(v, n, i, j, a.data());
+          binary.centre_stencil(v, n, i, j, b.data());
+          for (std::size_t h = 0; h < a.size(); ++h) REQUIRE(a[h] == Approx(b[h]).epsilon(1e-15).margin(1e-300));
+          exact.node_stencil(v, n, i, j, a.data());
+          binary.node_stencil(v, n, i, j, b.data());
+          for (std::size_t h = 0; h < a.size(); ++h) REQUIRE(a[h] == Approx(b[h]).epsilon(1e-15).margin(1e-300));
+        }
+    }
+  CHECK_THROWS_WITH(SurfaceTables::load(json_dir.string(), binary.scheme_hash() + 1), Catch::Contains("different scheme"));
+  fs::remove(json_dir / "v5" / "n4.json");
+  CHECK_THROWS_WITH(SurfaceTables::load(json_dir.string()), Catch::Contains("different set of rates"));
+  fs::remove_all(dir);
+}

@@ -16,6 +16,11 @@ SurfaceTable make_surface_table(const QuadScheme& scheme, const PatchGrid& patch
   t.n = patch.grid / 2;
   t.points = patch.points;
   t.reflection = PatchLayout(patch.valence).reflection();
+  t.rules.face_corner = scheme.face_corner;
+  t.rules.edge_end = scheme.edge_end;
+  t.rules.edge_wing = scheme.edge_wing;
+  t.rules.vertex[4] = scheme.vertex_rule(4);
+  t.rules.vertex[patch.valence] = scheme.vertex_rule(patch.valence);
   auto at = [&](long i, long j) { return patch.scaled[static_cast<std::size_t>(j * (patch.grid + 1) + i)]; };
   for (long j = 0; j <= t.n; ++j)
     for (long i = 0; i <= j; ++i) t.nodes.push_back({i, j, at(2 * i, 2 * j)});

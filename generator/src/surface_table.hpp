@@ -6,6 +6,7 @@
 // PatchLayout::reflection). Serialised as exact JSON (surface_table_json) and,
 // all valences and rates of a scheme together, as compact binary
 // (surface_table_binary); see docs/table-format.md.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,12 @@ struct SurfaceTable {
   long n = 1;
   std::size_t points = 0;
   std::vector<std::size_t> reflection;
+  // The scheme's subdivision rules (valence 4 and this table's valence), so
+  // that a reader of the JSON alone can refine a mesh with the scheme's step.
+  struct Rules {
+    Rational face_corner, edge_end, edge_wing;
+    std::map<int, VertexRule> vertex;
+  } rules;
   std::vector<Entry> nodes;    // j-major: j = 0..n, i = 0..j
   std::vector<Entry> centres;  // j-major: j = 0..n-1, i = 0..j
 };

@@ -50,6 +50,15 @@ std::string surface_table_to_json(const SurfaceTable& t) {
   head["symmetry"] =
       "only points with x <= y are listed; the stencil at (y,x) has weight w[h] at index reflection[h], where w is "
       "the stencil at (x,y)";
+  ojson rules;
+  rules["face_corner"] = to_string(t.rules.face_corner);
+  rules["edge_end"] = to_string(t.rules.edge_end);
+  rules["edge_wing"] = to_string(t.rules.edge_wing);
+  ojson vertex = ojson::object();
+  for (const auto& [v, r] : t.rules.vertex)
+    vertex[std::to_string(v)] = {to_string(r.centre), to_string(r.edge), to_string(r.face)};
+  rules["vertex"] = vertex;
+  head["rules"] = rules;
   std::string out = head.dump(1);
   out.resize(out.size() - 2);  // reopen the object ("\n}"): compact arrays follow, one stencil per line
   out += ",\n \"reflection\": " + ojson(t.reflection).dump() + ",\n";

@@ -1,5 +1,6 @@
 #include "stencil_runtime/surface_table.hpp"
 
+#include <filesystem>
 #include <stdexcept>
 
 #include "binary_reader.hpp"
@@ -20,6 +21,7 @@ std::size_t half_count(long side) { return static_cast<std::size_t>(side * (side
 }  // namespace
 
 SurfaceTables SurfaceTables::load(const std::string& path, std::uint64_t expected_hash) {
+  if (std::filesystem::is_directory(path)) return load_json_directory(path, expected_hash);
   const std::string bytes = detail::read_binary_file(path);
   detail::BinaryReader r(bytes, path);
   detail::check_envelope(bytes, r, format::kSurfaceMagic, "binary surface table");

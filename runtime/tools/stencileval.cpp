@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --batch queries.txt   (lines: F U V)"};
   std::string tables_spec, mesh_path, uv, batch;
   long face = -1;
-  app.add_option("--tables", tables_spec, "a .sgs table file, or the directory stencilgen wrote it to")->required();
+  app.add_option("--tables", tables_spec, "a .sgs table file, the directory stencilgen wrote it to, or a directory of exact JSON tables")->required();
   app.add_option("--mesh", mesh_path, "closed quad control mesh (.obj)")->required();
   app.add_option("--face", face, "0-based face index in file order");
   app.add_option("--uv", uv, "exact parameters U,V in [0,1], e.g. 1/3,1/2");

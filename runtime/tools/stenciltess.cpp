@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   std::string tables_spec, mesh_path, out, rates_file, camera;
   int rate = 0, threads = 0, width = 1920;
   double tolerance = 0, pixels = 0, fov = 60;
-  app.add_option("--tables", tables_spec, "a .sgs table file, or the directory stencilgen wrote it to")->required();
+  app.add_option("--tables", tables_spec, "a .sgs table file, the directory stencilgen wrote it to, or a directory of exact JSON tables")->required();
   app.add_option("--mesh", mesh_path, "closed quad control mesh (.obj)")->required();
   app.add_option("--out", out, "output .obj (text) or .ply (binary); written whole or not at all")->required();
   auto* r1 = app.add_option("--rate", rate, "uniform rate N for every face");

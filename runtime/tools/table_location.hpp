@@ -8,10 +8,12 @@
 
 namespace stencil_tools {
 
-// --tables is a .sgs file, or a directory holding exactly one (e.g. tables/nonpoly).
+// --tables is a .sgs file, a directory holding exactly one (e.g. tables/nonpoly),
+// or a directory of exact JSON tables only (loaded from JSON, slower).
 inline std::filesystem::path find_table_file(const std::string& spec) {
   namespace fs = std::filesystem;
-  const fs::path p(spec);
+  fs::path p = fs::path(spec).lexically_normal();
+  if (p.filename().empty()) p = p.parent_path();  // "tables/nonpoly/"; the scheme name is the last component
   if (fs::is_regular_file(p)) return p;
   if (!fs::is_directory(p)) throw std::runtime_error(spec + ": no such table file or directory");
   fs::path found;
@@ -20,6 +22,7 @@ inline std::filesystem::path find_table_file(const std::string& spec) {
       if (!found.empty()) throw std::runtime_error(spec + ": holds several .sgs files; name one");
       found = e.path();
     }
+  if (found.empty() && fs::is_directory(p / "regular")) return p;  // JSON tables
   if (found.empty())
     throw std::runtime_error(spec + ": no .sgs table file here (make one with: stencilgen --scheme nonpoly --valence 3-8 --n 24 --out tables)");
   return found;

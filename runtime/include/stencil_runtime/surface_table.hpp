@@ -18,7 +18,11 @@ class SurfaceTables {
   // Throws LoadError naming the file (missing, truncated, bad magic, version,
   // checksum, inconsistent contents, or a scheme hash other than a nonzero
   // `expected_hash`).
+  // `path` is a .sgs file (fast), or a directory of exact JSON tables as
+  // stencilgen writes them (v<V>/n<N>.json, regular/n<2N>.json), whose
+  // rationals are converted to the nearest double.
   static SurfaceTables load(const std::string& path, std::uint64_t expected_hash = 0);
+  static SurfaceTables load_json_directory(const std::string& dir, std::uint64_t expected_hash = 0);
 
   std::uint64_t scheme_hash() const { return hash_; }
 
