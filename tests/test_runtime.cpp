@@ -218,7 +218,7 @@ TEST_CASE("bad tables and bad meshes get clear errors, and nothing is written", 
   // Meshes.
   const std::string quadv = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
   CHECK(eval(good.string(), write("open.obj", quadv + "f 1 2 3 4\n")).output.find("has a boundary") != std::string::npos);
-  CHECK(eval(good.string(), write("tri.obj", quadv + "f 1 2 3\nf 1 3 4\n")).output.find("face 0 has 3 vertices") != std::string::npos);
+  CHECK(eval(good.string(), write("tri.obj", quadv + "f 1 2 3\nf 1 3 4\n")).output.find("has a boundary") != std::string::npos);
   CHECK(eval(good.string(), write("badindex.obj", quadv + "f 1 2 3 9\n")).output.find("badindex.obj:5: face index 9") != std::string::npos);
   CHECK(eval(good.string(), cube, "--face 6 --uv 0,0").output.find("face 6 does not exist") != std::string::npos);
   CHECK(eval(good.string(), cube, "--face 0 --uv 1/29,0").output.find("--n 29") != std::string::npos);
@@ -306,4 +306,44 @@ TEST_CASE("the runtime loads the exact JSON tables too, with the same stencils a
   fs::remove(json_dir / "v5" / "n4.json");
   CHECK_THROWS_WITH(SurfaceTables::load(json_dir.string()), Catch::Contains("different set of rates"));
   fs::remove_all(dir);
+}
+
+namespace {
+// A closed triangular prism: two triangles and three quads, every vertex of valence 3.
+Mesh prism() {
+  Mesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0.3, 0.9, 0}, {0, 0, 1.2}, {1, 0, 1.1}, {0.4, 1, 1.3}};
+  m.face_sizes = {3, 3, 4, 4, 4};
+  m.face_vertices = {0, 2, 1, 3, 4, 5, 0, 1, 4, 3, 1, 2, 5, 4, 2, 0, 3, 5};
+  return m;
+}
+}  // namespace
+
+TEST_CASE("meshes with triangles get the scheme's polygon step; Catmull-Clark then equals OpenSubdiv", "[runtime][opensubdiv]") {
+  const SurfaceTables cc = SurfaceTables::load(tables_for("catmull-clark").string());
+  const Mesh m = prism();
+  const LimitSurface surface(cc, m, "catmull-clark");
+  CHECK(surface.prepared().steps == 2);  // polygon step, then isolation of the triangles' centres
+  bfr_reference::CatmullClarkLimit reference(m.positions, m.face_sizes, m.face_vertices);
+  const double size = extent(m);
+  for (std::size_t f = 2; f < 5; ++f)  // the quads: (u, v) is defined there
+    for (long n : {1L, 2L, 4L, 5L, 8L})
+      for (long j = 0; j <= n; ++j)
+        for (long i = 0; i <= n; ++i) {
+          const Point ours = surface.evaluate(f, i, j, n);
+          const auto ref = reference.evaluate(static_cast<int>(f), double(i) / n, double(j) / n);
+          INFO("face " << f << " at (" << i << "/" << n << ", " << j << "/" << n << ")");
+          REQUIRE(distance(ours, ref) / size < 1e-12);
+        }
+  CHECK_THROWS_WITH(surface.evaluate(0, 0, 0, 1), Catch::Contains("face 0 has 3 vertices"));
+  // The tessellation of the mixed mesh is closed, and a sphere.
+  const PolygonSoup soup = tessellate(surface, prepared_rates(surface, {3, 7, 12, 5, 24}));
+  std::map<std::pair<int, int>, int> directed;
+  for (const auto& q : soup.quads)
+    for (int c = 0; c < 4; ++c) ++directed[{q[c], q[(c + 1) % 4]}];
+  for (const auto& t : soup.triangles)
+    for (int c = 0; c < 3; ++c) ++directed[{t[c], t[(c + 1) % 3]}];
+  for (const auto& [e, count] : directed) REQUIRE((count == 1 && directed.count({e.second, e.first}) == 1));
+  CHECK(static_cast<long>(soup.positions.size()) - static_cast<long>(directed.size() / 2) +
+            static_cast<long>(soup.quads.size() + soup.triangles.size()) == 2);
 }

@@ -163,6 +163,15 @@ TEST_CASE("bad quad scheme input is refused with the file and field named, nothi
     CHECK(r.output.find(b.expect) != std::string::npos);
     CHECK_FALSE(std::filesystem::exists(out));
   }
+  {  // polygon rules that do not reproduce the quad rules on quads
+    std::ofstream(dir / "poly.json") << R"J({"format": "stencilgen-scheme", "version": 1, "name": "poly", "type": "quad",
+      "regular_curve": "nonpoly-curve",
+      "rules": {"face": {"corner": "1/4"}, "edge": {"end": "1/3", "wing": "1/12"}, "vertex": {"centre": "4/9", "edge": "4/(9*v)", "face": "1/(9*v)"}},
+      "polygon_rules": {"edge": {"end": "1/6", "face_point": "1/3"}, "vertex": {"centre": "1/9", "edge_midpoint": "5/9", "face_point": "3/9"}}})J";
+    const CliResult r = run_stencilgen("analyze --scheme " + (dir / "poly.json").string() + " --valence 3");
+    CHECK(r.status == 1);
+    CHECK(r.output.find("polygon_rules.vertex: on quads at valence 3 it gives") != std::string::npos);
+  }
   const CliResult low = run_stencilgen("--scheme nonpoly --valence 2-5 --n 4 --out " + out.string());
   CHECK(low.status == 1);
   CHECK(low.output.find("valences start at 3") != std::string::npos);

@@ -28,4 +28,19 @@ VertexRule QuadScheme::vertex_rule(int valence) const {
   return r;
 }
 
+QuadScheme::PolygonVertexRule QuadScheme::polygon_vertex_rule(int valence) const {
+  if (!polygon.present) throw Error(source + ": the scheme has no polygon_rules");
+  Bindings b = parameters;
+  b["v"] = valence;
+  auto eval = [&](const std::string& formula, const char* field) {
+    try {
+      return evaluate_expression(formula, b);
+    } catch (const Error& e) {
+      throw Error(source + ": polygon_rules.vertex." + field + " at v = " + std::to_string(valence) + ": " + e.what());
+    }
+  };
+  return {eval(polygon.vertex_centre, "centre"), eval(polygon.vertex_midpoint, "edge_midpoint"),
+          eval(polygon.vertex_face, "face_point")};
+}
+
 }  // namespace sg

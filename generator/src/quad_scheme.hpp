@@ -29,6 +29,21 @@ struct QuadScheme {
   std::string vertex_centre, vertex_edge, vertex_face;  // formulas in v (and the parameters)
   int min_valence = 3, max_valence = 64;
 
+  // Optional rules for one subdivision step of a mesh with arbitrary polygons
+  // (after which every face is a quad). Face point: the centroid. Edge point:
+  // edge_end * (both ends) + edge_face * (both new face points). Vertex point
+  // at valence v: centre * old + midpoint * (mean of the edge midpoints) +
+  // face * (mean of the new face points). On quads they must equal the quad rules.
+  struct PolygonRules {
+    bool present = false;
+    Rational edge_end, edge_face;
+    std::string vertex_centre, vertex_midpoint, vertex_face;  // formulas in v
+  } polygon;
+  struct PolygonVertexRule {
+    Rational centre, midpoint, face;
+  };
+  PolygonVertexRule polygon_vertex_rule(int valence) const;
+
   // Exact vertex rule at valence v; throws sg::Error naming the file when v is
   // outside [min_valence, max_valence] or the weights do not sum to 1.
   VertexRule vertex_rule(int valence) const;

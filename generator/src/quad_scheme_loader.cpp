@@ -45,6 +45,42 @@ void check_tensor_product(const QuadScheme& q, const SchemeContext& ctx) {
   expect("vertex.face", r.face, s[0] * s[0]);
 }
 
+// Polygon rules, checked to reproduce the quad rules on quads: there the edge
+// point is (end + face/2)(ends) + (face/4)(wings), and the vertex point is
+// (c + m/2 + f/4) old + ((m + f)/(2v)) per edge neighbour + (f/(4v)) per diagonal.
+void load_polygon_rules(QuadScheme& q, const json& p, const SchemeContext& ctx) {
+  auto& r = q.polygon;
+  r.present = true;
+  const json& edge = ctx.require(p, "edge", "polygon_rules");
+  const json& vertex = ctx.require(p, "vertex", "polygon_rules");
+  r.edge_end = ctx.rational(ctx.require(edge, "end", "polygon_rules.edge"), "polygon_rules.edge.end", q.parameters);
+  r.edge_face = ctx.rational(ctx.require(edge, "face_point", "polygon_rules.edge"), "polygon_rules.edge.face_point", q.parameters);
+  auto formula = [&](const char* key) {
+    const json& f = ctx.require(vertex, key, "polygon_rules.vertex");
+    if (f.is_number_integer()) return std::to_string(f.get<long>());
+    if (!f.is_string()) ctx.fail(std::string("polygon_rules.vertex.") + key, "expected a formula string in v");
+    return f.get<std::string>();
+  };
+  r.vertex_centre = formula("centre");
+  r.vertex_midpoint = formula("edge_midpoint");
+  r.vertex_face = formula("face_point");
+  if (r.edge_end + r.edge_face / 2 != q.edge_end || r.edge_face / 4 != q.edge_wing)
+    ctx.fail("polygon_rules.edge", "on quads it gives end " + to_string(r.edge_end + r.edge_face / 2) + " and wing " +
+                                       to_string(r.edge_face / 4) + ", but rules.edge has " + to_string(q.edge_end) +
+                                       " and " + to_string(q.edge_wing));
+  for (int v = q.min_valence; v <= std::min(q.max_valence, 64); ++v) {
+    const auto pr = q.polygon_vertex_rule(v);
+    const VertexRule want = q.vertex_rule(v);
+    const Rational centre = pr.centre + pr.midpoint / 2 + pr.face / 4, e = (pr.midpoint + pr.face) / (2 * v),
+                   f = pr.face / (4 * v);
+    if (centre != want.centre || e != want.edge || f != want.face)
+      ctx.fail("polygon_rules.vertex", "on quads at valence " + std::to_string(v) + " it gives " + to_string(centre) +
+                                           ", " + to_string(e) + ", " + to_string(f) + ", but rules.vertex has " +
+                                           to_string(want.centre) + ", " + to_string(want.edge) + ", " +
+                                           to_string(want.face));
+  }
+}
+
 }  // namespace
 
 QuadScheme load_quad_scheme(const std::string& spec, const std::vector<std::string>& overrides, const fs::path& dir) {
@@ -97,6 +133,7 @@ QuadScheme load_quad_scheme(const std::string& spec, const std::vector<std::stri
   // Every covered valence must give a rule summing to 1 (cheap, and catches typos early).
   for (int v = q.min_valence; v <= std::min(q.max_valence, 64); ++v) q.vertex_rule(v);
   check_tensor_product(q, ctx);
+  if (doc.contains("polygon_rules")) load_polygon_rules(q, doc["polygon_rules"], ctx);
 
   json canonical = doc;
   canonical.erase("description");

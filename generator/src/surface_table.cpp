@@ -21,6 +21,12 @@ SurfaceTable make_surface_table(const QuadScheme& scheme, const PatchGrid& patch
   t.rules.edge_wing = scheme.edge_wing;
   t.rules.vertex[4] = scheme.vertex_rule(4);
   t.rules.vertex[patch.valence] = scheme.vertex_rule(patch.valence);
+  if (scheme.polygon.present) {
+    t.rules.polygon = true;
+    t.rules.polygon_edge_end = scheme.polygon.edge_end;
+    t.rules.polygon_edge_face = scheme.polygon.edge_face;
+    for (int v : {4, patch.valence}) t.rules.polygon_vertex[v] = scheme.polygon_vertex_rule(v);
+  }
   auto at = [&](long i, long j) { return patch.scaled[static_cast<std::size_t>(j * (patch.grid + 1) + i)]; };
   for (long j = 0; j <= t.n; ++j)
     for (long i = 0; i <= j; ++i) t.nodes.push_back({i, j, at(2 * i, 2 * j)});

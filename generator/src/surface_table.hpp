@@ -32,6 +32,9 @@ struct SurfaceTable {
   struct Rules {
     Rational face_corner, edge_end, edge_wing;
     std::map<int, VertexRule> vertex;
+    bool polygon = false;  // the polygon rules (quad_scheme.hpp), when the scheme has them
+    Rational polygon_edge_end, polygon_edge_face;
+    std::map<int, QuadScheme::PolygonVertexRule> polygon_vertex;
   } rules;
   std::vector<Entry> nodes;    // j-major: j = 0..n, i = 0..j
   std::vector<Entry> centres;  // j-major: j = 0..n-1, i = 0..j

@@ -57,6 +57,18 @@ std::string surface_tables_to_binary(const QuadScheme& scheme, const SurfaceTabl
     put<double>(out, to_double(r.edge));
     put<double>(out, to_double(r.face));
   }
+  // Optional polygon rules (one step on a mesh with non-quad faces), same valences.
+  put<std::uint8_t>(out, scheme.polygon.present ? 1 : 0);
+  if (scheme.polygon.present) {
+    put<double>(out, to_double(scheme.polygon.edge_end));
+    put<double>(out, to_double(scheme.polygon.edge_face));
+    for (int v : rule_valences) {
+      const auto r = scheme.polygon_vertex_rule(v);
+      put<double>(out, to_double(r.centre));
+      put<double>(out, to_double(r.midpoint));
+      put<double>(out, to_double(r.face));
+    }
+  }
   put<std::uint32_t>(out, static_cast<std::uint32_t>(set.rates.size()));
   for (long n : set.rates) put<std::uint32_t>(out, static_cast<std::uint32_t>(n));
   for (const CurveSolution& c : set.regular) {

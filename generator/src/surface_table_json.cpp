@@ -58,6 +58,16 @@ std::string surface_table_to_json(const SurfaceTable& t) {
   for (const auto& [v, r] : t.rules.vertex)
     vertex[std::to_string(v)] = {to_string(r.centre), to_string(r.edge), to_string(r.face)};
   rules["vertex"] = vertex;
+  if (t.rules.polygon) {
+    ojson polygon;
+    polygon["edge_end"] = to_string(t.rules.polygon_edge_end);
+    polygon["edge_face_point"] = to_string(t.rules.polygon_edge_face);
+    ojson pv = ojson::object();
+    for (const auto& [v, r] : t.rules.polygon_vertex)
+      pv[std::to_string(v)] = {to_string(r.centre), to_string(r.midpoint), to_string(r.face)};
+    polygon["vertex"] = pv;
+    rules["polygon"] = polygon;
+  }
   head["rules"] = rules;
   std::string out = head.dump(1);
   out.resize(out.size() - 2);  // reopen the object ("\n}"): compact arrays follow, one stencil per line

@@ -88,7 +88,7 @@ Point LimitSurface::evaluate(std::size_t face, long i, long j, long n) const {
   if (n < 1 || i < 0 || j < 0 || i > n || j > n) throw std::out_of_range("parameter outside the face");
   if (!tables_.has_rate(static_cast<int>(n)))
     throw std::out_of_range("rate " + std::to_string(n) + " is not in the tables");
-  const FaceParameter at = locate(face, i, j, n, prepared_.steps);
+  const FaceParameter at = locate(prepared_, face, i, j, n);
   const Patch& p = patches_[at.face];
   double w[2 * 64 + 8];
   if (p.points.size() > sizeof w / sizeof w[0]) throw std::out_of_range("valence too large");

@@ -1,5 +1,7 @@
 #include "stencil_runtime/mesh_preparation.hpp"
 
+#include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 
@@ -80,34 +82,182 @@ bool isolated(const QuadTopology& topo) {
 }
 }  // namespace
 
+namespace {
+
+// Pairs the half-edges of a polygon mesh (h = a corner, from vertex(h) to
+// vertex(next[h])) and counts valences; refuses boundaries and non-manifold
+// or inconsistently oriented edges.
+void link_polygon_edges(const Mesh& mesh, const std::vector<std::size_t>& start, const std::vector<std::size_t>& next,
+                        const std::vector<std::size_t>& face_of, std::vector<std::size_t>& twin, std::vector<int>& valence) {
+  const std::size_t nh = start.back(), nv = mesh.vertex_count();
+  auto vert = [&](std::size_t h) { return mesh.face_vertices[h]; };
+  twin.assign(nh, 0);
+  valence.assign(nv, 0);
+  std::unordered_map<std::uint64_t, std::size_t> directed;
+  auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
+  for (std::size_t h = 0; h < nh; ++h)
+    if (!directed.emplace(key(vert(h), vert(next[h])), h).second)
+      throw MeshError("edge (" + std::to_string(vert(h)) + ", " + std::to_string(vert(next[h])) +
+                      ") is used twice in the same direction: the mesh is non-manifold or inconsistently oriented");
+  for (std::size_t h = 0; h < nh; ++h) {
+    const auto it = directed.find(key(vert(next[h]), vert(h)));
+    if (it == directed.end())
+      throw MeshError("edge (" + std::to_string(vert(h)) + ", " + std::to_string(vert(next[h])) + ") of face " +
+                      std::to_string(face_of[h]) + " has no neighbouring face: the mesh has a boundary (only closed meshes are supported)");
+    twin[h] = it->second;
+    ++valence[static_cast<std::size_t>(vert(h))];
+  }
+}
+
+}  // namespace
+
+Mesh subdivide_polygons(const Mesh& mesh, const SurfaceTables& t) {
+  using P = std::array<double, 3>;
+  const std::size_t nf = mesh.face_count(), nv = mesh.vertex_count();
+  std::vector<std::size_t> start(nf + 1, 0);
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (mesh.face_sizes[f] < 3) throw MeshError("face " + std::to_string(f) + " has fewer than 3 vertices");
+    start[f + 1] = start[f] + static_cast<std::size_t>(mesh.face_sizes[f]);
+  }
+  const std::size_t nh = start[nf];
+  auto vert = [&](std::size_t h) { return mesh.face_vertices[h]; };
+  std::vector<std::size_t> face_of(nh), next(nh);
+  for (std::size_t f = 0; f < nf; ++f)
+    for (std::size_t h = start[f]; h < start[f + 1]; ++h) {
+      face_of[h] = f;
+      next[h] = h + 1 < start[f + 1] ? h + 1 : start[f];
+      if (vert(h) < 0 || static_cast<std::size_t>(vert(h)) >= nv)
+        throw MeshError("face " + std::to_string(f) + " refers to vertex " + std::to_string(vert(h)) + ", which does not exist");
+    }
+  std::vector<std::size_t> twin;
+  std::vector<int> valence;
+  link_polygon_edges(mesh, start, next, face_of, twin, valence);
+  Mesh out;
+  out.positions.assign(nv + nf, P{0, 0, 0});
+  for (std::size_t f = 0; f < nf; ++f) {  // face points: centroids
+    const double w = 1.0 / mesh.face_sizes[f];
+    for (std::size_t h = start[f]; h < start[f + 1]; ++h)
+      for (int k = 0; k < 3; ++k) out.positions[nv + f][k] += w * mesh.positions[static_cast<std::size_t>(vert(h))][k];
+  }
+  std::vector<std::size_t> edge_point(nh);
+  for (std::size_t h = 0; h < nh; ++h) {
+    if (twin[h] < h) {
+      edge_point[h] = edge_point[twin[h]];
+      continue;
+    }
+    P p{0, 0, 0};
+    const auto& a = mesh.positions[static_cast<std::size_t>(vert(h))];
+    const auto& b = mesh.positions[static_cast<std::size_t>(vert(next[h]))];
+    const auto& f1 = out.positions[nv + face_of[h]];
+    const auto& f2 = out.positions[nv + face_of[twin[h]]];
+    for (int k = 0; k < 3; ++k) p[k] = t.polygon_edge_end() * (a[k] + b[k]) + t.polygon_edge_face() * (f1[k] + f2[k]);
+    edge_point[h] = out.positions.size();
+    out.positions.push_back(p);
+  }
+  std::vector<P> mid_sum(nv, P{0, 0, 0}), face_sum(nv, P{0, 0, 0});
+  for (std::size_t h = 0; h < nh; ++h) {  // each outgoing half-edge: one incident edge and one incident face
+    const std::size_t v = static_cast<std::size_t>(vert(h));
+    const auto& a = mesh.positions[v];
+    const auto& b = mesh.positions[static_cast<std::size_t>(vert(next[h]))];
+    for (int k = 0; k < 3; ++k) {
+      mid_sum[v][k] += 0.5 * (a[k] + b[k]);
+      face_sum[v][k] += out.positions[nv + face_of[h]][k];
+    }
+  }
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (valence[v] == 0) throw MeshError("vertex " + std::to_string(v) + " belongs to no face");
+    const auto* rule = t.polygon_vertex_rule(valence[v]);
+    if (!rule) throw MeshError("vertex " + std::to_string(v) + " has valence " + std::to_string(valence[v]) + ", for which the table has no rule");
+    for (int k = 0; k < 3; ++k)
+      out.positions[v][k] = rule->centre * mesh.positions[v][k] + rule->edge * mid_sum[v][k] / valence[v] +
+                            rule->face * face_sum[v][k] / valence[v];
+  }
+  out.face_sizes.assign(nh, 4);
+  out.face_vertices.reserve(4 * nh);
+  for (std::size_t f = 0; f < nf; ++f)
+    for (std::size_t h = start[f]; h < start[f + 1]; ++h) {
+      const std::size_t prev = h == start[f] ? start[f + 1] - 1 : h - 1;
+      out.face_vertices.push_back(vert(h));
+      out.face_vertices.push_back(static_cast<int>(edge_point[h]));
+      out.face_vertices.push_back(static_cast<int>(nv + f));
+      out.face_vertices.push_back(static_cast<int>(edge_point[prev]));
+    }
+  return out;
+}
+
 PreparedMesh prepare_mesh(const Mesh& mesh, const SurfaceTables& tables, const std::string& scheme_name) {
-  QuadTopology topo(mesh);
+  PreparedMesh out{mesh, 0, {}, mesh.face_sizes};
+  auto missing_valence = [&](std::size_t v, int val) {
+    return MeshError("vertex " + std::to_string(v) + " has valence " + std::to_string(val) +
+                     ", which the tables do not cover; generate it with: stencilgen --scheme " + scheme_name +
+                     " --valence " + std::to_string(val) + " --n <rates> --out <dir>");
+  };
+  const bool all_quads = std::all_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k == 4; });
+  if (!all_quads) {
+    if (!tables.has_polygon_rules()) {
+      const auto it = std::find_if(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k != 4; });
+      throw MeshError("face " + std::to_string(it - mesh.face_sizes.begin()) + " has " + std::to_string(*it) +
+                      " vertices; this scheme's tables have no rules for polygons other than quads");
+    }
+    // A closed manifold first; then the valences of the polygon mesh (and of the
+    // face points, whose valence is the face size) must be covered.
+    std::vector<std::size_t> start(mesh.face_count() + 1, 0), next, face_of, twin;
+    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+      if (mesh.face_sizes[f] < 3) throw MeshError("face " + std::to_string(f) + " has fewer than 3 vertices");
+      start[f + 1] = start[f] + static_cast<std::size_t>(mesh.face_sizes[f]);
+      for (std::size_t h = start[f]; h < start[f + 1]; ++h) {
+        const int v = mesh.face_vertices[h];
+        if (v < 0 || static_cast<std::size_t>(v) >= mesh.vertex_count())
+          throw MeshError("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + ", which does not exist");
+        face_of.push_back(f);
+        next.push_back(h + 1 < start[f + 1] ? h + 1 : start[f]);
+      }
+    }
+    std::vector<int> valence;
+    link_polygon_edges(mesh, start, next, face_of, twin, valence);
+    for (std::size_t v = 0; v < valence.size(); ++v)
+      if (valence[v] > 0 && (!tables.has_valence(valence[v]) || !tables.polygon_vertex_rule(valence[v])))
+        throw missing_valence(v, valence[v]);
+    for (std::size_t f = 0; f < mesh.face_count(); ++f)
+      if (mesh.face_sizes[f] != 4 && !tables.has_valence(mesh.face_sizes[f]))
+        throw MeshError("face " + std::to_string(f) + " has " + std::to_string(mesh.face_sizes[f]) +
+                        " vertices, so its centre becomes a vertex of that valence, which the tables do not cover; generate it with: stencilgen --scheme " +
+                        scheme_name + " --valence " + std::to_string(mesh.face_sizes[f]) + " --n <rates> --out <dir>");
+    std::vector<std::size_t> offsets(mesh.face_count() + 1, 0);
+    for (std::size_t f = 0; f < mesh.face_count(); ++f) offsets[f + 1] = offsets[f] + static_cast<std::size_t>(mesh.face_sizes[f]);
+    out.mesh = subdivide_polygons(mesh, tables);
+    out.child_offsets.push_back(std::move(offsets));
+    ++out.steps;
+  }
+  QuadTopology topo(out.mesh);
   for (std::size_t v = 0; v < topo.vertices(); ++v) {
     const int val = topo.valence(static_cast<int>(v));
     if (val > 64) throw MeshError("vertex " + std::to_string(v) + " has valence " + std::to_string(val) + "; the runtime supports valences up to 64");
-    if (!tables.has_valence(val) || !tables.vertex_rule(val))
-      throw MeshError("vertex " + std::to_string(v) + " has valence " + std::to_string(val) +
-                      ", which the tables do not cover; generate it with: stencilgen --scheme " + scheme_name +
-                      " --valence " + std::to_string(val) + " --n <rates> --out <dir>");
+    if (!tables.has_valence(val) || !tables.vertex_rule(val)) throw missing_valence(v, val);
   }
-  PreparedMesh out{mesh, 0};
   while (!isolated(topo)) {
     if (out.steps == 3) throw MeshError("extraordinary vertices still share faces after 3 subdivision steps");
+    std::vector<std::size_t> offsets(topo.faces() + 1);
+    for (std::size_t f = 0; f <= topo.faces(); ++f) offsets[f] = 4 * f;
     out.mesh = subdivide_once(out.mesh, topo, tables);
+    out.child_offsets.push_back(std::move(offsets));
     ++out.steps;
     topo = QuadTopology(out.mesh);
   }
   return out;
 }
 
-FaceParameter locate(std::size_t face, long i, long j, long n, int steps) {
-  for (int s = 0; s < steps; ++s) {
+FaceParameter locate(const PreparedMesh& prepared, std::size_t face, long i, long j, long n) {
+  if (prepared.original_sizes.at(face) != 4)
+    throw std::out_of_range("face " + std::to_string(face) + " has " + std::to_string(prepared.original_sizes[face]) +
+                            " vertices: (u, v) parameters are defined for quads; its surface is that of its " +
+                            std::to_string(prepared.original_sizes[face]) + " refined quads");
+  for (int s = 0; s < prepared.steps; ++s) {
     // Quadrant of (i, j) in face coordinates; child c has its corner c at the
     // parent's corner c, its own u axis along the parent's edge c -> c+1.
     const bool right = 2 * i > n, top = 2 * j > n;
     const int c = !top ? (right ? 1 : 0) : (right ? 2 : 3);
     const long x = 2 * i - (right ? n : 0), y = 2 * j - (top ? n : 0);  // in the quadrant, parent-aligned
-    // Rotate parent-aligned quadrant coordinates into the child's frame.
     long ci = 0, cj = 0;
     switch (c) {
       case 0: ci = x, cj = y; break;
@@ -115,7 +265,7 @@ FaceParameter locate(std::size_t face, long i, long j, long n, int steps) {
       case 2: ci = n - x, cj = n - y; break;
       default: ci = n - y, cj = x; break;
     }
-    face = 4 * face + static_cast<std::size_t>(c);
+    face = prepared.child_offsets[static_cast<std::size_t>(s)][face] + static_cast<std::size_t>(c);
     i = ci, j = cj;
   }
   return {face, i, j};

@@ -48,6 +48,15 @@ SurfaceTables SurfaceTables::load(const std::string& path, std::uint64_t expecte
     rule.face = r.get<double>();
     t.rules_.push_back(rule);
   }
+  t.has_polygon_ = r.get<std::uint8_t>() != 0;
+  if (t.has_polygon_) {
+    t.polygon_edge_end_ = r.get<double>();
+    t.polygon_edge_face_ = r.get<double>();
+    for (const auto& rule : t.rules_) {
+      VertexRule p{rule.valence, r.get<double>(), r.get<double>(), r.get<double>()};
+      t.polygon_rules_.push_back(p);
+    }
+  }
   const auto rate_count = r.get<std::uint32_t>();
   if (rate_count > left() / 4) r.fail("truncated rate list");
   for (std::uint32_t k = 0; k < rate_count; ++k) {
@@ -97,6 +106,12 @@ SurfaceTables SurfaceTables::load(const std::string& path, std::uint64_t expecte
 
 const SurfaceTables::VertexRule* SurfaceTables::vertex_rule(int valence) const {
   for (const auto& rule : rules_)
+    if (rule.valence == valence) return &rule;
+  return nullptr;
+}
+
+const SurfaceTables::VertexRule* SurfaceTables::polygon_vertex_rule(int valence) const {
+  for (const auto& rule : polygon_rules_)
     if (rule.valence == valence) return &rule;
   return nullptr;
 }

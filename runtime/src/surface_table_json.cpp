@@ -113,6 +113,17 @@ SurfaceTables SurfaceTables::load_json_directory(const std::string& dir, std::ui
         } else if (hash != t.hash_) {
           throw LoadError(origin + ": made from a different scheme than the other tables in " + dir);
         }
+        if (doc.at("rules").contains("polygon")) {
+          const json& pg = doc.at("rules").at("polygon");
+          t.has_polygon_ = true;
+          t.polygon_edge_end_ = rational(pg.at("edge_end"), origin);
+          t.polygon_edge_face_ = rational(pg.at("edge_face_point"), origin);
+          for (const auto& [key, r] : pg.at("vertex").items()) {
+            const int rv = std::stoi(key);
+            if (!t.polygon_vertex_rule(rv))
+              t.polygon_rules_.push_back({rv, rational(r.at(0), origin), rational(r.at(1), origin), rational(r.at(2), origin)});
+          }
+        }
         for (const auto& [key, r] : doc.at("rules").at("vertex").items()) {
           const int rv = std::stoi(key);
           if (!t.vertex_rule(rv))

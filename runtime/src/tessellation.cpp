@@ -63,15 +63,17 @@ std::vector<int> prepared_rates(const LimitSurface& surface, const std::vector<i
   if (original.size() != surface.original_faces())
     throw std::invalid_argument("need one rate per face: got " + std::to_string(original.size()) + " for " +
                                 std::to_string(surface.original_faces()) + " faces");
-  const int steps = surface.prepared().steps;
-  const std::size_t per = std::size_t(1) << (2 * steps);
-  std::vector<int> out(original.size() * per);
-  for (std::size_t f = 0; f < original.size(); ++f) {
+  for (std::size_t f = 0; f < original.size(); ++f)
     if (original[f] < 1) throw std::invalid_argument("face " + std::to_string(f) + ": rate must be at least 1");
-    const int r = std::max(1, (original[f] + (1 << steps) - 1) >> steps);
-    for (std::size_t c = 0; c < per; ++c) out[f * per + c] = r;
+  // Each step halves the faces: children get ceil(rate / 2).
+  std::vector<int> rates = original;
+  for (const auto& offsets : surface.prepared().child_offsets) {
+    std::vector<int> next(offsets.back());
+    for (std::size_t f = 0; f + 1 < offsets.size(); ++f)
+      for (std::size_t c = offsets[f]; c < offsets[f + 1]; ++c) next[c] = std::max(1, (rates[f] + 1) / 2);
+    rates = std::move(next);
   }
-  return out;
+  return rates;
 }
 
 PolygonSoup tessellate(const LimitSurface& surface, const std::vector<int>& rates, const TessellationOptions& options) {

@@ -21,14 +21,25 @@ namespace stencil_runtime {
 // turns. Throws MeshError when a vertex's valence has no rule in the table.
 Mesh subdivide_once(const Mesh& mesh, const QuadTopology& topology, const SurfaceTables& rules);
 
+// One step of the scheme's polygon rules on a closed manifold mesh with faces
+// of any size (>= 3); every face of the result is a quad. Children of face f
+// (k corners) are faces offset(f) + c, c = 0..k-1, laid out as in
+// subdivide_once. Throws MeshError naming the face, edge or vertex.
+Mesh subdivide_polygons(const Mesh& mesh, const SurfaceTables& rules);
+
 struct PreparedMesh {
   Mesh mesh;
   int steps = 0;  // subdivision steps applied
+  // Per step: the first child of each face of the mesh before that step (size faces + 1).
+  std::vector<std::vector<std::size_t>> child_offsets;
+  std::vector<int> original_sizes;  // corner count of each original face
 };
 
 // Checks the valences against the table (an error names the vertex and the
-// stencilgen call that would add its valence), and refines until every face has
-// at most one extraordinary vertex (at most 3 steps).
+// stencilgen call that would add its valence). A mesh with non-quad faces gets
+// one step of the scheme's polygon rules first (refused, naming the face, when
+// the scheme has none). Then it is refined until every face has at most one
+// extraordinary vertex (at most 3 steps in all).
 PreparedMesh prepare_mesh(const Mesh& mesh, const SurfaceTables& tables, const std::string& scheme_name);
 
 // Where a parameter of an original face lands after `steps` refinements:
@@ -38,6 +49,6 @@ struct FaceParameter {
   std::size_t face;
   long i, j;
 };
-FaceParameter locate(std::size_t original_face, long i, long j, long n, int steps);
+FaceParameter locate(const PreparedMesh& prepared, std::size_t original_face, long i, long j, long n);
 
 }  // namespace stencil_runtime

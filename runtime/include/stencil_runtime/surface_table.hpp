@@ -36,6 +36,14 @@ class SurfaceTables {
   double edge_wing() const { return edge_wing_; }
   // nullptr when the table has no rule for that valence.
   const VertexRule* vertex_rule(int valence) const;
+  // Rules for one step on a mesh with arbitrary polygons (scheme-format.md):
+  // face point = centroid; edge point = polygon_edge_end * ends +
+  // polygon_edge_face * the two face points; vertex point = centre * old +
+  // edge * mean edge midpoint + face * mean face point (VertexRule fields).
+  bool has_polygon_rules() const { return has_polygon_; }
+  double polygon_edge_end() const { return polygon_edge_end_; }
+  double polygon_edge_face() const { return polygon_edge_face_; }
+  const VertexRule* polygon_vertex_rule(int valence) const;
   const std::vector<int>& rates() const { return rates_; }
   std::vector<int> valences() const;  // extraordinary valences stored (4 is the regular patch)
   bool has_rate(int n) const { return rate_slot(n) >= 0; }
@@ -76,6 +84,9 @@ class SurfaceTables {
   std::uint64_t hash_ = 0;
   double face_corner_ = 0, edge_end_ = 0, edge_wing_ = 0;
   std::vector<VertexRule> rules_;
+  bool has_polygon_ = false;
+  double polygon_edge_end_ = 0, polygon_edge_face_ = 0;
+  std::vector<VertexRule> polygon_rules_;
   std::vector<int> rates_;
   std::vector<int> slot_of_rate_;  // rate -> slot, -1 when absent
   std::vector<std::vector<double>> regular_;  // per rate slot: phi(k/(2n)) for k = regular_first_ + ...
