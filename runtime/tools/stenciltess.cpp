@@ -78,7 +78,13 @@ int main(int argc, char** argv) {
     }
     const LimitSurface surface(tables, mesh, scheme);
     std::vector<int> prepared = prepared_rates(surface, rates);
+    const int wanted = *std::max_element(prepared.begin(), prepared.end());
     stencil_tools::snap_to_tables(prepared, tables);
+    if (wanted > tables.rates().back())
+      std::fprintf(stderr,
+                   "stenciltess: warning: rates up to %d were asked for; the tables stop at %d, which is used instead "
+                   "(more: stencilgen --scheme %s --valence <valences> --n %d --out <dir>)\n",
+                   wanted, tables.rates().back(), scheme.c_str(), wanted);
     const auto t1 = std::chrono::steady_clock::now();
     const PolygonSoup soup = tessellate(surface, prepared, {threads});
     const auto t2 = std::chrono::steady_clock::now();
