@@ -107,6 +107,17 @@ class Parser {
       const std::size_t start = pos_;
       while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_')) ++pos_;
       const std::string name(text_.substr(start, pos_ - start));
+      if (name == "cos2pi" && accept('(')) {
+        const Rational arg = expr();
+        if (!accept(')')) fail("missing ')' after cos2pi(...");
+        const auto value = exact_cos2pi(arg);
+        if (!value) {
+          pos_ = start;
+          fail("cos2pi(" + to_string(arg) + ") = cos(2 pi * " + to_string(arg) +
+               ") is irrational, and this exact evaluator only takes rational values");
+        }
+        return *value;
+      }
       const auto it = bindings_.find(name);
       if (it == bindings_.end()) {
         pos_ = start;
@@ -123,6 +134,18 @@ class Parser {
 };
 
 }  // namespace
+
+std::optional<Rational> exact_cos2pi(const Rational& r) {
+  // Niven: cos(2 pi r) is rational only where it is 0, +-1/2 or +-1.
+  const Rational frac = r - Rational(floor_to_long(r));
+  const Rational table[][2] = {{Rational(0), Rational(1)},       {Rational(1, 6), Rational(1, 2)},
+                               {Rational(1, 4), Rational(0)},    {Rational(1, 3), Rational(-1, 2)},
+                               {Rational(1, 2), Rational(-1)},   {Rational(2, 3), Rational(-1, 2)},
+                               {Rational(3, 4), Rational(0)},    {Rational(5, 6), Rational(1, 2)}};
+  for (const auto& row : table)
+    if (frac == row[0]) return row[1];
+  return std::nullopt;
+}
 
 Rational evaluate_expression(std::string_view text, const Bindings& bindings) {
   return Parser(text, bindings).parse();

@@ -1,7 +1,10 @@
 #pragma once
 // A small exact formula language for scheme files: rationals, named parameters,
-// + - * / ^ (integer exponent) and parentheses, e.g. "1/2 + w" or "3/(2*v)".
+// + - * / ^ (integer exponent), parentheses and cos2pi(r) = cos(2 pi r) where
+// that is rational (r a multiple of 1/4 or 1/6), e.g. "1/2 + w", "3/(2*v)",
+// "(4 - 2*cos2pi(1/v))/9".
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -13,5 +16,8 @@ using Bindings = std::map<std::string, Rational>;
 
 // Evaluates `text` exactly. Throws sg::Error naming the offending position or name.
 Rational evaluate_expression(std::string_view text, const Bindings& bindings);
+
+// cos(2 pi r) when it is rational (Niven's theorem: 0, +-1/2, +-1), else nullopt.
+std::optional<Rational> exact_cos2pi(const Rational& r);
 
 }  // namespace sg
