@@ -49,6 +49,14 @@ Matrix multiply(const Matrix& a, const Matrix& b) {
   return out;
 }
 
+std::vector<Rational> matrix_times(const Matrix& a, const std::vector<Rational>& v) {
+  std::vector<Rational> out(a.size());
+  for (std::size_t row = 0; row < a.size(); ++row)
+    for (std::size_t col = 0; col < a[row].size(); ++col)
+      if (a[row][col] != 0) out[row] += a[row][col] * v[col];
+  return out;
+}
+
 }  // namespace
 
 BivariateSolution solve_bivariate(const BivariateMask& mask, long n) {
@@ -138,11 +146,7 @@ BivariateSolution solve_bivariate(const BivariateMask& mask, long n) {
       // Backwards around the cycle: v_{c[k]} = A_{c[k]} v_{c[k+1]}.
       for (std::size_t k = cycle.size() - 1; k >= 1; --k) {
         const std::size_t c = cycle[k], next = cycle[(k + 1) % cycle.size()];
-        const Matrix A = transfer(c);
-        value[c].assign(A.size(), Rational(0));
-        for (std::size_t row = 0; row < A.size(); ++row)
-          for (std::size_t col = 0; col < A[row].size(); ++col)
-            if (A[row][col] != 0) value[c][row] += A[row][col] * value[next][col];
+        value[c] = matrix_times(transfer(c), value[next]);
         known[c] = 1;
       }
     }
@@ -153,11 +157,7 @@ BivariateSolution solve_bivariate(const BivariateMask& mask, long n) {
     if (known[r]) return;
     const std::size_t t = image(r);
     resolve(t);
-    const Matrix A = transfer(r);
-    value[r].assign(A.size(), Rational(0));
-    for (std::size_t row = 0; row < A.size(); ++row)
-      for (std::size_t col = 0; col < A[row].size(); ++col)
-        if (A[row][col] != 0) value[r][row] += A[row][col] * value[t][col];
+    value[r] = matrix_times(transfer(r), value[t]);
     known[r] = 1;
   };
   BivariateSolution out;
