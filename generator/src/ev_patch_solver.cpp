@@ -11,20 +11,7 @@ namespace {
 
 // Left eigenvector of A0 for eigenvalue 1 with entries summing to 1.
 std::vector<Rational> limit_stencil(const PatchSubdivision& sub, const QuadScheme& scheme) {
-  const std::size_t m = sub.layout.size();
-  std::vector<std::vector<std::pair<std::size_t, Rational>>> columns(m);
-  for (std::size_t r = 0; r < m; ++r)
-    for (const auto& [c, w] : sub.extraordinary_child[r]) columns[c].emplace_back(r, w);
-  ExactLinearSystem system(m);
-  for (std::size_t c = 0; c < m; ++c) {
-    auto eq = columns[c];
-    eq.emplace_back(c, Rational(-1));
-    system.add_equation(eq, 0);
-  }
-  std::vector<std::pair<std::size_t, Rational>> sum;
-  for (std::size_t r = 0; r < m; ++r) sum.emplace_back(r, Rational(1));
-  system.add_equation(sum, 1);
-  LinearSolution sol = system.solve();
+  LinearSolution sol = left_fixed_vector(sub.extraordinary_child);
   if (sol.status != LinearSolution::Status::Unique)
     throw Error(scheme.name + ", valence " + std::to_string(sub.layout.valence()) +
                 ": the limit stencil of the extraordinary vertex (left eigenvector for eigenvalue 1) has " +

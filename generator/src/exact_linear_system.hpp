@@ -40,4 +40,24 @@ class ExactLinearSystem {
   std::vector<Row> rows_;
 };
 
+// The left eigenvector x = x S for eigenvalue 1 of the square matrix S whose
+// row r is `rows[r]` (any range of (column, entry) pairs), normalised so that
+// its entries sum to 1: the limit stencil of a subdivision matrix.
+template <class Rows>
+LinearSolution left_fixed_vector(const Rows& rows) {
+  const std::size_t m = rows.size();
+  std::vector<std::vector<std::pair<std::size_t, Rational>>> columns(m);
+  for (std::size_t r = 0; r < m; ++r)
+    for (const auto& [c, w] : rows[r]) columns[c].emplace_back(r, w);
+  ExactLinearSystem system(m);
+  for (std::size_t c = 0; c < m; ++c) {
+    columns[c].emplace_back(c, Rational(-1));
+    system.add_equation(columns[c], 0);
+  }
+  std::vector<std::pair<std::size_t, Rational>> unity;
+  for (std::size_t r = 0; r < m; ++r) unity.emplace_back(r, Rational(1));
+  system.add_equation(unity, 1);
+  return system.solve();
+}
+
 }  // namespace sg

@@ -135,13 +135,9 @@ QuadScheme load_quad_scheme(const std::string& spec, const std::vector<std::stri
   check_tensor_product(q, ctx);
   if (doc.contains("polygon_rules")) load_polygon_rules(q, doc["polygon_rules"], ctx);
 
-  json canonical = doc;
-  canonical.erase("description");
-  json params = json::object();
-  for (const auto& [k, v] : q.parameters) params[k] = to_string(v);
-  canonical["parameters"] = params;
+  json canonical = doc;  // the regular curve's content is part of the identity
   canonical["regular_curve_hash"] = hex64(q.curve.hash);
-  q.hash = fnv1a64(canonical.dump());
+  q.hash = scheme_content_hash(canonical, q.parameters);
   return q;
 }
 

@@ -1,5 +1,7 @@
 #include "scheme_file.hpp"
 
+#include "hash.hpp"
+#include "parameters_json.hpp"
 #include "read_file.hpp"
 #include "scheme_loader.hpp"
 
@@ -34,6 +36,12 @@ json read_scheme_document(const fs::path& file, const SchemeContext& ctx) {
   if (!name.is_string() || name.get<std::string>().empty()) ctx.fail("name", "expected a non-empty string");
   if (!ctx.require(doc, "type", "").is_string()) ctx.fail("type", "expected a string");
   return doc;
+}
+
+std::uint64_t scheme_content_hash(json canonical, const Bindings& parameters) {
+  canonical.erase("description");
+  canonical["parameters"] = parameters_json<json>(parameters);
+  return fnv1a64(canonical.dump());
 }
 
 Bindings resolve_parameters(const json& doc, const std::vector<std::string>& overrides, const std::string& scheme_name,

@@ -1,6 +1,7 @@
 #pragma once
 // Shared plumbing of the scheme loaders: finding a scheme file, parsing it, and
 // reporting errors as "FILE: FIELD: message".
+#include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -48,6 +49,10 @@ std::filesystem::path resolve_scheme_file(const std::string& spec, const std::fi
 
 // Parses the file and checks "format" and "version".
 nlohmann::json read_scheme_document(const std::filesystem::path& file, const SchemeContext& ctx);
+
+// Identity of a scheme: FNV-1a of its canonical content (the document without
+// its description, with the resolved parameters), so overrides give a new identity.
+std::uint64_t scheme_content_hash(nlohmann::json canonical, const Bindings& parameters);
 
 // Declared parameter defaults, then NAME=VALUE overrides (errors name the parameter).
 Bindings resolve_parameters(const nlohmann::json& doc, const std::vector<std::string>& overrides,

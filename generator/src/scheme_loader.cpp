@@ -5,7 +5,6 @@
 #include <nlohmann/json.hpp>
 
 #include "error.hpp"
-#include "hash.hpp"
 #include "knot_insertion.hpp"
 #include "read_file.hpp"
 #include "scheme_file.hpp"
@@ -204,13 +203,7 @@ CurveScheme load_curve_scheme(const std::string& spec, const std::vector<std::st
 
   compute_supports(s);
 
-  // Hash the canonical content with the resolved parameters, so overrides give a new identity.
-  json canonical = doc;
-  canonical.erase("description");
-  json params = json::object();
-  for (const auto& [k, v] : s.parameters) params[k] = to_string(v);
-  canonical["parameters"] = params;
-  s.hash = fnv1a64(canonical.dump());
+  s.hash = scheme_content_hash(doc, s.parameters);
   return s;
 }
 

@@ -1,9 +1,9 @@
 #include "surface_table_binary.hpp"
 
-#include <cstring>
 #include <map>
 #include <numeric>
 
+#include "byte_writer.hpp"
 #include "error.hpp"
 #include "stencil_runtime/binary_format.hpp"
 
@@ -11,13 +11,6 @@ namespace sg {
 namespace fmt = stencil_runtime::format;
 
 namespace {
-
-template <class T>
-void put(std::string& out, T value) {
-  char buf[sizeof(T)];
-  std::memcpy(buf, &value, sizeof(T));
-  out.append(buf, sizeof(T));
-}
 
 void put_scalar(std::string& out, const Rational& x, BinaryPrecision p) {
   const double d = to_double(x);

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "parameters_json.hpp"
+
 namespace sg {
 using ojson = nlohmann::ordered_json;
 
@@ -36,9 +38,7 @@ std::string surface_table_to_json(const SurfaceTable& t) {
   head["version"] = kSurfaceTableVersion;
   head["scheme"] = t.scheme;
   head["scheme_hash"] = t.scheme_hash;
-  ojson params = ojson::object();
-  for (const auto& [k, v] : t.parameters) params[k] = to_string(v);
-  head["parameters"] = params;
+  head["parameters"] = parameters_json<ojson>(t.parameters);
   head["valence"] = t.valence;
   head["n"] = t.n;
   head["exact"] = true;

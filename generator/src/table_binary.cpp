@@ -1,19 +1,10 @@
 #include "table_binary.hpp"
 
-#include <cstring>
+#include "byte_writer.hpp"
 #include "stencil_runtime/binary_format.hpp"
 
 namespace sg {
 namespace fmt = stencil_runtime::format;
-
-namespace {
-template <class T>
-void put(std::string& out, T value) {
-  char buf[sizeof(T)];
-  std::memcpy(buf, &value, sizeof(T));
-  out.append(buf, sizeof(T));
-}
-}  // namespace
 
 std::string curve_table_to_binary(const CurveTable& t, std::uint64_t scheme_hash) {
   std::string out(fmt::kCurveMagic, sizeof fmt::kCurveMagic);

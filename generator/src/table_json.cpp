@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "error.hpp"
+#include "parameters_json.hpp"
 
 namespace sg {
 using ojson = nlohmann::ordered_json;
@@ -13,9 +14,7 @@ std::string curve_table_to_json(const CurveTable& t) {
   doc["version"] = kCurveTableVersion;
   doc["scheme"] = t.scheme;
   doc["scheme_hash"] = t.scheme_hash;
-  ojson params = ojson::object();
-  for (const auto& [k, v] : t.parameters) params[k] = to_string(v);
-  doc["parameters"] = params;
+  doc["parameters"] = parameters_json<ojson>(t.parameters);
   doc["arity"] = t.arity;
   doc["n"] = t.n;
   doc["exact"] = true;

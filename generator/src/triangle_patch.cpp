@@ -53,6 +53,16 @@ class LoopRefiner {
   LoopRefiner(const TriangleLayout& layout, const LoopRules& rules) : L_(layout), r_(rules) {}
 
   // The refined point at refined chart position y.
+  // The edge point of the edge EV - e_k, any k: 3/8 of each end, 1/8 of e_{k-1} and e_{k+1}.
+  Row one_ring_edge(int k) const {
+    Row row;
+    row[0] += r_.edge_end;
+    row[L_.edge(k)] += r_.edge_end;
+    row[L_.edge(k - 1)] += r_.edge_opposite;
+    row[L_.edge(k + 1)] += r_.edge_opposite;
+    return row;
+  }
+
   Row at(long ya, long yb) {
     const int v = L_.valence();
     if (ya == 0 && yb == 0) {  // the EV's vertex point
@@ -65,12 +75,7 @@ class LoopRefiner {
       if (ya == kTriangleNeighbours[k][0] && yb == kTriangleNeighbours[k][1]) {
         const int e = k == 0 ? 0 : k == 1 ? 1 : k == 2 ? 2 : k == 5 ? -1 : (v == 6 ? k : 99);
         if (e == 99) break;
-        Row row;
-        row[0] += r_.edge_end;
-        row[L_.edge(e)] += r_.edge_end;
-        row[L_.edge(e - 1)] += r_.edge_opposite;
-        row[L_.edge(e + 1)] += r_.edge_opposite;
-        return row;
+        return one_ring_edge(e);
       }
     Row row;
     if (ya % 2 == 0 && yb % 2 == 0) {  // vertex point of a regular old vertex
@@ -122,22 +127,7 @@ TrianglePatchGrid solve_loop_patch(int valence, long g) {
   // A0: the EV child's control points (same layout, refined chart) from the parent's.
   std::vector<Row> a0(m);
   a0[0] = refine.at(0, 0);
-  const Chart one_ring[4] = {{1, 0}, {1, 1}, {0, 1}, {0, -1}};
-  for (int k = 0; k < valence; ++k) {
-    Chart c{99, 99};
-    if (k <= 2) c = one_ring[k];
-    else if (k == valence - 1) c = one_ring[3];
-    if (c.first != 99) {
-      a0[L.edge(k)] = refine.at(c.first, c.second);
-    } else {  // e_k outside the chart: the one-ring formula directly
-      Row row;
-      row[0] += rules.edge_end;
-      row[L.edge(k)] += rules.edge_end;
-      row[L.edge(k - 1)] += rules.edge_opposite;
-      row[L.edge(k + 1)] += rules.edge_opposite;
-      a0[L.edge(k)] = row;
-    }
-  }
+  for (int k = 0; k < valence; ++k) a0[L.edge(k)] = refine.one_ring_edge(k);
   const Chart outer[5] = {{1, -1}, {2, 0}, {2, 1}, {2, 2}, {1, 2}};
   for (int t = 0; t < 5; ++t) a0[static_cast<std::size_t>(valence + 1 + t)] = refine.at(outer[t].first, outer[t].second);
 
@@ -173,18 +163,7 @@ TrianglePatchGrid solve_loop_patch(int valence, long g) {
       slot(i, j) = times(w, reg_rows, m);
     }
   // x = 0: the left eigenvector of A0 for eigenvalue 1, summing to 1.
-  ExactLinearSystem system(m);
-  std::vector<std::vector<std::pair<std::size_t, Rational>>> cols(m);
-  for (std::size_t r = 0; r < m; ++r)
-    for (const auto& [c, x] : a0[r]) cols[c].emplace_back(r, x);
-  for (std::size_t c = 0; c < m; ++c) {
-    cols[c].emplace_back(c, Rational(-1));
-    system.add_equation(cols[c], 0);
-  }
-  std::vector<std::pair<std::size_t, Rational>> unity;
-  for (std::size_t r = 0; r < m; ++r) unity.emplace_back(r, Rational(1));
-  system.add_equation(unity, 1);
-  const LinearSolution sol = system.solve();
+  const LinearSolution sol = left_fixed_vector(a0);
   if (sol.status != LinearSolution::Status::Unique)
     throw Error("Loop, valence " + std::to_string(valence) + ": the limit stencil has " + sol.describe());
   slot(0, 0) = sol.values;
