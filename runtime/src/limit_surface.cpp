@@ -26,7 +26,7 @@ void LimitSurface::stencil(std::size_t face, long a, long b, long n, double* wei
     tables_.node_stencil(p.valence, static_cast<int>(n), static_cast<int>(pa / 2), static_cast<int>(pb / 2), weights);
 }
 
-void LimitSurface::evaluate_centres(std::size_t face, int n, std::array<float, 3>* out, double* w) const {
+void LimitSurface::evaluate_centres(std::size_t face, int n, std::array<float, 3>* out) const {
   const Patch& p = patches_[face];
   const auto& pos = prepared_.mesh.positions;
   if (p.valence == 4) {
@@ -67,7 +67,6 @@ void LimitSurface::evaluate_centres(std::size_t face, int n, std::array<float, 3
   const std::uint32_t* reflect = tables_.reflection(p.valence);
   for (std::size_t h = 0; h < m; ++h) local[h] = pos[static_cast<std::size_t>(p.points[h])];
   for (std::size_t h = 0; h < m; ++h) reflected[h] = local[reflect[h]];
-  (void)w;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       long pa = 0, pb = 0;

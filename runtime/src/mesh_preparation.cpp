@@ -1,9 +1,10 @@
 #include "stencil_runtime/mesh_preparation.hpp"
 
+#include "stencil_runtime/polygon_links.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 
 namespace stencil_runtime {
 
@@ -82,56 +83,17 @@ bool isolated(const QuadTopology& topo) {
 }
 }  // namespace
 
-namespace {
-
-// Pairs the half-edges of a polygon mesh (h = a corner, from vertex(h) to
-// vertex(next[h])) and counts valences; refuses boundaries and non-manifold
-// or inconsistently oriented edges.
-void link_polygon_edges(const Mesh& mesh, const std::vector<std::size_t>& start, const std::vector<std::size_t>& next,
-                        const std::vector<std::size_t>& face_of, std::vector<std::size_t>& twin, std::vector<int>& valence) {
-  const std::size_t nh = start.back(), nv = mesh.vertex_count();
-  auto vert = [&](std::size_t h) { return mesh.face_vertices[h]; };
-  twin.assign(nh, 0);
-  valence.assign(nv, 0);
-  std::unordered_map<std::uint64_t, std::size_t> directed;
-  auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
-  for (std::size_t h = 0; h < nh; ++h)
-    if (!directed.emplace(key(vert(h), vert(next[h])), h).second)
-      throw MeshError("edge (" + std::to_string(vert(h)) + ", " + std::to_string(vert(next[h])) +
-                      ") is used twice in the same direction: the mesh is non-manifold or inconsistently oriented");
-  for (std::size_t h = 0; h < nh; ++h) {
-    const auto it = directed.find(key(vert(next[h]), vert(h)));
-    if (it == directed.end())
-      throw MeshError("edge (" + std::to_string(vert(h)) + ", " + std::to_string(vert(next[h])) + ") of face " +
-                      std::to_string(face_of[h]) + " has no neighbouring face: the mesh has a boundary (only closed meshes are supported)");
-    twin[h] = it->second;
-    ++valence[static_cast<std::size_t>(vert(h))];
-  }
-}
-
-}  // namespace
-
 Mesh subdivide_polygons(const Mesh& mesh, const SurfaceTables& t) {
   using P = std::array<double, 3>;
   const std::size_t nf = mesh.face_count(), nv = mesh.vertex_count();
-  std::vector<std::size_t> start(nf + 1, 0);
-  for (std::size_t f = 0; f < nf; ++f) {
-    if (mesh.face_sizes[f] < 3) throw MeshError("face " + std::to_string(f) + " has fewer than 3 vertices");
-    start[f + 1] = start[f] + static_cast<std::size_t>(mesh.face_sizes[f]);
-  }
+  const PolygonLinks links = link_polygons(mesh);
+  const auto& start = links.start;
+  const auto& next = links.next;
+  const auto& face_of = links.face_of;
+  const auto& twin = links.twin;
+  const auto& valence = links.valence;
   const std::size_t nh = start[nf];
   auto vert = [&](std::size_t h) { return mesh.face_vertices[h]; };
-  std::vector<std::size_t> face_of(nh), next(nh);
-  for (std::size_t f = 0; f < nf; ++f)
-    for (std::size_t h = start[f]; h < start[f + 1]; ++h) {
-      face_of[h] = f;
-      next[h] = h + 1 < start[f + 1] ? h + 1 : start[f];
-      if (vert(h) < 0 || static_cast<std::size_t>(vert(h)) >= nv)
-        throw MeshError("face " + std::to_string(f) + " refers to vertex " + std::to_string(vert(h)) + ", which does not exist");
-    }
-  std::vector<std::size_t> twin;
-  std::vector<int> valence;
-  link_polygon_edges(mesh, start, next, face_of, twin, valence);
   Mesh out;
   out.positions.assign(nv + nf, P{0, 0, 0});
   for (std::size_t f = 0; f < nf; ++f) {  // face points: centroids
@@ -165,7 +127,6 @@ Mesh subdivide_polygons(const Mesh& mesh, const SurfaceTables& t) {
     }
   }
   for (std::size_t v = 0; v < nv; ++v) {
-    if (valence[v] == 0) throw MeshError("vertex " + std::to_string(v) + " belongs to no face");
     const auto* rule = t.polygon_vertex_rule(valence[v]);
     if (!rule) throw MeshError("vertex " + std::to_string(v) + " has valence " + std::to_string(valence[v]) + ", for which the table has no rule");
     for (int k = 0; k < 3; ++k)
@@ -201,22 +162,9 @@ PreparedMesh prepare_mesh(const Mesh& mesh, const SurfaceTables& tables, const s
     }
     // A closed manifold first; then the valences of the polygon mesh (and of the
     // face points, whose valence is the face size) must be covered.
-    std::vector<std::size_t> start(mesh.face_count() + 1, 0), next, face_of, twin;
-    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-      if (mesh.face_sizes[f] < 3) throw MeshError("face " + std::to_string(f) + " has fewer than 3 vertices");
-      start[f + 1] = start[f] + static_cast<std::size_t>(mesh.face_sizes[f]);
-      for (std::size_t h = start[f]; h < start[f + 1]; ++h) {
-        const int v = mesh.face_vertices[h];
-        if (v < 0 || static_cast<std::size_t>(v) >= mesh.vertex_count())
-          throw MeshError("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + ", which does not exist");
-        face_of.push_back(f);
-        next.push_back(h + 1 < start[f + 1] ? h + 1 : start[f]);
-      }
-    }
-    std::vector<int> valence;
-    link_polygon_edges(mesh, start, next, face_of, twin, valence);
+    const std::vector<int> valence = link_polygons(mesh).valence;
     for (std::size_t v = 0; v < valence.size(); ++v)
-      if (valence[v] > 0 && (!tables.has_valence(valence[v]) || !tables.polygon_vertex_rule(valence[v])))
+      if (!tables.has_valence(valence[v]) || !tables.polygon_vertex_rule(valence[v]))
         throw missing_valence(v, valence[v]);
     for (std::size_t f = 0; f < mesh.face_count(); ++f)
       if (mesh.face_sizes[f] != 4 && !tables.has_valence(mesh.face_sizes[f]))

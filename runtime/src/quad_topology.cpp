@@ -2,13 +2,10 @@
 
 #include <algorithm>
 #include <string>
-#include <unordered_map>
+
+#include "stencil_runtime/polygon_links.hpp"
 
 namespace stencil_runtime {
-
-namespace {
-std::string edge_name(int a, int b) { return "(" + std::to_string(a) + ", " + std::to_string(b) + ")"; }
-}  // namespace
 
 QuadTopology::QuadTopology(const Mesh& mesh) {
   const std::size_t nf = mesh.face_count();
@@ -31,34 +28,12 @@ QuadTopology::QuadTopology(const Mesh& mesh) {
         if (vertex_of_[4 * f + a] == vertex_of_[4 * f + b])
           throw MeshError("face " + std::to_string(f) + " uses vertex " + std::to_string(vertex_of_[4 * f + a]) + " twice");
   }
-  // Pair half-edges by their directed vertex pair.
-  std::unordered_map<std::uint64_t, std::uint32_t> directed;
-  directed.reserve(4 * nf);
-  auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
-  for (std::uint32_t h = 0; h < 4 * nf; ++h) {
-    const int a = vertex_of_[h], b = vertex_of_[(h & ~3u) | ((h + 1) & 3u)];
-    if (!directed.emplace(key(a, b), h).second)
-      throw MeshError("edge " + edge_name(a, b) + " is used twice in the same direction (faces " +
-                      std::to_string(directed[key(a, b)] / 4) + " and " + std::to_string(h / 4) +
-                      "): the mesh is non-manifold or inconsistently oriented");
-  }
-  twin_.assign(4 * nf, 0);
-  valence_.assign(mesh.vertex_count(), 0);
-  for (std::uint32_t h = 0; h < 4 * nf; ++h) {
-    const int a = vertex_of_[h], b = vertex_of_[(h & ~3u) | ((h + 1) & 3u)];
-    const auto it = directed.find(key(b, a));
-    if (it == directed.end())
-      throw MeshError("edge " + edge_name(a, b) + " of face " + std::to_string(h / 4) +
-                      " has no neighbouring face: the mesh has a boundary (only closed meshes are supported)");
-    twin_[h] = it->second;
-    ++valence_[static_cast<std::size_t>(a)];
-  }
-  for (std::size_t v = 0; v < valence_.size(); ++v)
-    if (valence_[v] == 0) throw MeshError("vertex " + std::to_string(v) + " belongs to no face");
+  const PolygonLinks links = link_polygons(mesh);  // pairs the half-edges, counts valences
+  twin_.assign(links.twin.begin(), links.twin.end());
+  valence_ = links.valence;
   // Each vertex must have a single fan of faces: walking around it from one
   // outgoing half-edge must visit all of them.
   std::vector<int> seen(mesh.vertex_count(), 0);
-  std::vector<char> visited(4 * nf, 0);
   for (std::uint32_t h = 0; h < 4 * nf; ++h) {
     const int v = vertex_of_[h];
     if (seen[static_cast<std::size_t>(v)]) continue;

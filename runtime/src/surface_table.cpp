@@ -96,11 +96,7 @@ SurfaceTables SurfaceTables::load(const std::string& path, std::uint64_t expecte
     t.valences_.push_back(std::move(v));
   }
   if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
-  for (std::size_t k = 0; k < t.rates_.size(); ++k) {
-    const auto n = static_cast<std::size_t>(t.rates_[k]);
-    if (t.slot_of_rate_.size() <= n) t.slot_of_rate_.resize(n + 1, -1);
-    t.slot_of_rate_[n] = static_cast<int>(k);
-  }
+  t.index_rates();
   return t;
 }
 
@@ -129,6 +125,27 @@ bool SurfaceTables::has_valence(int v) const {
   return false;
 }
 
+void SurfaceTables::index_rates() {
+  slot_of_rate_.clear();
+  for (std::size_t k = 0; k < rates_.size(); ++k) {
+    const auto n = static_cast<std::size_t>(rates_[k]);
+    if (slot_of_rate_.size() <= n) slot_of_rate_.resize(n + 1, -1);
+    slot_of_rate_[n] = static_cast<int>(k);
+  }
+}
+
+int SurfaceTables::checked_slot(int n) const {
+  const int slot = rate_slot(n);
+  if (slot < 0) throw std::out_of_range("rate " + std::to_string(n) + " is not in the surface table");
+  return slot;
+}
+
+const double* SurfaceTables::stored_weights(const Valence& v, int slot, long i, long j, bool centre) const {
+  const auto& index = centre ? v.centres[static_cast<std::size_t>(slot)] : v.nodes[static_cast<std::size_t>(slot)];
+  return v.weights.data() +
+         static_cast<std::size_t>(index[static_cast<std::size_t>(j * (j + 1) / 2 + i)]) * static_cast<std::size_t>(v.points);
+}
+
 int SurfaceTables::rate_slot(int n) const {
   return n >= 0 && static_cast<std::size_t>(n) < slot_of_rate_.size() ? slot_of_rate_[static_cast<std::size_t>(n)] : -1;
 }
@@ -140,61 +157,50 @@ const SurfaceTables::Valence& SurfaceTables::valence_data(int v) const {
 }
 
 void SurfaceTables::node_stencil(int valence, int n, int i, int j, double* weights) const {
-  const int slot = rate_slot(n);
-  if (slot < 0) throw std::out_of_range("rate " + std::to_string(n) + " is not in the surface table");
+  const int slot = checked_slot(n);
   if (i < 0 || j < 0 || i > n || j > n) throw std::out_of_range("node index outside 0..n");
   stencil(valence, slot, 2L * i, 2L * j, false, weights);
 }
 
 void SurfaceTables::centre_stencil(int valence, int n, int i, int j, double* weights) const {
-  const int slot = rate_slot(n);
-  if (slot < 0) throw std::out_of_range("rate " + std::to_string(n) + " is not in the surface table");
+  const int slot = checked_slot(n);
   if (i < 0 || j < 0 || i >= n || j >= n) throw std::out_of_range("cell index outside 0..n-1");
   stencil(valence, slot, 2L * i + 1, 2L * j + 1, true, weights);
 }
 
 const double* SurfaceTables::centre_weights(int valence, int n, int i, int j, bool& mirrored) const {
-  const int slot = rate_slot(n);
-  if (slot < 0) throw std::out_of_range("rate " + std::to_string(n) + " is not in the surface table");
-  const Valence& v = valence_data(valence);
+  const int slot = checked_slot(n);
   mirrored = i > j;
-  const long lo = mirrored ? j : i, hi = mirrored ? i : j;
-  const auto& index = v.centres[static_cast<std::size_t>(slot)];
-  return v.weights.data() +
-         static_cast<std::size_t>(index[static_cast<std::size_t>(hi * (hi + 1) / 2 + lo)]) * static_cast<std::size_t>(v.points);
+  return stored_weights(valence_data(valence), slot, mirrored ? j : i, mirrored ? i : j, true);
 }
 
-void SurfaceTables::regular_weights(int n, long a, double* w4) const {
-  const int slot = rate_slot(n);
-  if (slot < 0) throw std::out_of_range("rate " + std::to_string(n) + " is not in the surface table");
+void SurfaceTables::regular_weights_at(int slot, long a, double* w4) const {
   const auto& phi = regular_[static_cast<std::size_t>(slot)];
   const std::int64_t first = regular_first_[static_cast<std::size_t>(slot)];
   for (int p = -1; p <= 2; ++p) {
-    const std::int64_t idx = a - 2L * n * p - first;
+    const std::int64_t idx = a - 2L * rates_[static_cast<std::size_t>(slot)] * p - first;
     w4[p + 1] = idx >= 0 && idx < static_cast<std::int64_t>(phi.size()) ? phi[static_cast<std::size_t>(idx)] : 0.0;
   }
 }
 
+void SurfaceTables::regular_weights(int n, long a, double* w4) const {
+  const int slot = checked_slot(n);
+  regular_weights_at(slot, a, w4);
+}
+
 void SurfaceTables::stencil(int valence, int slot, long a, long b, bool centre, double* weights) const {
-  const long g = 2L * rates_[static_cast<std::size_t>(slot)];
   if (valence == 4) {  // regular: phi(x - p) phi(y - q), points row by row
-    const auto& phi = regular_[static_cast<std::size_t>(slot)];
-    const std::int64_t first = regular_first_[static_cast<std::size_t>(slot)];
-    auto at = [&](long k) {
-      const std::int64_t idx = k - first;
-      return idx >= 0 && idx < static_cast<std::int64_t>(phi.size()) ? phi[static_cast<std::size_t>(idx)] : 0.0;
-    };
-    for (int q = -1; q <= 2; ++q)
-      for (int p = -1; p <= 2; ++p) weights[(q + 1) * 4 + (p + 1)] = at(a - p * g) * at(b - q * g);
+    double wx[4], wy[4];
+    regular_weights_at(slot, a, wx);
+    regular_weights_at(slot, b, wy);
+    for (int q = 0; q < 4; ++q)
+      for (int p = 0; p < 4; ++p) weights[q * 4 + p] = wx[p] * wy[q];
     return;
   }
   const Valence& v = valence_data(valence);
   const bool mirrored = a > b;
   const long lo = mirrored ? b : a, hi = mirrored ? a : b;
-  const long i = centre ? (lo - 1) / 2 : lo / 2, j = centre ? (hi - 1) / 2 : hi / 2;
-  const auto& index = centre ? v.centres[static_cast<std::size_t>(slot)] : v.nodes[static_cast<std::size_t>(slot)];
-  const double* w = v.weights.data() + static_cast<std::size_t>(index[static_cast<std::size_t>(j * (j + 1) / 2 + i)]) *
-                                           static_cast<std::size_t>(v.points);
+  const double* w = centre ? stored_weights(v, slot, (lo - 1) / 2, (hi - 1) / 2, true) : stored_weights(v, slot, lo / 2, hi / 2, false);
   for (int h = 0; h < v.points; ++h) weights[mirrored ? v.reflection[static_cast<std::size_t>(h)] : h] = w[h];
 }
 

@@ -172,11 +172,7 @@ SurfaceTables SurfaceTables::load_json_directory(const std::string& dir, std::ui
       throw LoadError(path.string() + ": malformed curve table (" + e.what() + ")");
     }
   }
-  for (std::size_t k = 0; k < t.rates_.size(); ++k) {
-    const auto n = static_cast<std::size_t>(t.rates_[k]);
-    if (t.slot_of_rate_.size() <= n) t.slot_of_rate_.resize(n + 1, -1);
-    t.slot_of_rate_[n] = static_cast<int>(k);
-  }
+  t.index_rates();
   return t;
 }
 

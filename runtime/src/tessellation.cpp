@@ -84,7 +84,6 @@ PolygonSoup tessellate(const LimitSurface& surface, const std::vector<int>& rate
 
 void tessellate_into(const LimitSurface& surface, const std::vector<int>& rates, PolygonSoup& soup,
                      const TessellationOptions& options) {
-  const Mesh& mesh = surface.prepared().mesh;
   const QuadTopology& topo = surface.topology();
   const std::size_t nf = topo.faces(), nh = 4 * nf, nv = topo.vertices();
   if (rates.size() != nf) throw std::invalid_argument("need one rate per prepared face");
@@ -92,7 +91,6 @@ void tessellate_into(const LimitSurface& surface, const std::vector<int>& rates,
   for (std::size_t f = 0; f < nf; ++f)
     if (!tables.has_rate(rates[f]))
       throw std::out_of_range("face " + std::to_string(f) + ": rate " + std::to_string(rates[f]) + " is not in the tables");
-  (void)mesh;
 
   // Counts and offsets (serial, O(faces)): points and interior quads per face;
   // the zipper of each edge (owned by its smaller half-edge) and the polygon of
@@ -150,10 +148,9 @@ void tessellate_into(const LimitSurface& surface, const std::vector<int>& rates,
   };
   // Faces: limit points at the cell centres and the quads between them.
   for_range(nf, [&](std::size_t begin, std::size_t end) {
-    double w[2 * 64 + 8];
     for (std::size_t f = begin; f != end; ++f) {
       const int n = rates[f];
-      surface.evaluate_centres(f, n, soup.positions.data() + point_offset[f], w);
+      surface.evaluate_centres(f, n, soup.positions.data() + point_offset[f]);
       const int base = static_cast<int>(point_offset[f]);
       std::array<int, 4>* q = soup.quads.data() + interior_offset[f];
       for (int j = 0; j + 1 < n; ++j)

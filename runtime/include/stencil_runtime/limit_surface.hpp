@@ -38,8 +38,8 @@ class LimitSurface {
 
   // The n*n cell centres ((2i+1)/(2n), (2j+1)/(2n)) of a prepared face, row by
   // row (index j*n + i), as floats. Regular faces use the tensor-product form
-  // (separable, 4+4 weights per point); `scratch` needs 2v+8 doubles.
-  void evaluate_centres(std::size_t prepared_face, int n, std::array<float, 3>* out, double* scratch) const;
+  // (separable, 4+4 weights per point), the others the stored stencils directly.
+  void evaluate_centres(std::size_t prepared_face, int n, std::array<float, 3>* out) const;
 
   const SurfaceTables& tables() const { return tables_; }
 

@@ -77,6 +77,11 @@ class SurfaceTables {
     std::vector<std::vector<std::uint32_t>> nodes, centres;  // per rate slot, (i <= j) j-major
   };
   int rate_slot(int n) const;
+  int checked_slot(int n) const;  // throws std::out_of_range for a rate not stored
+  void index_rates();              // fills slot_of_rate_ from rates_
+  // The stored half: stencil (i, j), i <= j, of a node or a centre.
+  const double* stored_weights(const Valence& v, int slot, long i, long j, bool centre) const;
+  void regular_weights_at(int slot, long a, double* w4) const;
   const Valence& valence_data(int v) const;
   // Stencil at parameter (a/g, b/g), g = 2n, a and b both even (node) or both odd (centre).
   void stencil(int valence, int slot, long a, long b, bool centre, double* weights) const;
