@@ -1,23 +1,33 @@
 #include "expression.hpp"
 
+#include <boost/math/constants/constants.hpp>
 #include <cctype>
+#include <type_traits>
 
 #include "error.hpp"
 
 namespace sg {
 namespace {
 
+bool is_integer(const Rational& x) { return denominator(x) == 1; }
+bool is_integer(const Real& x) { return floor(x) == x; }
+long to_long(const Rational& x) { return numerator(x).convert_to<long>(); }
+long to_long(const Real& x) { return x.convert_to<long>(); }
+
 // Recursive descent over:  expr := term (('+'|'-') term)*
 //                          term := unary (('*'|'/') unary)*
 //                          unary := ('+'|'-') unary | power
 //                          power := atom ('^' unary)?
 //                          atom := integer | name | '(' expr ')'
+// T is Rational (exact; an irrational cos2pi is refused with IrrationalValue)
+// or Real (cos2pi in high precision).
+template <class T>
 class Parser {
  public:
   Parser(std::string_view text, const Bindings& bindings) : text_(text), bindings_(bindings) {}
 
-  Rational parse() {
-    Rational value = expr();
+  T parse() {
+    T value = expr();
     skip_space();
     if (pos_ != text_.size()) fail("unexpected '" + std::string(1, text_[pos_]) + "'");
     return value;
@@ -38,22 +48,22 @@ class Parser {
     }
     return false;
   }
-  Rational expr() {
-    Rational value = term();
+  T expr() {
+    T value = term();
     for (;;) {
       if (accept('+')) value += term();
       else if (accept('-')) value -= term();
       else return value;
     }
   }
-  Rational term() {
-    Rational value = unary();
+  T term() {
+    T value = unary();
     for (;;) {
       if (accept('*')) {
         value *= unary();
       } else if (accept('/')) {
         const std::size_t at = pos_;
-        Rational divisor = unary();
+        T divisor = unary();
         if (divisor == 0) {
           pos_ = at;
           fail("division by zero");
@@ -64,17 +74,17 @@ class Parser {
       }
     }
   }
-  Rational unary() {
+  T unary() {
     if (accept('-')) return -unary();
     if (accept('+')) return unary();
     return power();
   }
-  Rational power() {
-    Rational base = atom();
+  T power() {
+    T base = atom();
     if (!accept('^')) return base;
     const std::size_t at = pos_;
-    Rational exponent = unary();
-    if (denominator(exponent) != 1) {
+    const T exponent = unary();
+    if (!is_integer(exponent)) {
       pos_ = at;
       fail("exponent must be an integer");
     }
@@ -82,48 +92,51 @@ class Parser {
       pos_ = at;
       fail("exponent too large");
     }
-    long e = numerator(exponent).convert_to<long>();
+    const long e = to_long(exponent);
     if (e < 0 && base == 0) fail("zero to a negative power");
-    Rational result = 1;
+    T result = 1;
     for (long i = 0; i < (e < 0 ? -e : e); ++i) result *= base;
-    return e < 0 ? Rational(1 / result) : result;
+    return e < 0 ? T(1 / result) : result;
   }
-  Rational atom() {
+  T atom() {
     skip_space();
     if (pos_ >= text_.size()) fail("unexpected end");
     const char c = text_[pos_];
     if (c == '(') {
       ++pos_;
-      Rational value = expr();
+      T value = expr();
       if (!accept(')')) fail("missing ')'");
       return value;
     }
     if (std::isdigit(static_cast<unsigned char>(c))) {
       const std::size_t start = pos_;
       while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
-      return Rational(Integer(std::string(text_.substr(start, pos_ - start))));
+      return T(Integer(std::string(text_.substr(start, pos_ - start))));
     }
     if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
       const std::size_t start = pos_;
       while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_')) ++pos_;
       const std::string name(text_.substr(start, pos_ - start));
       if (name == "cos2pi" && accept('(')) {
-        const Rational arg = expr();
+        const T arg = expr();
         if (!accept(')')) fail("missing ')' after cos2pi(...");
-        const auto value = exact_cos2pi(arg);
-        if (!value) {
-          pos_ = start;
-          fail("cos2pi(" + to_string(arg) + ") = cos(2 pi * " + to_string(arg) +
-               ") is irrational, and this exact evaluator only takes rational values");
+        if constexpr (std::is_same_v<T, Rational>) {
+          const auto value = exact_cos2pi(arg);
+          if (!value)
+            throw IrrationalValue("in expression \"" + std::string(text_) + "\" at position " + std::to_string(start + 1) +
+                                  ": cos2pi(" + to_string(arg) + ") = cos(2 pi * " + to_string(arg) +
+                                  ") is irrational, and this exact evaluator only takes rational values");
+          return *value;
+        } else {
+          return cos(2 * boost::math::constants::pi<T>() * arg);
         }
-        return *value;
       }
       const auto it = bindings_.find(name);
       if (it == bindings_.end()) {
         pos_ = start;
         fail("unknown name '" + name + "'");
       }
-      return it->second;
+      return T(it->second);
     }
     fail("unexpected '" + std::string(1, c) + "'");
   }
@@ -148,7 +161,11 @@ std::optional<Rational> exact_cos2pi(const Rational& r) {
 }
 
 Rational evaluate_expression(std::string_view text, const Bindings& bindings) {
-  return Parser(text, bindings).parse();
+  return Parser<Rational>(text, bindings).parse();
+}
+
+Real evaluate_expression_real(std::string_view text, const Bindings& bindings) {
+  return Parser<Real>(text, bindings).parse();
 }
 
 }  // namespace sg

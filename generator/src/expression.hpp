@@ -8,14 +8,26 @@
 #include <string>
 #include <string_view>
 
+#include "error.hpp"
 #include "rational.hpp"
+#include "real.hpp"
 
 namespace sg {
 
 using Bindings = std::map<std::string, Rational>;
 
-// Evaluates `text` exactly. Throws sg::Error naming the offending position or name.
+// Thrown by the exact evaluator where a value is irrational (cos2pi of most
+// arguments), so that a caller can fall back to evaluate_expression_real.
+struct IrrationalValue : Error {
+  using Error::Error;
+};
+
+// Evaluates `text` exactly. Throws sg::Error naming the offending position or
+// name (IrrationalValue where the value is irrational).
 Rational evaluate_expression(std::string_view text, const Bindings& bindings);
+
+// The same formula in high precision (Real): cos2pi is evaluated for any argument.
+Real evaluate_expression_real(std::string_view text, const Bindings& bindings);
 
 // cos(2 pi r) when it is rational (Niven's theorem: 0, +-1/2, +-1), else nullopt.
 std::optional<Rational> exact_cos2pi(const Rational& r);

@@ -140,7 +140,8 @@ std::vector<std::string> available_schemes(const fs::path& dir, SchemeFamily fam
       } catch (const std::exception&) {
         continue;  // unreadable files belong to no family; loading them reports why
       }
-      if ((type == "quad") != (family == SchemeFamily::Quad)) continue;
+      const SchemeFamily of = type == "quad" ? SchemeFamily::Quad : type == "triangle" ? SchemeFamily::Triangle : SchemeFamily::Curve;
+      if (of != family) continue;
     }
     names.push_back(entry.path().stem().string());
   }

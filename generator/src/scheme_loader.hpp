@@ -16,7 +16,7 @@ std::filesystem::path default_schemes_dir();
 CurveScheme load_curve_scheme(const std::string& spec, const std::vector<std::string>& overrides = {},
                               const std::filesystem::path& dir = default_schemes_dir());
 
-enum class SchemeFamily { Any, Curve, Quad };
+enum class SchemeFamily { Any, Curve, Quad, Triangle };
 
 // Names of the *.json files in `dir` (sorted), for listings and error messages;
 // with a family, only the files whose "type" belongs to it.

@@ -1,173 +1,174 @@
 #include "triangle_patch.hpp"
 
+#include <Eigen/Dense>
+#include <boost/multiprecision/eigen.hpp>
 #include <map>
-#include <optional>
 
 #include "error.hpp"
 #include "exact_linear_system.hpp"
-#include "expression.hpp"
 #include "integer_division.hpp"
 #include "triangle_masks.hpp"
 
 namespace sg {
-
-Rational loop_beta(int v) {
-  const auto c = exact_cos2pi(Rational(1, v));
-  if (!c) throw Error("Loop's weights at valence " + std::to_string(v) + " are irrational (cos(2 pi / " + std::to_string(v) +
-                      ")); only valences 3, 4 and 6 are solved exactly so far");
-  const Rational t = Rational(3, 8) + *c / 4;
-  return (Rational(5, 8) - t * t) / v;
-}
-
 namespace {
 
-using Row = std::map<std::size_t, Rational>;
-using Chart = std::pair<long, long>;
+std::string where(const TriangleScheme& s, int valence) {
+  return "scheme '" + s.name + "', valence " + std::to_string(valence);
+}
 
-class TriangleLayout {
- public:
-  explicit TriangleLayout(int v) : v_(v) {}
-  std::size_t size() const { return static_cast<std::size_t>(v_ + 6); }
-  std::size_t edge(int k) const { return static_cast<std::size_t>(1 + ((k % v_) + v_) % v_); }
-  std::optional<std::size_t> chart(long a, long b) const {
-    if (a == 0 && b == 0) return 0;
-    if (a == 1 && b == 0) return edge(0);
-    if (a == 1 && b == 1) return edge(1);
-    if (a == 0 && b == 1) return edge(2);
-    if (a == 0 && b == -1) return edge(-1);
-    if (v_ == 6 && a == -1 && b == 0) return edge(3);
-    if (v_ == 6 && a == -1 && b == -1) return edge(4);
-    static const Chart outer[5] = {{1, -1}, {2, 0}, {2, 1}, {2, 2}, {1, 2}};
-    for (int t = 0; t < 5; ++t)
-      if (outer[t] == Chart{a, b}) return static_cast<std::size_t>(v_ + 1 + t);
-    return std::nullopt;
-  }
-  int valence() const { return v_; }
+// W(0): x A = x, sum x = 1.
+std::vector<Rational> fixed_vector(const std::vector<SparseRow<Rational>>& a, const std::string& context) {
+  const LinearSolution sol = left_fixed_vector(a);
+  if (sol.status != LinearSolution::Status::Unique) throw Error(context + ": the limit stencil has " + sol.describe());
+  return sol.values;
+}
 
- private:
-  int v_;
-};
+std::vector<Real> fixed_vector(const std::vector<SparseRow<Real>>& a, const std::string& context) {
+  using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
+  using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
+  const Eigen::Index m = static_cast<Eigen::Index>(a.size());
+  // Columns of (A - I), transposed; the last equation (dependent, rows of A sum
+  // to 1) is replaced by sum x = 1.
+  Matrix s = Matrix::Zero(m, m);
+  for (Eigen::Index r = 0; r < m; ++r)
+    for (const auto& [c, w] : a[static_cast<std::size_t>(r)]) s(static_cast<Eigen::Index>(c), r) += w;
+  for (Eigen::Index r = 0; r < m; ++r) s(r, r) -= 1;
+  s.row(m - 1).setOnes();
+  Vector rhs = Vector::Zero(m);
+  rhs(m - 1) = 1;
+  const auto lu = s.fullPivLu();
+  if (lu.rank() < m) throw Error(context + ": the limit stencil is not unique (eigenvalue 1 is not simple)");
+  const Vector x = lu.solve(rhs);
+  return std::vector<Real>(x.data(), x.data() + m);
+}
 
-class LoopRefiner {
- public:
-  LoopRefiner(const TriangleLayout& layout, const LoopRules& rules) : L_(layout), r_(rules) {}
-
-  // The refined point at refined chart position y.
-  // The edge point of the edge EV - e_k, any k: 3/8 of each end, 1/8 of e_{k-1} and e_{k+1}.
-  Row one_ring_edge(int k) const {
-    Row row;
-    row[0] += r_.edge_end;
-    row[L_.edge(k)] += r_.edge_end;
-    row[L_.edge(k - 1)] += r_.edge_opposite;
-    row[L_.edge(k + 1)] += r_.edge_opposite;
-    return row;
-  }
-
-  Row at(long ya, long yb) {
-    const int v = L_.valence();
-    if (ya == 0 && yb == 0) {  // the EV's vertex point
-      Row row;
-      row[0] += 1 - v * r_.beta_extraordinary;
-      for (int k = 0; k < v; ++k) row[L_.edge(k)] += r_.beta_extraordinary;
-      return row;
-    }
-    for (int k = 0; k < 6; ++k)  // the EV's refined one-ring: edge points of EV - e_k
-      if (ya == kTriangleNeighbours[k][0] && yb == kTriangleNeighbours[k][1]) {
-        const int e = k == 0 ? 0 : k == 1 ? 1 : k == 2 ? 2 : k == 5 ? -1 : (v == 6 ? k : 99);
-        if (e == 99) break;
-        return one_ring_edge(e);
-      }
-    Row row;
-    if (ya % 2 == 0 && yb % 2 == 0) {  // vertex point of a regular old vertex
-      const long pa = ya / 2, pb = yb / 2;
-      add(row, pa, pb, 1 - 6 * r_.beta_regular);
-      for (const auto& d : kTriangleNeighbours) add(row, pa + d[0], pb + d[1], r_.beta_regular);
-      return row;
-    }
-    for (int k = 0; k < 6; ++k) {  // edge point: y = 2p + d with d a unit neighbour
-      const long da = kTriangleNeighbours[k][0], db = kTriangleNeighbours[k][1];
-      if ((ya - da) % 2 != 0 || (yb - db) % 2 != 0) continue;
-      const long pa = floor_div(ya - da, 2), pb = floor_div(yb - db, 2);
-      add(row, pa, pb, r_.edge_end);
-      add(row, pa + da, pb + db, r_.edge_end);
-      for (int o : {k + 1, k + 5}) add(row, pa + kTriangleNeighbours[o % 6][0], pb + kTriangleNeighbours[o % 6][1], r_.edge_opposite);
-      return row;
-    }
-    throw Error("internal: no refinement rule for (" + std::to_string(ya) + "," + std::to_string(yb) + ")");
-  }
-
- private:
-  void add(Row& row, long a, long b, const Rational& w) {
-    const auto h = L_.chart(a, b);
-    if (!h) throw Error("internal: the refinement needs chart point (" + std::to_string(a) + "," + std::to_string(b) + ")");
-    row[*h] += w;
-  }
-  const TriangleLayout& L_;
-  LoopRules r_;
-};
-
-std::vector<Rational> times(const std::vector<Rational>& w, const std::vector<Row>& rows, std::size_t m) {
-  std::vector<Rational> out(m);
-  for (std::size_t r = 0; r < rows.size(); ++r)
-    if (w[r] != 0)
-      for (const auto& [c, x] : rows[r]) out[c] += w[r] * x;
-  return out;
+template <class T>
+T magnitude(const T& x) {
+  return x < 0 ? T(-x) : x;
 }
 
 }  // namespace
 
-TrianglePatchGrid solve_loop_patch(int valence, long g) {
-  if (valence < 3) throw Error("valence must be at least 3");
-  if (g < 1) throw Error("rate must be at least 1");
-  LoopRules rules;
-  rules.beta_extraordinary = loop_beta(valence);
-  const TriangleLayout L(valence);
-  LoopRefiner refine(L, rules);
-  const std::size_t m = L.size();
-  // A0: the EV child's control points (same layout, refined chart) from the parent's.
-  std::vector<Row> a0(m);
-  a0[0] = refine.at(0, 0);
-  for (int k = 0; k < valence; ++k) a0[L.edge(k)] = refine.one_ring_edge(k);
-  const Chart outer[5] = {{1, -1}, {2, 0}, {2, 1}, {2, 2}, {1, 2}};
-  for (int t = 0; t < 5; ++t) a0[static_cast<std::size_t>(valence + 1 + t)] = refine.at(outer[t].first, outer[t].second);
+// Loop: after one step only the EV's own new point depends on its irregular
+// rule, so every child but the EV's is regular (radius 1); the regular children
+// reach 2 + 2 (open) rings. sqrt(3): after two steps the points within 2 fine
+// rings of the EV depend on its rule, and the regular scaling function reaches
+// 2.5 rings, so the children within 2 fine rings of the EV are not regular
+// (radius 2: the wedge up to a = 2, beyond the patch itself); the regular ones
+// reach 3 * 2 + 2.5 rings.
+long patch_rings(const TriangleScheme& scheme) { return scheme.refinement == TriangleRefinement::Loop ? 3 : 8; }
+long irregular_radius(const TriangleScheme& scheme) { return scheme.refinement == TriangleRefinement::Loop ? 1 : 2; }
 
-  // The refined points the three regular children use (their box-spline supports).
-  const Chart child_points[] = {{1, 0}, {2, 0}, {2, 1}, {1, 1}, {1, -1}, {0, 0}, {0, -1}, {3, 0}, {3, 1}, {2, -1},
-                                {3, 2}, {2, 2}, {0, 1}, {3, 3}, {2, 3}, {1, 2}};
-  std::vector<Chart> reg_points(std::begin(child_points), std::end(child_points));
-  std::vector<Row> reg_rows;
-  for (const auto& [a, b] : reg_points) reg_rows.push_back(refine.at(a, b));
+BivariateSolution solve_regular(const TriangleScheme& scheme, long g) {
+  const Rational w = *scheme.exact_neighbour_weight(6);
+  const BivariateMask mask = scheme.refinement == TriangleRefinement::Loop
+                                 ? loop_regular_mask(scheme.edge_end, scheme.edge_opposite, 1 - 6 * w, w)
+                                 : sqrt3_composite_mask(6 * w);
+  return solve_bivariate(mask, g);
+}
 
-  const BivariateMask mask = loop_regular_mask(rules.edge_end, rules.edge_opposite, 1 - 6 * rules.beta_regular, rules.beta_regular);
-  const BivariateSolution phi = solve_bivariate(mask, g);
+template <>
+TriangleWeights<Rational> triangle_weights(const TriangleScheme& s, int valence) {
+  const auto w = s.exact_neighbour_weight(valence);
+  if (!w) throw Error(where(s, valence) + ": the vertex rule is irrational here; solve it in high precision");
+  return {valence, s.edge_end, s.edge_opposite, *w, *s.exact_neighbour_weight(6)};
+}
 
-  TrianglePatchGrid out;
+template <>
+TriangleWeights<Real> triangle_weights(const TriangleScheme& s, int valence) {
+  return {valence, to_real(s.edge_end), to_real(s.edge_opposite), s.real_neighbour_weight(valence),
+          to_real(*s.exact_neighbour_weight(6))};
+}
+
+template <class T>
+TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence, long g, const BivariateSolution& regular) {
+  if (g < 1) throw Error("grid must be at least 1");
+  if (regular.n != g) throw Error("internal: the regular solution is on the grid " + std::to_string(regular.n));
+  const std::string context = where(scheme, valence);
+  const long m = scheme.dilation();
+  TrianglePatch<T> out;
   out.valence = valence;
   out.grid = g;
-  out.points = m;
-  out.stencils.assign(static_cast<std::size_t>((g + 1) * (g + 1)), {});
-  auto slot = [&](long i, long j) -> std::vector<Rational>& { return out.stencils[static_cast<std::size_t>(j * (g + 1) + i)]; };
-  // Decreasing i + j, so that W(2i, 2j) is known before W(i, j).
-  for (long s = g; s >= 1; --s)
-    for (long i = 0; i <= s; ++i) {
-      const long j = s - i;
-      if (2 * s < g) {
-        slot(i, j) = times(slot(2 * i, 2 * j), a0, m);
-        continue;
+  out.chart = SectorChart(valence, patch_rings(scheme));
+  const SectorChart& chart = out.chart;
+  const std::size_t size = chart.size();
+  const TriangleWeights<T> weights = triangle_weights<T>(scheme, valence);
+  const std::vector<SparseRow<T>> a = refinement_matrix(scheme.refinement, chart, weights);
+
+  // The regular scaling function in T, and its support's bounding box (1/g units).
+  std::map<LatticeIndex, T> phi;
+  long lo_a = 0, hi_a = 0, lo_b = 0, hi_b = 0;
+  for (const auto& [k, x] : regular.values) {
+    if (x == 0) continue;
+    if constexpr (std::is_same_v<T, Rational>) phi.emplace(k, x);
+    else phi.emplace(k, to_real(x));
+    lo_a = std::min(lo_a, k.first), hi_a = std::max(hi_a, k.first);
+    lo_b = std::min(lo_b, k.second), hi_b = std::max(hi_b, k.second);
+  }
+
+  auto times_a = [&](const std::vector<T>& f) {
+    std::vector<T> w(size);
+    for (std::size_t r = 0; r < size; ++r)
+      if (f[r] != 0)
+        for (const auto& [c, x] : a[r]) w[c] += f[r] * x;
+    return w;
+  };
+  // The regular stencil at y = (ya, yb)/g (sector 0's frame, refined lattice).
+  auto regular_stencil = [&](long ya, long yb) {
+    std::vector<T> f(size);
+    for (long pa = ceil_div(ya - hi_a, g); pa <= floor_div(ya - lo_a, g); ++pa)
+      for (long pb = ceil_div(yb - hi_b, g); pb <= floor_div(yb - lo_b, g); ++pb) {
+        const auto it = phi.find({ya - g * pa, yb - g * pb});
+        if (it == phi.end()) continue;
+        // A regular child reaches at most two sectors round (at y = e_1, its
+        // neighbour e_2); the comparisons with OpenSubdiv and with plain
+        // subdivision check that the points found are the right ones.
+        const auto id = chart.index(0, pa, pb, 2);
+        if (!id)
+          throw Error("internal: " + context + ": the regular child at (" + std::to_string(ya) + "," +
+                      std::to_string(yb) + ")/" + std::to_string(g) + " needs the point (" + std::to_string(pa) + "," +
+                      std::to_string(pb) + ") outside the chart");
+        f[*id] += it->second;
       }
-      // A regular child: the refined point y = 2 (u + v, v), on the grid 1/g.
-      const long ya = 2 * (i + j), yb = 2 * j;
-      std::vector<Rational> w(reg_points.size());
-      for (std::size_t p = 0; p < reg_points.size(); ++p)
-        w[p] = phi.at(ya - g * reg_points[p].first, yb - g * reg_points[p].second);
-      slot(i, j) = times(w, reg_rows, m);
+    return f;
+  };
+
+  // W at the wedge point Y / g of sector 0 (0 <= Y.b <= Y.a): W(Y) = F(m Y) A,
+  // F = W again while m Y stays within the irregular radius, the regular
+  // stencil beyond it. Points outside the patch are needed only on the way in.
+  const long radius = irregular_radius(scheme) * g;
+  std::map<LatticeIndex, std::vector<T>> memo;
+  memo[{0, 0}] = fixed_vector(a, context);
+  auto solve = [&](auto&& self, long ya, long yb) -> const std::vector<T>& {
+    const auto it = memo.find({ya, yb});
+    if (it != memo.end()) return it->second;
+    const long za = m * ya, zb = m * yb;
+    std::vector<T> w = za < radius ? times_a(self(self, za, zb)) : times_a(regular_stencil(za, zb));
+    return memo.emplace(LatticeIndex{ya, yb}, std::move(w)).first->second;
+  };
+  out.stencils.assign(static_cast<std::size_t>((g + 1) * (g + 1)), {});
+  for (long j = 0; j <= g; ++j)
+    for (long i = 0; i + j <= g; ++i) out.stencils[static_cast<std::size_t>(j * (g + 1) + i)] = solve(solve, i + j, j);
+  auto slot = [&](long i, long j) -> std::vector<T>& { return out.stencils[static_cast<std::size_t>(j * (g + 1) + i)]; };
+
+  // Residuals (exact arithmetic must give zero).
+  {
+    const std::vector<T> back = times_a(slot(0, 0));
+    for (std::size_t c = 0; c < size; ++c) out.eigen_residual = std::max(out.eigen_residual, magnitude(T(back[c] - slot(0, 0)[c])));
+  }
+  for (long j = 0; j <= g; ++j)
+    for (long i = 0; i + j <= g; ++i) {
+      T sum = 0;
+      for (const T& w : slot(i, j)) sum += w;
+      out.unity_residual = std::max(out.unity_residual, magnitude(T(sum - 1)));
     }
-  // x = 0: the left eigenvector of A0 for eigenvalue 1, summing to 1.
-  const LinearSolution sol = left_fixed_vector(a0);
-  if (sol.status != LinearSolution::Status::Unique)
-    throw Error("Loop, valence " + std::to_string(valence) + ": the limit stencil has " + sol.describe());
-  slot(0, 0) = sol.values;
+  if constexpr (std::is_same_v<T, Rational>)
+    if (out.eigen_residual != 0 || out.unity_residual != 0)
+      throw Error(context + ": exact check failed (partition of unity or the limit stencil)");
   return out;
 }
+
+template TrianglePatch<Rational> solve_triangle_patch(const TriangleScheme&, int, long, const BivariateSolution&);
+template TrianglePatch<Real> solve_triangle_patch(const TriangleScheme&, int, long, const BivariateSolution&);
 
 }  // namespace sg

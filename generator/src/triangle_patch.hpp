@@ -1,44 +1,54 @@
 #pragma once
-// Exact stencils of a Loop triangle patch around an extraordinary vertex
-// (issue 4, in progress: Loop at the valences whose weights are rational).
+// Stencils of a triangle scheme's patch around an extraordinary vertex, on the
+// grid (i/g, j/g), i + j <= g, in the arithmetic T: Rational (exact, where the
+// scheme's weights are rational at this valence) or Real (high precision, with
+// residuals).
 //
-// Patch: the triangle (EV, e_0, e_1), parameters (u, v), u + v <= 1, with the
-// EV at (0,0), u towards e_0 and v towards e_1. Chart: the triangular lattice of
-// triangle_masks.hpp, with the patch's corners at (0,0), (1,0), (1,1) (so the
-// point (u, v) sits at u (1,0) + v (1,1)). Control points, v + 6 of them:
-//   index 0        the EV
-//   index 1 + k    e_k, k = 0..v-1, counter-clockwise: e_0 = (1,0), e_1 = (1,1),
-//                  e_2 = (0,1), e_{v-1} = (0,-1)
-//   index v+1..v+5 the outer points (1,-1), (2,0), (2,1), (2,2), (1,2)
-// For v = 6 these are the 12 points of the regular (box-spline) patch.
+// Patch: the triangle (EV, e_0, e_1) of sector 0 (sector_chart.hpp), parameters
+// (u, v), u + v <= 1, the EV at (0,0), u towards e_0, v towards e_1; the point
+// (u, v) sits at u (1,0) + v (1,1) in sector 0's frame. Stencils are dense over
+// the chart's points; the tables keep only the points some stencil uses.
+//
+// Method (the note, section 3): with A the local subdivision matrix (one
+// composite step, dilation m) and x on the grid, W(x) = F(m x) A, where F(y) is
+// W(y) when y lies in the patch again (the extraordinary child, recursion) and
+// the regular scaling function's stencil at y otherwise (the other children
+// are regular). W(0) is the left eigenvector of A for eigenvalue 1.
 #include <vector>
 
 #include "bivariate_solver.hpp"
-#include "scaled_vector.hpp"
+#include "sector_chart.hpp"
+#include "triangle_refinement.hpp"
+#include "triangle_scheme.hpp"
 
 namespace sg {
 
-// Loop's rules: edge point = 3/8 ends + 1/8 opposite vertices; vertex point at
-// valence v = (1 - v beta) old + beta per neighbour.
-struct LoopRules {
-  Rational edge_end = Rational(3, 8), edge_opposite = Rational(1, 8);
-  Rational beta_regular = Rational(1, 16);
-  Rational beta_extraordinary;  // at the patch's valence
-};
-
-// Loop's beta(v) = (5/8 - (3/8 + cos(2 pi / v)/4)^2) / v where it is rational
-// (v = 3, 4, 6); throws sg::Error naming the valence otherwise.
-Rational loop_beta(int valence);
-
-struct TrianglePatchGrid {
+template <class T>
+struct TrianglePatch {
   int valence = 6;
   long grid = 1;
-  std::size_t points = 12;
-  // W(i/g, j/g) for i, j >= 0, i + j <= g, at index j * (g + 1) + i (other slots empty).
-  std::vector<std::vector<Rational>> stencils;
-  const std::vector<Rational>& at(long i, long j) const { return stencils[static_cast<std::size_t>(j * (grid + 1) + i)]; }
+  SectorChart chart{6, 1};
+  std::vector<std::vector<T>> stencils;  // index j * (g + 1) + i, for i + j <= g
+  T eigen_residual = 0;                  // max |W(0) A - W(0)| (zero when exact)
+  T unity_residual = 0;                  // max |sum W(x) - 1| over the grid (zero when exact)
+  const std::vector<T>& at(long i, long j) const { return stencils[static_cast<std::size_t>(j * (grid + 1) + i)]; }
 };
 
-TrianglePatchGrid solve_loop_patch(int valence, long g);
+// Rings of the chart the scheme's patches need (Loop 3, sqrt(3) 8).
+long patch_rings(const TriangleScheme& scheme);
+// Radius (coarse rings, in the wedge of sector 0) within which the children are
+// not regular and the recursion continues: Loop 1 (the patch), sqrt(3) 2.
+long irregular_radius(const TriangleScheme& scheme);
+
+// The regular scaling function on (1/g)Z^2 (rational: valence 6 is).
+BivariateSolution solve_regular(const TriangleScheme& scheme, long g);
+
+// The weights of one valence in T; for Rational, throws sg::Error when the
+// scheme's weights are irrational there.
+template <class T>
+TriangleWeights<T> triangle_weights(const TriangleScheme& scheme, int valence);
+
+template <class T>
+TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence, long g, const BivariateSolution& regular);
 
 }  // namespace sg
