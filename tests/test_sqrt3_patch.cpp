@@ -153,8 +153,7 @@ void check_valence(const sg::TriangleScheme& sqrt3, int v) {
         const double limit = (mesh.value[found] + 3 * a * mean) / (1 + 3 * a);
         double ours = 0;
         const auto& w = patch.at(i, k);
-        for (std::size_t h = 0; h < w.size(); ++h)
-          if (w[h] != 0) ours += as_double(w[h]) * control[static_cast<std::size_t>(fan.at(patch.chart.point(h)))];
+        for (const auto& [h, x] : w) ours += as_double(x) * control[static_cast<std::size_t>(fan.at(patch.chart.point(h)))];
         REQUIRE(std::fabs(ours - limit) < 1e-12);
       }
   }

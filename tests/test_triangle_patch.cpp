@@ -37,10 +37,9 @@ double compare_with_bfr(const sg::TriangleScheme& loop, int v, long n, FanMesh& 
     for (long i = 0; i + j <= n; ++i) {
       const auto& w = grid.at(i, j);
       double ours[3] = {0, 0, 0};
-      for (std::size_t h = 0; h < w.size(); ++h) {
-        if (w[h] == 0) continue;
+      for (const auto& [h, x] : w) {
         const int vertex = mesh.at(grid.chart.point(h));
-        for (int c = 0; c < 3; ++c) ours[c] += as_double(w[h]) * pos[3 * static_cast<std::size_t>(vertex) + c];
+        for (int c = 0; c < 3; ++c) ours[c] += as_double(x) * pos[3 * static_cast<std::size_t>(vertex) + c];
       }
       const double uv[2] = {double(i) / n, double(j) / n};
       double ref[3];

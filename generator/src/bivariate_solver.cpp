@@ -49,11 +49,18 @@ Matrix multiply(const Matrix& a, const Matrix& b) {
   return out;
 }
 
-std::vector<Rational> matrix_times(const Matrix& a, const std::vector<Rational>& v) {
+using SparseMatrix = std::vector<std::vector<std::pair<std::size_t, Rational>>>;
+
+std::vector<Rational> matrix_times(const SparseMatrix& a, const std::vector<Rational>& v) {
   std::vector<Rational> out(a.size());
+  Rational product;
   for (std::size_t row = 0; row < a.size(); ++row)
-    for (std::size_t col = 0; col < a[row].size(); ++col)
-      if (a[row][col] != 0) out[row] += a[row][col] * v[col];
+    for (const auto& [col, x] : a[row])
+      if (v[col] != 0) {
+        product = x;
+        product *= v[col];
+        out[row] += product;
+      }
   return out;
 }
 
@@ -81,29 +88,44 @@ BivariateSolution solve_bivariate(const BivariateMask& mask, long n) {
   // Unknowns by residue class r = (a mod n, b mod n), class index ra * n + rb.
   const std::size_t classes = static_cast<std::size_t>(n * n);
   std::vector<std::vector<LatticeIndex>> members(classes);
-  std::map<LatticeIndex, std::size_t> slot;  // position of k inside its class
-  for (long a = floor_div(lo_a * n, m - 1) - 1; a <= ceil_div(hi_a * n, m - 1) + 1; ++a)
-    for (long b = floor_div(lo_b * n, m - 1) - 1; b <= ceil_div(hi_b * n, m - 1) + 1; ++b)
+  // Position of k inside its class, over the bounding box (kNone outside the support).
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  const long box_a0 = floor_div(lo_a * n, m - 1) - 1, box_a1 = ceil_div(hi_a * n, m - 1) + 1;
+  const long box_b0 = floor_div(lo_b * n, m - 1) - 1, box_b1 = ceil_div(hi_b * n, m - 1) + 1;
+  const long box_w = box_b1 - box_b0 + 1;
+  std::vector<std::size_t> slot_of(static_cast<std::size_t>((box_a1 - box_a0 + 1) * box_w), kNone);
+  auto slot = [&](long a, long b) {
+    if (a < box_a0 || a > box_a1 || b < box_b0 || b > box_b1) return kNone;
+    return slot_of[static_cast<std::size_t>((a - box_a0) * box_w + (b - box_b0))];
+  };
+  for (long a = box_a0; a <= box_a1; ++a)
+    for (long b = box_b0; b <= box_b1; ++b)
       if (inside(a, b)) {
         auto& list = members[static_cast<std::size_t>(pos_mod(a, n) * n + pos_mod(b, n))];
-        slot[{a, b}] = list.size();
+        slot_of[static_cast<std::size_t>((a - box_a0) * box_w + (b - box_b0))] = list.size();
         list.push_back({a, b});
       }
   auto image = [&](std::size_t r) {
     const long ra = static_cast<long>(r) / n, rb = static_cast<long>(r) % n;
     return static_cast<std::size_t>(pos_mod(m * ra, n) * n + pos_mod(m * rb, n));
   };
-  // Transfer matrix A_r: values on class r from values on class image(r).
-  auto transfer = [&](std::size_t r) {
-    const std::size_t t = image(r);
-    Matrix A(members[r].size(), std::vector<Rational>(members[t].size()));
+  // Transfer matrix A_r, rows sparse: values on class r from values on class image(r).
+  auto transfer_rows = [&](std::size_t r) {
+    SparseMatrix A(members[r].size());
     for (std::size_t row = 0; row < members[r].size(); ++row) {
       const auto [a, b] = members[r][row];
       for (const auto& [i, s] : mask.coefficients) {
-        const auto it = slot.find({m * a - n * i.first, m * b - n * i.second});
-        if (it != slot.end()) A[row][it->second] += s;
+        const std::size_t col = slot(m * a - n * i.first, m * b - n * i.second);
+        if (col != kNone) A[row].emplace_back(col, s);
       }
     }
+    return A;
+  };
+  auto transfer = [&](std::size_t r) {
+    const SparseMatrix rows = transfer_rows(r);
+    Matrix A(rows.size(), std::vector<Rational>(members[image(r)].size()));
+    for (std::size_t row = 0; row < rows.size(); ++row)
+      for (const auto& [col, s] : rows[row]) A[row][col] += s;
     return A;
   };
 
@@ -146,7 +168,7 @@ BivariateSolution solve_bivariate(const BivariateMask& mask, long n) {
       // Backwards around the cycle: v_{c[k]} = A_{c[k]} v_{c[k+1]}.
       for (std::size_t k = cycle.size() - 1; k >= 1; --k) {
         const std::size_t c = cycle[k], next = cycle[(k + 1) % cycle.size()];
-        value[c] = matrix_times(transfer(c), value[next]);
+        value[c] = matrix_times(transfer_rows(c), value[next]);
         known[c] = 1;
       }
     }
@@ -157,7 +179,7 @@ BivariateSolution solve_bivariate(const BivariateMask& mask, long n) {
     if (known[r]) return;
     const std::size_t t = image(r);
     resolve(t);
-    value[r] = matrix_times(transfer(r), value[t]);
+    value[r] = matrix_times(transfer_rows(r), value[t]);
     known[r] = 1;
   };
   BivariateSolution out;

@@ -1,5 +1,6 @@
 // stencilgen: exact evaluation stencils for stationary subdivision schemes.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -8,6 +9,9 @@
 #include "error.hpp"
 #include "generate.hpp"
 #include "generate_surface.hpp"
+#include "generate_triangle.hpp"
+#include "triangle_analysis.hpp"
+#include "triangle_scheme_loader.hpp"
 #include "quad_scheme_loader.hpp"
 #include "smoothness_analysis.hpp"
 #include "surface_table_json.hpp"
@@ -80,8 +84,52 @@ int run_generate_surface(const std::string& scheme_spec, const std::string& rate
   return 0;
 }
 
+int run_generate_triangle(const std::string& scheme_spec, const std::string& rates_spec, const std::string& valence_spec,
+                          const std::string& out, const std::vector<std::string>& params, const std::string& precision,
+                          bool quiet) {
+  const auto rates = sg::parse_rate_spec(rates_spec);
+  auto valences = parse_valences(valence_spec);
+  const sg::TriangleScheme scheme = sg::load_triangle_scheme(scheme_spec, params);
+  // Valence 6 is the regular patch, which the runtime needs for every ordinary triangle.
+  if (std::find(valences.begin(), valences.end(), 6) == valences.end()) valences.push_back(6);
+  std::sort(valences.begin(), valences.end());
+  const auto start = std::chrono::steady_clock::now();
+  auto progress = [&](const std::string& line) {
+    if (!quiet) std::cerr << line << "\n";
+  };
+  const auto set = sg::generate_triangle_tables(scheme, valences, rates, progress);
+  const std::size_t bytes = sg::write_triangle_tables(
+      scheme, set, out, precision == "single" ? sg::BinaryPrecision::Single : sg::BinaryPrecision::Double);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::string exact, approx;
+  for (int v : valences) (scheme.exact_neighbour_weight(v) ? exact : approx) += (std::to_string(v) + " ");
+  std::cout << "wrote triangle tables for '" << scheme.name << "' (valences " << valence_spec << " and 6, rates "
+            << rates.front() << ".." << rates.back() << ", " << rates.size() * valences.size() << " tables) to "
+            << (std::filesystem::path(out) / scheme.name).string() << " in " << secs << " s; exact at valences "
+            << (exact.empty() ? "none " : exact) << "; high precision (" << sg::kRealDigits << " digits, not exact) at "
+            << (approx.empty() ? "none " : approx) << "; binary " << scheme.name << ".sgt: " << bytes << " bytes ("
+            << precision << " precision)\n";
+  return 0;
+}
+
 int run_analyze(const std::string& scheme_spec, const std::string& valence_spec, const std::vector<std::string>& params,
                 long samples) {
+  if (sg::scheme_type(scheme_spec) == "triangle") {
+    const sg::TriangleScheme scheme = sg::load_triangle_scheme(scheme_spec, params);
+    int failed = 0;
+    std::cout << "smoothness analysis of '" << scheme.name << "' (" << scheme.source << ")"
+              << (scheme.refinement == sg::TriangleRefinement::Sqrt3
+                      ? "; spectra of two composed steps (one step's moduli are their square roots)"
+                      : "")
+              << "\n";
+    for (int v : parse_valences(valence_spec)) {
+      const sg::SmoothnessReport r = sg::analyse_triangle_valence(scheme, v, samples);
+      if (!r.ok()) ++failed;
+      std::cout << sg::format_report(r);
+    }
+    std::cout << (failed == 0 ? "all valences pass\n" : std::to_string(failed) + " valence(s) FAIL\n");
+    return failed == 0 ? 0 : 1;
+  }
   const sg::QuadScheme scheme = sg::load_quad_scheme(scheme_spec, params);
   int failed = 0;
   std::cout << "smoothness analysis of '" << scheme.name << "' (" << scheme.source << ")\n";
@@ -154,8 +202,11 @@ int main(int argc, char** argv) {
       "Solves the scaling relations of a scheme (described as data in schemes/*.json) exactly on the\n"
       "grid (1/n)Z, by two independent routes, verifies the result, and writes exact JSON tables plus a\n"
       "compact binary form.\n\n"
-      "Quad surface schemes (type \"quad\") get tables around extraordinary vertices of the given valences.\n\n"
+      "Surface schemes (type \"quad\": nonpoly, catmull-clark; type \"triangle\": loop, sqrt3) get tables around\n"
+      "extraordinary vertices of the given valences. Triangle schemes are exact where their weights are rational\n"
+      "(e.g. valences 3, 4, 6) and solved in high precision (80 digits, residual reported) elsewhere.\n\n"
       "  stencilgen --scheme nonpoly --valence 3-8 --n 24 --out tables\n"
+      "  stencilgen --scheme sqrt3 --valence 3-8 --n 24 --out tables\n"
       "  stencilgen analyze --scheme nonpoly --valence 3-16\n"
       "  stencilgen --scheme fourpoint --n 24 --out tables     rates 1..24\n"
       "  stencilgen --scheme nubspline3 --n 12-24 --out tables\n"
@@ -175,15 +226,15 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"residue", "eigen", "both"}));
   app.add_flag("-q,--quiet", quiet, "no progress lines on stderr");
   std::string valences, precision = "double";
-  app.add_option("--valence", valences, "quad schemes: valences, e.g. 3-8, 5 or 3,5,6 (default 3-8)");
-  app.add_option("--binary-precision", precision, "quad schemes: scalars of the .sgs file, double (default) or single")
+  app.add_option("--valence", valences, "surface schemes: valences, e.g. 3-8, 5 or 3,5,6 (default 3-8)");
+  app.add_option("--binary-precision", precision, "surface schemes: scalars of the .sgs/.sgt file, double (default) or single")
       ->check(CLI::IsMember({"double", "single"}));
 
-  CLI::App* analyze = app.add_subcommand("analyze", "smoothness analysis of a quad scheme's extraordinary rules");
+  CLI::App* analyze = app.add_subcommand("analyze", "smoothness analysis of a surface scheme's extraordinary rules");
   std::string analyze_scheme, analyze_valences = "3-16";
   std::vector<std::string> analyze_params;
   long analyze_samples = 32;
-  analyze->add_option("--scheme", analyze_scheme, "quad scheme name or path")->required();
+  analyze->add_option("--scheme", analyze_scheme, "surface scheme name or path")->required();
   analyze->add_option("--valence", analyze_valences, "valences, e.g. 3-16 (default)");
   analyze->add_option("--samples", analyze_samples, "characteristic map sampled on the grid 1/S per sector (default 32)")
       ->check(CLI::Range(2, 512));
@@ -219,15 +270,20 @@ int main(int argc, char** argv) {
         std::cout << "  " << name << " (curve)\n";
       for (const auto& name : sg::available_schemes(sg::default_schemes_dir(), sg::SchemeFamily::Quad))
         std::cout << "  " << name << " (quad surface)\n";
+      for (const auto& name : sg::available_schemes(sg::default_schemes_dir(), sg::SchemeFamily::Triangle))
+        std::cout << "  " << name << " (triangle surface)\n";
       return 0;
     }
     if (scheme.empty() || rates.empty() || out.empty()) {
       std::cerr << "stencilgen: error: generation needs --scheme, --n and --out (see --help)\n";
       return 2;
     }
-    if (sg::scheme_type(scheme) == "quad")
+    const std::string type = sg::scheme_type(scheme);
+    if (type == "quad")
       return run_generate_surface(scheme, rates, valences.empty() ? "3-8" : valences, out, params, precision, quiet);
-    if (!valences.empty()) throw sg::Error("--valence applies to quad surface schemes; '" + scheme + "' is a curve scheme");
+    if (type == "triangle")
+      return run_generate_triangle(scheme, rates, valences.empty() ? "3-8" : valences, out, params, precision, quiet);
+    if (!valences.empty()) throw sg::Error("--valence applies to surface schemes; '" + scheme + "' is a curve scheme");
     return run_generate(scheme, rates, out, params, route, quiet);
   } catch (const sg::Error& e) {
     std::cerr << "stencilgen: error: " << e.what() << "\n";

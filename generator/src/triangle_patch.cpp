@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <boost/multiprecision/eigen.hpp>
+#include <algorithm>
 #include <map>
 
 #include "error.hpp"
@@ -106,16 +107,38 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
     lo_b = std::min(lo_b, k.second), hi_b = std::max(hi_b, k.second);
   }
 
-  auto times_a = [&](const std::vector<T>& f) {
-    std::vector<T> w(size);
-    for (std::size_t r = 0; r < size; ++r)
-      if (f[r] != 0)
-        for (const auto& [c, x] : a[r]) w[c] += f[r] * x;
-    return w;
+  // f A for a sparse f, accumulated in one dense scratch row (no per-point allocation of T).
+  std::vector<T> scratch(size);
+  std::vector<char> touched(size, 0);
+  std::vector<std::size_t> touched_list;
+  auto accumulate = [&](std::size_t c, const T& x) {
+    if (!touched[c]) touched[c] = 1, touched_list.push_back(c);
+    scratch[c] += x;
+  };
+  auto collect = [&]() {
+    std::sort(touched_list.begin(), touched_list.end());
+    SparseRow<T> out;
+    out.reserve(touched_list.size());
+    for (std::size_t c : touched_list) {
+      if (scratch[c] != 0) out.emplace_back(c, scratch[c]);
+      scratch[c] = 0;
+      touched[c] = 0;
+    }
+    touched_list.clear();
+    return out;
+  };
+  auto times_a = [&](const SparseRow<T>& f) {
+    T product;
+    for (const auto& [r, fr] : f)
+      for (const auto& [c, x] : a[r]) {
+        product = fr;
+        product *= x;
+        accumulate(c, product);
+      }
+    return collect();
   };
   // The regular stencil at y = (ya, yb)/g (sector 0's frame, refined lattice).
   auto regular_stencil = [&](long ya, long yb) {
-    std::vector<T> f(size);
     for (long pa = ceil_div(ya - hi_a, g); pa <= floor_div(ya - lo_a, g); ++pa)
       for (long pb = ceil_div(yb - hi_b, g); pb <= floor_div(yb - lo_b, g); ++pb) {
         const auto it = phi.find({ya - g * pa, yb - g * pb});
@@ -128,38 +151,46 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
           throw Error("internal: " + context + ": the regular child at (" + std::to_string(ya) + "," +
                       std::to_string(yb) + ")/" + std::to_string(g) + " needs the point (" + std::to_string(pa) + "," +
                       std::to_string(pb) + ") outside the chart");
-        f[*id] += it->second;
+        accumulate(*id, it->second);
       }
-    return f;
+    return collect();
   };
 
   // W at the wedge point Y / g of sector 0 (0 <= Y.b <= Y.a): W(Y) = F(m Y) A,
   // F = W again while m Y stays within the irregular radius, the regular
   // stencil beyond it. Points outside the patch are needed only on the way in.
   const long radius = irregular_radius(scheme) * g;
-  std::map<LatticeIndex, std::vector<T>> memo;
-  memo[{0, 0}] = fixed_vector(a, context);
-  auto solve = [&](auto&& self, long ya, long yb) -> const std::vector<T>& {
+  std::map<LatticeIndex, SparseRow<T>> memo;
+  {
+    const std::vector<T> w0 = fixed_vector(a, context);
+    SparseRow<T> sparse;
+    for (std::size_t c = 0; c < size; ++c)
+      if (w0[c] != 0) sparse.emplace_back(c, w0[c]);
+    memo[{0, 0}] = std::move(sparse);
+  }
+  auto solve = [&](auto&& self, long ya, long yb) -> const SparseRow<T>& {
     const auto it = memo.find({ya, yb});
     if (it != memo.end()) return it->second;
     const long za = m * ya, zb = m * yb;
-    std::vector<T> w = za < radius ? times_a(self(self, za, zb)) : times_a(regular_stencil(za, zb));
+    SparseRow<T> w = za < radius ? times_a(self(self, za, zb)) : times_a(regular_stencil(za, zb));
     return memo.emplace(LatticeIndex{ya, yb}, std::move(w)).first->second;
   };
   out.stencils.assign(static_cast<std::size_t>((g + 1) * (g + 1)), {});
   for (long j = 0; j <= g; ++j)
     for (long i = 0; i + j <= g; ++i) out.stencils[static_cast<std::size_t>(j * (g + 1) + i)] = solve(solve, i + j, j);
-  auto slot = [&](long i, long j) -> std::vector<T>& { return out.stencils[static_cast<std::size_t>(j * (g + 1) + i)]; };
 
   // Residuals (exact arithmetic must give zero).
   {
-    const std::vector<T> back = times_a(slot(0, 0));
-    for (std::size_t c = 0; c < size; ++c) out.eigen_residual = std::max(out.eigen_residual, magnitude(T(back[c] - slot(0, 0)[c])));
+    const SparseRow<T>& w0 = out.at(0, 0);
+    std::vector<T> diff(size);
+    for (const auto& [c, x] : times_a(w0)) diff[c] += x;
+    for (const auto& [c, x] : w0) diff[c] -= x;
+    for (const T& d : diff) out.eigen_residual = std::max(out.eigen_residual, magnitude(d));
   }
   for (long j = 0; j <= g; ++j)
     for (long i = 0; i + j <= g; ++i) {
       T sum = 0;
-      for (const T& w : slot(i, j)) sum += w;
+      for (const auto& [c, w] : out.at(i, j)) sum += w;
       out.unity_residual = std::max(out.unity_residual, magnitude(T(sum - 1)));
     }
   if constexpr (std::is_same_v<T, Rational>)

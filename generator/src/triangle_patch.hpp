@@ -6,8 +6,9 @@
 //
 // Patch: the triangle (EV, e_0, e_1) of sector 0 (sector_chart.hpp), parameters
 // (u, v), u + v <= 1, the EV at (0,0), u towards e_0, v towards e_1; the point
-// (u, v) sits at u (1,0) + v (1,1) in sector 0's frame. Stencils are dense over
-// the chart's points; the tables keep only the points some stencil uses.
+// (u, v) sits at u (1,0) + v (1,1) in sector 0's frame. Stencils are sparse
+// over the chart's points (sorted by index); the tables keep only the points
+// some stencil uses.
 //
 // Method (the note, section 3): with A the local subdivision matrix (one
 // composite step, dilation m) and x on the grid, W(x) = F(m x) A, where F(y) is
@@ -28,10 +29,10 @@ struct TrianglePatch {
   int valence = 6;
   long grid = 1;
   SectorChart chart{6, 1};
-  std::vector<std::vector<T>> stencils;  // index j * (g + 1) + i, for i + j <= g
+  std::vector<SparseRow<T>> stencils;  // index j * (g + 1) + i, for i + j <= g
   T eigen_residual = 0;                  // max |W(0) A - W(0)| (zero when exact)
   T unity_residual = 0;                  // max |sum W(x) - 1| over the grid (zero when exact)
-  const std::vector<T>& at(long i, long j) const { return stencils[static_cast<std::size_t>(j * (grid + 1) + i)]; }
+  const SparseRow<T>& at(long i, long j) const { return stencils[static_cast<std::size_t>(j * (grid + 1) + i)]; }
 };
 
 // Rings of the chart the scheme's patches need (Loop 3, sqrt(3) 8).

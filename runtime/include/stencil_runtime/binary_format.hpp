@@ -29,3 +29,11 @@ inline constexpr char kSurfaceMagic[8] = {'S', 'G', 'S', 'U', 'R', 'F', '\0', '\
 inline constexpr std::uint32_t kSurfaceVersion = 3;  // 2: subdivision rules after the hash; 3: polygon rules
 
 }  // namespace stencil_runtime::format
+
+namespace stencil_runtime::format {
+
+// Compact binary triangle tables (*.sgt): every valence and rate of one triangle scheme.
+inline constexpr char kTriangleMagic[8] = {'S', 'G', 'T', 'R', 'I', '\0', '\0', '\0'};
+inline constexpr std::uint32_t kTriangleVersion = 1;
+
+}  // namespace stencil_runtime::format

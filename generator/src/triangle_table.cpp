@@ -1,0 +1,149 @@
+#include "triangle_table.hpp"
+
+#include <nlohmann/json.hpp>
+#include <algorithm>
+#include <set>
+
+#include "error.hpp"
+#include "hash.hpp"
+#include "parameters_json.hpp"
+
+namespace sg {
+using ojson = nlohmann::ordered_json;
+
+namespace {
+
+std::string rule_string(const std::optional<Rational>& exact, const Real& approx) {
+  return exact ? to_string(*exact) : to_string(approx, kTableDigits);
+}
+
+}  // namespace
+
+template <class T>
+TriangleTable make_triangle_table(const TriangleScheme& scheme, const TrianglePatch<T>& patch, long n) {
+  if (patch.grid != 3 * n) throw Error("internal: a triangle table at rate n needs the patch on the grid 3n");
+  TriangleTable t;
+  t.scheme = scheme.name;
+  t.scheme_hash = hex64(scheme.hash);
+  t.refinement = scheme.refinement_name();
+  t.parameters = scheme.parameters;
+  t.valence = patch.valence;
+  t.n = n;
+  t.exact = std::is_same_v<T, Rational>;
+  if constexpr (std::is_same_v<T, Real>) t.residual = std::max(patch.eigen_residual, patch.unity_residual);
+  if (scheme.refinement == TriangleRefinement::Loop) {
+    t.rules.edge_end = to_string(scheme.edge_end);
+    t.rules.edge_opposite = to_string(scheme.edge_opposite);
+  }
+  t.rules.neighbour_regular = to_string(*scheme.exact_neighbour_weight(6));
+  t.rules.neighbour = rule_string(scheme.exact_neighbour_weight(patch.valence), scheme.real_neighbour_weight(patch.valence));
+
+  // Grid points (on 3n) of the nodes and centres, in storage order.
+  std::vector<std::pair<long, long>> node_at, up_at, down_at;
+  for (long j = 0; j <= n; ++j)
+    for (long i = 0; i + j <= n; ++i) node_at.emplace_back(i, j);
+  for (long j = 0; j < n; ++j)
+    for (long i = 0; i + j <= n - 1; ++i) up_at.emplace_back(i, j);
+  for (long j = 0; j + 1 < n; ++j)
+    for (long i = 0; i + j <= n - 2; ++i) down_at.emplace_back(i, j);
+  std::set<std::size_t> used;
+  auto scan = [&](long gi, long gj) {
+    for (const auto& [h, w] : patch.at(gi, gj)) used.insert(h);
+  };
+  for (auto [i, j] : node_at) scan(3 * i, 3 * j);
+  for (auto [i, j] : up_at) scan(3 * i + 1, 3 * j + 1);
+  for (auto [i, j] : down_at) scan(3 * i + 2, 3 * j + 2);
+  const std::vector<std::size_t> ids(used.begin(), used.end());
+  for (std::size_t h : ids) t.layout.push_back(patch.chart.point(h));
+
+  auto entry = [&](long i, long j, long gi, long gj) {
+    TriangleTable::Entry e;
+    e.i = i, e.j = j;
+    std::vector<T> picked(ids.size());
+    for (const auto& [h, w] : patch.at(gi, gj)) picked[static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), h) - ids.begin())] = w;
+    if constexpr (std::is_same_v<T, Rational>) e.exact = scaled_from_rationals(picked);
+    else e.approx = std::move(picked);
+    return e;
+  };
+  for (auto [i, j] : node_at) t.nodes.push_back(entry(i, j, 3 * i, 3 * j));
+  for (auto [i, j] : up_at) t.up.push_back(entry(i, j, 3 * i + 1, 3 * j + 1));
+  for (auto [i, j] : down_at) t.down.push_back(entry(i, j, 3 * i + 2, 3 * j + 2));
+  return t;
+}
+
+template TriangleTable make_triangle_table(const TriangleScheme&, const TrianglePatch<Rational>&, long);
+template TriangleTable make_triangle_table(const TriangleScheme&, const TrianglePatch<Real>&, long);
+
+namespace {
+
+void append_entries(std::string& out, const char* key, const TriangleTable& t, const std::vector<TriangleTable::Entry>& entries,
+                    long offset, bool last) {
+  out += std::string(" \"") + key + "\": [\n";
+  const long den = 3 * t.n;
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const auto& e = entries[k];
+    ojson j;
+    j["at"] = {to_string(Rational(3 * e.i + offset, den)), to_string(Rational(3 * e.j + offset, den))};
+    if (t.exact) {
+      j["denominator"] = e.exact.den.str();
+      ojson nums = ojson::array();
+      for (const auto& v : e.exact.num) nums.push_back(v.str());
+      j["numerators"] = nums;
+    } else {
+      ojson w = ojson::array();
+      for (const Real& x : e.approx) w.push_back(x == 0 ? std::string("0") : to_string(x, kTableDigits));
+      j["weights"] = w;
+    }
+    out += "  " + j.dump();
+    out += k + 1 < entries.size() ? ",\n" : "\n";
+  }
+  out += last ? " ]\n" : " ],\n";
+}
+
+}  // namespace
+
+std::string triangle_table_to_json(const TriangleTable& t) {
+  ojson head;
+  head["format"] = kTriangleTableFormat;
+  head["version"] = kTriangleTableVersion;
+  head["scheme"] = t.scheme;
+  head["scheme_hash"] = t.scheme_hash;
+  head["refinement"] = t.refinement;
+  head["parameters"] = parameters_json<ojson>(t.parameters);
+  head["valence"] = t.valence;
+  head["n"] = t.n;
+  head["exact"] = t.exact;
+  if (!t.exact) {
+    head["digits"] = kTableDigits;
+    head["residual"] = to_string(t.residual, 3);
+  }
+  head["points"] = t.layout.size();
+  head["parameterisation"] =
+      "patch (EV, e_0, e_1) of sector 0; the point (u, v) lies at u (1,0) + v (1,1) of sector 0's lattice frame";
+  head["layout_meaning"] =
+      "each control point is [sector k, a, b]: the vertex a (1,0) + b (1,1) in sector k's frame (e_k = (1,0), "
+      "e_{k+1} = (1,1), a >= 1, 0 <= b < a; [0,0,0] is the extraordinary vertex)";
+  ojson layout = ojson::array();
+  for (const SectorPoint& p : t.layout) layout.push_back({p.sector, p.a, p.b});
+  ojson rules;
+  if (!t.rules.edge_end.empty()) {
+    rules["edge_end"] = t.rules.edge_end;
+    rules["edge_opposite"] = t.rules.edge_opposite;
+  }
+  rules["neighbour_regular"] = t.rules.neighbour_regular;
+  rules["neighbour"] = t.rules.neighbour;
+  head["rules"] = rules;
+  std::string out = head.dump(1);
+  out.resize(out.size() - 2);
+  out += ",\n \"layout\": " + layout.dump() + ",\n";
+  out += t.exact ? std::string(" \"stencil\": \"limit point = sum of numerators[h] * P[layout[h]] / denominator\",\n")
+                 : std::string(" \"stencil\": \"limit point = sum of weights[h] * P[layout[h]] (not exact: " +
+                               std::to_string(kTableDigits) + " significant digits)\",\n");
+  append_entries(out, "nodes", t, t.nodes, 0, false);
+  append_entries(out, "up_centres", t, t.up, 1, false);
+  append_entries(out, "down_centres", t, t.down, 2, true);
+  out += "}\n";
+  return out;
+}
+
+}  // namespace sg
