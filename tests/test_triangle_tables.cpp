@@ -83,6 +83,26 @@ TEST_CASE("triangle tables: exact where rational, high precision elsewhere, part
         }
       if (!t["exact"]) REQUIRE(std::stod(t["residual"].get<std::string>()) < 1e-70);
     }
+  // verify re-solves a table; a changed digit fails it.
+  for (const char* file : {"v4/n5.json", "v5/n3.json"}) {
+    const auto path = dir / "loop" / file;
+    const CliResult ok = run_stencilgen("verify " + path.string());
+    INFO(ok.output);
+    REQUIRE(ok.status == 0);
+    REQUIRE(ok.output.find(": OK (loop triangle table") != std::string::npos);
+    std::stringstream text;
+    text << std::ifstream(path).rdbuf();
+    std::string changed = text.str();
+    const auto at = changed.rfind("\"numerators\":[\"") != std::string::npos ? changed.rfind("\"numerators\":[\"")
+                                                                          : changed.rfind("\"weights\":[\"");
+    const auto digit = changed.find_first_of("123456789", at);
+    changed[digit] = changed[digit] == '9' ? '8' : static_cast<char>(changed[digit] + 1);
+    std::ofstream(path) << changed;
+    const CliResult bad = run_stencilgen("verify " + path.string());
+    INFO(bad.output);
+    REQUIRE(bad.status != 0);
+    REQUIRE(bad.output.find("FAIL: differs from the re-solved table") != std::string::npos);
+  }
 }
 
 TEST_CASE("the regular triangle tables are invariant under the patch triangle's rotation and reflection", "[triangle][tables]") {

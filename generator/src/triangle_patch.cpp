@@ -162,9 +162,16 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
   const long radius = irregular_radius(scheme) * g;
   std::map<LatticeIndex, SparseRow<T>> memo;
   {
-    const std::vector<T> w0 = fixed_vector(a, context);
+    // The two-ring (the first 1 + 3v points of the chart) is closed under the
+    // step, so the eigenvector lives there: a small system instead of the chart's.
+    const std::size_t two_ring = SectorChart(valence, 2).size();
+    std::vector<SparseRow<T>> inner(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(two_ring));
+    for (const auto& row : inner)
+      for (const auto& [c, x] : row)
+        if (c >= two_ring) throw Error("internal: " + context + ": the two-ring is not closed under the step");
+    const std::vector<T> w0 = fixed_vector(inner, context);
     SparseRow<T> sparse;
-    for (std::size_t c = 0; c < size; ++c)
+    for (std::size_t c = 0; c < w0.size(); ++c)
       if (w0[c] != 0) sparse.emplace_back(c, w0[c]);
     memo[{0, 0}] = std::move(sparse);
   }
