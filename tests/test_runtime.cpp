@@ -347,3 +347,15 @@ TEST_CASE("meshes with triangles get the scheme's polygon step; Catmull-Clark th
   CHECK(static_cast<long>(soup.positions.size()) - static_cast<long>(directed.size() / 2) +
             static_cast<long>(soup.quads.size() + soup.triangles.size()) == 2);
 }
+
+TEST_CASE("triangle-scheme tables are refused by name until the runtime handles triangle meshes", "[runtime][errors]") {
+  const auto dir = scratch_dir("runtime-triangle-tables");
+  REQUIRE(run_stencilgen("-q --scheme loop --valence 3 --n 2 --out " + dir.string()).status == 0);
+  const std::string mesh = std::string(STENCIL_SOURCE_DIR) + "/meshes/cube.obj";
+  for (const std::string tables : {(dir / "loop").string(), (dir / "loop" / "loop.sgt").string()}) {
+    const CliResult r = run_stencileval("--tables " + tables + " --mesh " + mesh + " --face 0 --uv 1/2,1/2");
+    INFO(r.output);
+    REQUIRE(r.status != 0);
+    REQUIRE(r.output.find("loop.sgt: a triangle-scheme table") != std::string::npos);
+  }
+}

@@ -180,7 +180,7 @@ TEST_CASE("bad quad scheme input is refused with the file and field named, nothi
   CHECK(high.output.find("valence 65 is outside the range 3..64") != std::string::npos);
   const CliResult curve = run_stencilgen("--scheme fourpoint --valence 3 --n 4 --out " + out.string());
   CHECK(curve.status == 1);
-  CHECK(curve.output.find("--valence applies to quad surface schemes") != std::string::npos);
+  CHECK(curve.output.find("--valence applies to surface schemes") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(out));
   std::filesystem::remove_all(dir);
 }

@@ -14,6 +14,12 @@ inline std::filesystem::path find_table_file(const std::string& spec) {
   namespace fs = std::filesystem;
   fs::path p = fs::path(spec).lexically_normal();
   if (p.filename().empty()) p = p.parent_path();  // "tables/nonpoly/"; the scheme name is the last component
+  const auto triangle_tables = [&](const fs::path& file) {
+    return std::runtime_error(file.string() +
+                              ": a triangle-scheme table (.sgt, Loop or sqrt(3)); the runtime evaluates quad schemes "
+                              "only so far (triangle meshes are not supported yet)");
+  };
+  if (fs::is_regular_file(p) && p.extension() == ".sgt") throw triangle_tables(p);
   if (fs::is_regular_file(p)) return p;
   if (!fs::is_directory(p)) throw std::runtime_error(spec + ": no such table file or directory");
   fs::path found;
@@ -23,6 +29,9 @@ inline std::filesystem::path find_table_file(const std::string& spec) {
       found = e.path();
     }
   if (found.empty() && fs::is_directory(p / "regular")) return p;  // JSON tables
+  if (found.empty())
+    for (const auto& e : fs::directory_iterator(p))
+      if (e.path().extension() == ".sgt") throw triangle_tables(e.path());
   if (found.empty())
     throw std::runtime_error(spec + ": no .sgs table file here (make one with: stencilgen --scheme nonpoly --valence 3-8 --n 24 --out tables)");
   return found;
