@@ -65,16 +65,9 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() 
 
 }  // namespace
 
-SmoothnessReport analyse_valence(const QuadScheme& scheme, int v, long samples) {
-  SmoothnessReport r;
-  r.valence = v;
-  const TwoRing ring(v);
-  const Eigen::MatrixXd S = two_ring_matrix(scheme, v, ring);
-  Eigen::EigenSolver<Eigen::MatrixXd> eig(S);
-  const Eigen::VectorXcd ev = eig.eigenvalues();
-  r.eigenvalues.assign(ev.data(), ev.data() + ev.size());
-  std::sort(r.eigenvalues.begin(), r.eigenvalues.end(),
-            [](auto a, auto b) { return std::abs(a) > std::abs(b); });
+void classify_spectrum(SmoothnessReport& r, std::vector<std::complex<double>> eigenvalues) {
+  r.eigenvalues = std::move(eigenvalues);
+  std::sort(r.eigenvalues.begin(), r.eigenvalues.end(), [](auto a, auto b) { return std::abs(a) > std::abs(b); });
   const auto& e = r.eigenvalues;
   r.one_simple = std::abs(e[0] - 1.0) < kTol && std::abs(e[1]) < 1 - kTol;
   r.subdominant = e[1].real();
@@ -82,6 +75,16 @@ SmoothnessReport analyse_valence(const QuadScheme& scheme, int v, long samples) 
                               std::abs(e[1] - e[2]) < kTol && e[1].real() > 0;
   r.next_modulus = e.size() > 3 ? std::abs(e[3]) : 0;
   r.subdominant_dominates = r.subdominant_real_double && std::abs(e[1]) > r.next_modulus + kTol;
+}
+
+SmoothnessReport analyse_valence(const QuadScheme& scheme, int v, long samples) {
+  SmoothnessReport r;
+  r.valence = v;
+  const TwoRing ring(v);
+  const Eigen::MatrixXd S = two_ring_matrix(scheme, v, ring);
+  Eigen::EigenSolver<Eigen::MatrixXd> eig(S, false);
+  const Eigen::VectorXcd ev = eig.eigenvalues();
+  classify_spectrum(r, std::vector<std::complex<double>>(ev.data(), ev.data() + ev.size()));
   if (!r.subdominant_real_double) return r;
 
   // Right eigenspace of the subdominant eigenvalue: two real vectors.

@@ -28,6 +28,9 @@ struct SmoothnessReport {
   }
 };
 
+// Fills the spectrum and its verdicts (conditions 1-3) from a matrix's eigenvalues.
+void classify_spectrum(SmoothnessReport& r, std::vector<std::complex<double>> eigenvalues);
+
 // `samples`: the characteristic map is sampled on the grid (1/samples) of every sector.
 SmoothnessReport analyse_valence(const QuadScheme& scheme, int valence, long samples = 32);
 

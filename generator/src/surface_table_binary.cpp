@@ -10,24 +10,17 @@
 namespace sg {
 namespace fmt = stencil_runtime::format;
 
-namespace {
-
-void put_scalar(std::string& out, const Rational& x, BinaryPrecision p) {
-  const double d = to_double(x);
+void put_scalar(std::string& out, double d, BinaryPrecision p) {
   if (p == BinaryPrecision::Double)
     put<double>(out, d);
   else
     put<float>(out, static_cast<float>(d));
 }
 
-// A parameter value p/q in lowest terms, so that equal points of different
-// grids share one stored stencil.
-std::pair<long, long> reduced(long p, long q) {
+std::pair<long, long> reduced_fraction(long p, long q) {
   const long g = std::gcd(p, q);
   return {p / g, q / g};
 }
-
-}  // namespace
 
 std::string surface_tables_to_binary(const QuadScheme& scheme, const SurfaceTableSet& set, BinaryPrecision precision) {
   std::string out(fmt::kSurfaceMagic, sizeof fmt::kSurfaceMagic);
@@ -68,7 +61,7 @@ std::string surface_tables_to_binary(const QuadScheme& scheme, const SurfaceTabl
     const TypeValues& phi = c.types.at(0);
     put<std::int32_t>(out, static_cast<std::int32_t>(phi.range.first));
     put<std::uint32_t>(out, static_cast<std::uint32_t>(phi.range.size()));
-    for (const Rational& x : phi.values) put_scalar(out, x, precision);
+    for (const Rational& x : phi.values) put_scalar(out, to_double(x), precision);
   }
   // Valence 4 is the regular patch, evaluated from the curve values above.
   std::vector<std::size_t> stored;
@@ -82,7 +75,7 @@ std::string surface_tables_to_binary(const QuadScheme& scheme, const SurfaceTabl
     std::vector<const ScaledVector*> stencils;
     std::vector<std::vector<std::uint32_t>> node_index(tables.size()), centre_index(tables.size());
     auto intern = [&](const SurfaceTable::Entry& e, long num_i, long num_j, long den) {
-      const Key key{reduced(num_i, den), reduced(num_j, den)};
+      const Key key{reduced_fraction(num_i, den), reduced_fraction(num_j, den)};
       auto [it, fresh] = slot.emplace(key, static_cast<std::uint32_t>(stencils.size()));
       if (fresh) stencils.push_back(&e.weights);
       return it->second;
@@ -98,7 +91,7 @@ std::string surface_tables_to_binary(const QuadScheme& scheme, const SurfaceTabl
     put<std::uint32_t>(out, static_cast<std::uint32_t>(stencils.size()));
     for (std::size_t h : tables.front().reflection) put<std::uint32_t>(out, static_cast<std::uint32_t>(h));
     for (const ScaledVector* w : stencils)
-      for (const Integer& x : w->num) put_scalar(out, Rational(x, w->den), precision);
+      for (const Integer& x : w->num) put_scalar(out, to_double(Rational(x, w->den)), precision);
     for (std::size_t r = 0; r < tables.size(); ++r) {
       for (std::uint32_t k : node_index[r]) put<std::uint32_t>(out, k);
       for (std::uint32_t k : centre_index[r]) put<std::uint32_t>(out, k);

@@ -11,8 +11,6 @@
 namespace sg {
 namespace {
 
-constexpr double kTol = 1e-9;
-
 Eigen::MatrixXd matrix_on(const TriangleScheme& scheme, const SectorChart& chart, const TriangleWeights<Real>& w) {
   const auto rows = refinement_matrix(scheme.refinement, chart, w);
   const long m = static_cast<long>(chart.size());
@@ -34,15 +32,7 @@ SmoothnessReport analyse_triangle_valence(const TriangleScheme& scheme, int v, l
   const Eigen::MatrixXd S2 = matrix_on(scheme, SectorChart(v, 2), weights);
   Eigen::EigenSolver<Eigen::MatrixXd> eig(S2, false);
   const Eigen::VectorXcd ev = eig.eigenvalues();
-  r.eigenvalues.assign(ev.data(), ev.data() + ev.size());
-  std::sort(r.eigenvalues.begin(), r.eigenvalues.end(), [](auto a, auto b) { return std::abs(a) > std::abs(b); });
-  const auto& e = r.eigenvalues;
-  r.one_simple = std::abs(e[0] - 1.0) < kTol && std::abs(e[1]) < 1 - kTol;
-  r.subdominant = e[1].real();
-  r.subdominant_real_double =
-      std::abs(e[1].imag()) < kTol && std::abs(e[2].imag()) < kTol && std::abs(e[1] - e[2]) < kTol && e[1].real() > 0;
-  r.next_modulus = e.size() > 3 ? std::abs(e[3]) : 0;
-  r.subdominant_dominates = r.subdominant_real_double && std::abs(e[1]) > r.next_modulus + kTol;
+  classify_spectrum(r, std::vector<std::complex<double>>(ev.data(), ev.data() + ev.size()));
   if (!r.subdominant_real_double) return r;
 
   // Right eigenvectors of the subdominant eigenvalue on the patches' chart.

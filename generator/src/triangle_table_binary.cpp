@@ -1,7 +1,6 @@
 #include "triangle_table_binary.hpp"
 
 #include <map>
-#include <numeric>
 
 #include "byte_writer.hpp"
 #include "error.hpp"
@@ -11,16 +10,6 @@ namespace sg {
 namespace fmt = stencil_runtime::format;
 
 namespace {
-
-void put_scalar(std::string& out, double d, BinaryPrecision p) {
-  if (p == BinaryPrecision::Double) put<double>(out, d);
-  else put<float>(out, static_cast<float>(d));
-}
-
-std::pair<long, long> reduced(long p, long q) {
-  const long g = std::gcd(p, q);
-  return {p / g, q / g};
-}
 
 // The stencil's weights over `layout` (the valence's union of the rates' layouts).
 std::vector<double> weights_over(const TriangleTable& t, const TriangleTable::Entry& e,
@@ -82,7 +71,7 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
     for (std::size_t r = 0; r < tables.size(); ++r) {
       const TriangleTable& t = tables[r];
       auto intern = [&](const TriangleTable::Entry& e, long offset) {
-        const Key key{reduced(3 * e.i + offset, 3 * t.n), reduced(3 * e.j + offset, 3 * t.n)};
+        const Key key{reduced_fraction(3 * e.i + offset, 3 * t.n), reduced_fraction(3 * e.j + offset, 3 * t.n)};
         auto [it, fresh] = slot.emplace(key, static_cast<std::uint32_t>(stencils.size()));
         if (fresh) stencils.push_back(weights_over(t, e, position, position.size()));
         index[r].push_back(it->second);
