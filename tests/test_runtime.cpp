@@ -352,7 +352,7 @@ TEST_CASE("triangle-scheme tables are refused by name until the runtime handles 
   const auto dir = scratch_dir("runtime-triangle-tables");
   REQUIRE(run_stencilgen("-q --scheme loop --valence 3 --n 2 --out " + dir.string()).status == 0);
   const std::string mesh = std::string(STENCIL_SOURCE_DIR) + "/meshes/cube.obj";
-  for (const std::string tables : {(dir / "loop").string(), (dir / "loop" / "loop.sgt").string()}) {
+  for (const std::string& tables : {(dir / "loop").string(), (dir / "loop" / "loop.sgt").string()}) {
     const CliResult r = run_stencileval("--tables " + tables + " --mesh " + mesh + " --face 0 --uv 1/2,1/2");
     INFO(r.output);
     REQUIRE(r.status != 0);
