@@ -108,12 +108,6 @@ Mesh sqrt3_step(const Mesh& m, int v) {
 }
 
 template <class T>
-double as_double(const T& x) {
-  if constexpr (std::is_same_v<T, sg::Rational>) return sg::to_double(x);
-  else return x.template convert_to<double>();
-}
-
-template <class T>
 void check_valence(const sg::TriangleScheme& sqrt3, int v) {
   FanMesh fan(v, 9);
   Mesh mesh;
@@ -153,7 +147,7 @@ void check_valence(const sg::TriangleScheme& sqrt3, int v) {
         const double limit = (mesh.value[found] + 3 * a * mean) / (1 + 3 * a);
         double ours = 0;
         const auto& w = patch.at(i, k);
-        for (const auto& [h, x] : w) ours += as_double(x) * control[static_cast<std::size_t>(fan.at(patch.chart.point(h)))];
+        for (const auto& [h, x] : w) ours += sg::to_double(x) * control[static_cast<std::size_t>(fan.at(patch.chart.point(h)))];
         REQUIRE(std::fabs(ours - limit) < 1e-12);
       }
   }

@@ -21,12 +21,6 @@ namespace {
 
 using namespace OpenSubdiv;
 
-template <class T>
-double as_double(const T& x) {
-  if constexpr (std::is_same_v<T, sg::Rational>) return sg::to_double(x);
-  else return x.template convert_to<double>();
-}
-
 // Every grid point of the patch at rate n against Bfr; returns the largest difference.
 template <class T>
 double compare_with_bfr(const sg::TriangleScheme& loop, int v, long n, FanMesh& mesh, Bfr::Surface<double>& surface,
@@ -39,7 +33,7 @@ double compare_with_bfr(const sg::TriangleScheme& loop, int v, long n, FanMesh& 
       double ours[3] = {0, 0, 0};
       for (const auto& [h, x] : w) {
         const int vertex = mesh.at(grid.chart.point(h));
-        for (int c = 0; c < 3; ++c) ours[c] += as_double(x) * pos[3 * static_cast<std::size_t>(vertex) + c];
+        for (int c = 0; c < 3; ++c) ours[c] += sg::to_double(x) * pos[3 * static_cast<std::size_t>(vertex) + c];
       }
       const double uv[2] = {double(i) / n, double(j) / n};
       double ref[3];

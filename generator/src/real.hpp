@@ -18,6 +18,8 @@ inline Real to_real(const Rational& q) {
   return Real(numerator(q)) / Real(denominator(q));
 }
 
+inline double to_double(const Real& x) { return x.convert_to<double>(); }
+
 // Scientific notation with `digits` significant digits, e.g. "1.25e-3".
 inline std::string to_string(const Real& x, int digits) {
   return x.str(digits, std::ios_base::scientific);

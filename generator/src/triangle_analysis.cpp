@@ -16,7 +16,7 @@ Eigen::MatrixXd matrix_on(const TriangleScheme& scheme, const SectorChart& chart
   const long m = static_cast<long>(chart.size());
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(m, m);
   for (long r = 0; r < m; ++r)
-    for (const auto& [c, x] : rows[static_cast<std::size_t>(r)]) S(r, static_cast<long>(c)) += x.convert_to<double>();
+    for (const auto& [c, x] : rows[static_cast<std::size_t>(r)]) S(r, static_cast<long>(c)) += to_double(x);
   return S;
 }
 
@@ -57,7 +57,7 @@ SmoothnessReport analyse_triangle_valence(const TriangleScheme& scheme, int v, l
           SectorPoint q = chart.point(h);
           if (q.a > 0) q.sector = (q.sector + k) % v;
           const long id = static_cast<long>(chart.index(q));
-          p += w.convert_to<double>() * Eigen::Vector2d(ex(id), ey(id));
+          p += to_double(w) * Eigen::Vector2d(ex(id), ey(id));
         }
         phi[static_cast<std::size_t>(k)][static_cast<std::size_t>(j * side + i)] = p;
       }

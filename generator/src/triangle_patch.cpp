@@ -72,12 +72,12 @@ template <>
 TriangleWeights<Rational> triangle_weights(const TriangleScheme& s, int valence) {
   const auto w = s.exact_neighbour_weight(valence);
   if (!w) throw Error(where(s, valence) + ": the vertex rule is irrational here; solve it in high precision");
-  return {valence, s.edge_end, s.edge_opposite, *w, *s.exact_neighbour_weight(6)};
+  return {s.edge_end, s.edge_opposite, *w, *s.exact_neighbour_weight(6)};
 }
 
 template <>
 TriangleWeights<Real> triangle_weights(const TriangleScheme& s, int valence) {
-  return {valence, to_real(s.edge_end), to_real(s.edge_opposite), s.real_neighbour_weight(valence),
+  return {to_real(s.edge_end), to_real(s.edge_opposite), s.real_neighbour_weight(valence),
           to_real(*s.exact_neighbour_weight(6))};
 }
 

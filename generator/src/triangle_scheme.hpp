@@ -32,8 +32,7 @@ struct TriangleScheme {
   std::string vertex_neighbour;
   int min_valence = 3, max_valence = 64;
 
-  // Steps composed into one refinement of the lattice, and its dilation.
-  int steps() const { return refinement == TriangleRefinement::Loop ? 1 : 2; }
+  // The dilation of one refinement of the lattice (sqrt(3): two steps composed).
   int dilation() const { return refinement == TriangleRefinement::Loop ? 2 : 3; }
   const char* refinement_name() const { return refinement == TriangleRefinement::Loop ? "loop" : "sqrt3"; }
 
@@ -48,7 +47,6 @@ struct TriangleScheme {
 // The rules of one valence in the arithmetic T (Rational or Real).
 template <class T>
 struct TriangleWeights {
-  int valence = 6;
   T edge_end, edge_opposite;         // Loop only
   T neighbour, neighbour_regular;    // w(v) and w(6)
 };

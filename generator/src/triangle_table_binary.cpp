@@ -18,7 +18,7 @@ std::vector<double> weights_over(const TriangleTable& t, const TriangleTable::En
   for (std::size_t h = 0; h < t.layout.size(); ++h) {
     const SectorPoint& p = t.layout[h];
     const std::size_t at = position.at({p.sector, p.a, p.b});
-    w[at] = t.exact ? to_double(Rational(e.exact.num[h], e.exact.den)) : e.approx[h].convert_to<double>();
+    w[at] = t.exact ? to_double(Rational(e.exact.num[h], e.exact.den)) : to_double(e.approx[h]);
   }
   return w;
 }
@@ -54,8 +54,8 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
     for (const TriangleTable& t : tables) exact = exact && t.exact, residual = std::max(residual, t.residual);
     put<std::uint32_t>(out, static_cast<std::uint32_t>(v));
     put<std::uint8_t>(out, exact ? 1 : 0);
-    put<double>(out, residual.convert_to<double>());
-    put<double>(out, scheme.real_neighbour_weight(v).convert_to<double>());
+    put<double>(out, to_double(residual));
+    put<double>(out, to_double(scheme.real_neighbour_weight(v)));
     put<std::uint32_t>(out, static_cast<std::uint32_t>(position.size()));
     std::vector<std::tuple<int, long, long>> ordered(position.size());
     for (const auto& [p, at] : position) ordered[at] = p;
