@@ -35,9 +35,7 @@ TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const st
     const auto [vi, r] = jobs[k];
     const int v = valences[vi];
     const long n = rates[r];
-    TriangleTable table = scheme.exact_neighbour_weight(v)
-                              ? make_triangle_table(scheme, solve_triangle_patch<Rational>(scheme, v, 3 * n, regular[r]), n)
-                              : make_triangle_table(scheme, solve_triangle_patch<Real>(scheme, v, 3 * n, regular[r]), n);
+    TriangleTable table = solve_triangle_table(scheme, v, n, regular[r]);
     if (!table.exact && !(table.residual < Real("1e-60")))
       throw Error("scheme '" + scheme.name + "', valence " + std::to_string(v) + ", n = " + std::to_string(n) +
                   ": the high-precision residual " + to_string(table.residual, 3) + " is too large");
@@ -47,7 +45,7 @@ TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const st
     if (progress && ++done[vi] == rates.size())
       progress(scheme.name + ": valence " + std::to_string(v) + " solved for " + std::to_string(rates.size()) +
                " rates, " +
-               (scheme.exact_neighbour_weight(v) ? std::string("exact")
+               (set.tables[vi][r].exact ? std::string("exact")
                                                  : "high precision (" + std::to_string(kRealDigits) +
                                                        " digits), largest residual " + to_string(worst[vi], 3)));
   });

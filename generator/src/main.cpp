@@ -159,11 +159,7 @@ int run_verify(const std::vector<std::string>& files, const std::string& scheme_
           sg::load_triangle_scheme(scheme_spec.empty() ? doc.at("scheme").get<std::string>() : scheme_spec, overrides);
       const int v = doc.at("valence").get<int>();
       const long n = doc.at("n").get<long>();
-      const sg::BivariateSolution regular = sg::solve_regular(scheme, 3 * n);
-      const sg::TriangleTable fresh =
-          scheme.exact_neighbour_weight(v)
-              ? sg::make_triangle_table(scheme, sg::solve_triangle_patch<sg::Rational>(scheme, v, 3 * n, regular), n)
-              : sg::make_triangle_table(scheme, sg::solve_triangle_patch<sg::Real>(scheme, v, 3 * n, regular), n);
+      const sg::TriangleTable fresh = sg::solve_triangle_table(scheme, v, n, sg::solve_regular(scheme, 3 * n));
       if (sg::triangle_table_to_json(fresh) == text) {
         std::cout << file << ": OK (" << scheme.name << " triangle table, valence " << v << ", n = " << n << "; "
                   << (fresh.exact ? "exact" : "high precision") << "; equal to the re-solved table in every digit)\n";

@@ -7,9 +7,7 @@
 namespace sg {
 using ojson = nlohmann::ordered_json;
 
-namespace {
-
-ojson entry_json(const ScaledVector& w, const Rational& x, const Rational& y) {
+ojson exact_entry_json(const ScaledVector& w, const Rational& x, const Rational& y) {
   ojson e;
   e["at"] = {to_string(x), to_string(y)};
   e["denominator"] = w.den.str();
@@ -19,12 +17,14 @@ ojson entry_json(const ScaledVector& w, const Rational& x, const Rational& y) {
   return e;
 }
 
+namespace {
+
 void append_entries(std::string& out, const char* key, const std::vector<SurfaceTable::Entry>& entries, long denom,
                     long offset, bool last) {
   out += std::string(" \"") + key + "\": [\n";
   for (std::size_t k = 0; k < entries.size(); ++k) {
     const auto& e = entries[k];
-    out += "  " + entry_json(e.weights, Rational(2 * e.i + offset, denom), Rational(2 * e.j + offset, denom)).dump();
+    out += "  " + exact_entry_json(e.weights, Rational(2 * e.i + offset, denom), Rational(2 * e.j + offset, denom)).dump();
     out += k + 1 < entries.size() ? ",\n" : "\n";
   }
   out += last ? " ]\n" : " ],\n";

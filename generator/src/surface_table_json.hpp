@@ -1,4 +1,5 @@
 #pragma once
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -8,6 +9,10 @@ namespace sg {
 
 inline constexpr const char* kSurfaceTableFormat = "stencilgen-surface-table";
 inline constexpr int kSurfaceTableVersion = 1;
+
+// One exact stencil entry of a table file: {"at": [x, y], "denominator", "numerators"}
+// (the quad and the exact triangle tables share it).
+nlohmann::ordered_json exact_entry_json(const ScaledVector& w, const Rational& x, const Rational& y);
 
 // Exact JSON, one stencil per line (docs/table-format.md).
 std::string surface_table_to_json(const SurfaceTable& table);

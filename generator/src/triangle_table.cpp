@@ -7,6 +7,7 @@
 #include "error.hpp"
 #include "hash.hpp"
 #include "parameters_json.hpp"
+#include "surface_table_json.hpp"
 
 namespace sg {
 using ojson = nlohmann::ordered_json;
@@ -74,6 +75,12 @@ TriangleTable make_triangle_table(const TriangleScheme& scheme, const TrianglePa
 template TriangleTable make_triangle_table(const TriangleScheme&, const TrianglePatch<Rational>&, long);
 template TriangleTable make_triangle_table(const TriangleScheme&, const TrianglePatch<Real>&, long);
 
+TriangleTable solve_triangle_table(const TriangleScheme& scheme, int valence, long n, const BivariateSolution& regular) {
+  return scheme.exact_neighbour_weight(valence)
+             ? make_triangle_table(scheme, solve_triangle_patch<Rational>(scheme, valence, 3 * n, regular), n)
+             : make_triangle_table(scheme, solve_triangle_patch<Real>(scheme, valence, 3 * n, regular), n);
+}
+
 namespace {
 
 void append_entries(std::string& out, const char* key, const TriangleTable& t, const std::vector<TriangleTable::Entry>& entries,
@@ -82,16 +89,14 @@ void append_entries(std::string& out, const char* key, const TriangleTable& t, c
   const long den = 3 * t.n;
   for (std::size_t k = 0; k < entries.size(); ++k) {
     const auto& e = entries[k];
+    const Rational x(3 * e.i + offset, den), y(3 * e.j + offset, den);
     ojson j;
-    j["at"] = {to_string(Rational(3 * e.i + offset, den)), to_string(Rational(3 * e.j + offset, den))};
     if (t.exact) {
-      j["denominator"] = e.exact.den.str();
-      ojson nums = ojson::array();
-      for (const auto& v : e.exact.num) nums.push_back(v.str());
-      j["numerators"] = nums;
+      j = exact_entry_json(e.exact, x, y);
     } else {
+      j["at"] = {to_string(x), to_string(y)};
       ojson w = ojson::array();
-      for (const Real& x : e.approx) w.push_back(x == 0 ? std::string("0") : to_string(x, kTableDigits));
+      for (const Real& v : e.approx) w.push_back(v == 0 ? std::string("0") : to_string(v, kTableDigits));
       j["weights"] = w;
     }
     out += "  " + j.dump();

@@ -44,6 +44,10 @@ inline constexpr int kTableDigits = 40;
 template <class T>
 TriangleTable make_triangle_table(const TriangleScheme& scheme, const TrianglePatch<T>& patch, long n);
 
+// The table of one valence and rate, solved exactly where the scheme's weights
+// are rational at the valence and in high precision otherwise.
+TriangleTable solve_triangle_table(const TriangleScheme& scheme, int valence, long n, const BivariateSolution& regular);
+
 std::string triangle_table_to_json(const TriangleTable& table);
 
 inline constexpr const char* kTriangleTableFormat = "stencilgen-triangle-table";

@@ -1,6 +1,8 @@
 #include "triangle_table_binary.hpp"
 
 #include <map>
+#include <set>
+#include <tuple>
 
 #include "byte_writer.hpp"
 #include "error.hpp"
@@ -40,15 +42,12 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
   for (std::size_t vi = 0; vi < set.valences.size(); ++vi) {
     const auto& tables = set.tables[vi];
     const int v = set.valences[vi];
-    // The union of the rates' layouts, in chart order.
+    // The union of the rates' layouts, in chart order (ring a, then sector, then b).
+    std::set<std::tuple<long, int, long>> chart_order;
+    for (const TriangleTable& t : tables)
+      for (const SectorPoint& p : t.layout) chart_order.emplace(p.a, p.sector, p.b);
     std::map<std::tuple<int, long, long>, std::size_t> position;
-    {
-      const SectorChart chart(v, 64);
-      std::map<std::size_t, SectorPoint> by_id;
-      for (const TriangleTable& t : tables)
-        for (const SectorPoint& p : t.layout) by_id.emplace(chart.index(p), p);
-      for (const auto& [id, p] : by_id) position.emplace(std::tuple{p.sector, p.a, p.b}, position.size());
-    }
+    for (const auto& [a, s, b] : chart_order) position.emplace(std::tuple{s, a, b}, position.size());
     bool exact = true;
     Real residual = 0;
     for (const TriangleTable& t : tables) exact = exact && t.exact, residual = std::max(residual, t.residual);
