@@ -158,9 +158,15 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
 
   // W at the wedge point Y / g of sector 0 (0 <= Y.b <= Y.a): W(Y) = F(m Y) A,
   // F = W again while m Y stays within the irregular radius, the regular
-  // stencil beyond it. Points outside the patch are needed only on the way in.
+  // stencil beyond it. Points of the patch (Y.a <= g, patch point (Y.a - Y.b, Y.b))
+  // are kept in the patch's own grid; the few beyond it that the recursion
+  // passes through (sqrt(3)) in a map. A computed stencil is never empty.
   const long radius = irregular_radius(scheme) * g;
-  std::map<LatticeIndex, SparseRow<T>> memo;
+  out.stencils.assign(static_cast<std::size_t>((g + 1) * (g + 1)), {});
+  std::map<LatticeIndex, SparseRow<T>> beyond;
+  auto stored = [&](long ya, long yb) -> SparseRow<T>& {
+    return ya <= g ? out.stencils[static_cast<std::size_t>(yb * (g + 1) + ya - yb)] : beyond[{ya, yb}];
+  };
   {
     // The two-ring (the first 1 + 3v points of the chart) is closed under the
     // step, so the eigenvector lives there: a small system instead of the chart's.
@@ -170,21 +176,18 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
       for (const auto& [c, x] : row)
         if (c >= two_ring) throw Error("internal: " + context + ": the two-ring is not closed under the step");
     const std::vector<T> w0 = fixed_vector(inner, context);
-    SparseRow<T> sparse;
+    SparseRow<T>& origin = stored(0, 0);
     for (std::size_t c = 0; c < w0.size(); ++c)
-      if (w0[c] != 0) sparse.emplace_back(c, w0[c]);
-    memo[{0, 0}] = std::move(sparse);
+      if (w0[c] != 0) origin.emplace_back(c, w0[c]);
   }
   auto solve = [&](auto&& self, long ya, long yb) -> const SparseRow<T>& {
-    const auto it = memo.find({ya, yb});
-    if (it != memo.end()) return it->second;
+    if (const SparseRow<T>& known = stored(ya, yb); !known.empty()) return known;
     const long za = m * ya, zb = m * yb;
     SparseRow<T> w = za < radius ? times_a(self(self, za, zb)) : times_a(regular_stencil(za, zb));
-    return memo.emplace(LatticeIndex{ya, yb}, std::move(w)).first->second;
+    return stored(ya, yb) = std::move(w);
   };
-  out.stencils.assign(static_cast<std::size_t>((g + 1) * (g + 1)), {});
   for (long j = 0; j <= g; ++j)
-    for (long i = 0; i + j <= g; ++i) out.stencils[static_cast<std::size_t>(j * (g + 1) + i)] = solve(solve, i + j, j);
+    for (long i = 0; i + j <= g; ++i) solve(solve, i + j, j);
 
   // Residuals (exact arithmetic must give zero).
   {
