@@ -11,6 +11,7 @@
 #include "residue_solver.hpp"
 #include "surface_table_json.hpp"
 #include "table_json.hpp"
+#include "table_set_pipeline.hpp"
 
 namespace sg {
 
@@ -27,13 +28,7 @@ SurfaceTableSet generate_surface_tables(const QuadScheme& scheme, const std::vec
                     [&](std::size_t r) { set.regular[r] = solve_by_residues(scheme.curve, 2 * rates[r]); });
 
   set.tables.assign(valences.size(), std::vector<SurfaceTable>(rates.size()));
-  // Largest jobs first, so that the last ones to finish are short.
-  std::vector<std::pair<std::size_t, std::size_t>> jobs;
-  for (std::size_t v = 0; v < valences.size(); ++v)
-    for (std::size_t r = 0; r < rates.size(); ++r) jobs.emplace_back(v, r);
-  std::sort(jobs.begin(), jobs.end(), [&](auto a, auto b) {
-    return rates[a.second] * (valences[a.first] + 4) > rates[b.second] * (valences[b.first] + 4);
-  });
+  const auto jobs = valence_rate_jobs(valences, rates);
   std::mutex report;
   std::vector<std::size_t> done(valences.size(), 0);
   tbb::parallel_for(std::size_t(0), jobs.size(), [&](std::size_t k) {
@@ -61,14 +56,7 @@ std::size_t write_surface_tables(const QuadScheme& scheme, const SurfaceTableSet
   for (std::size_t r = 0; r < set.rates.size(); ++r)
     tx.add("regular/n" + std::to_string(2 * set.rates[r]) + ".json",
            curve_table_to_json(make_table(scheme.curve, set.regular[r])));
-  // Serialising the exact numbers is a good part of the work: do it in parallel.
-  std::vector<const SurfaceTable*> all;
-  for (const auto& by_rate : set.tables)
-    for (const SurfaceTable& t : by_rate) all.push_back(&t);
-  std::vector<std::string> texts(all.size());
-  tbb::parallel_for(std::size_t(0), all.size(), [&](std::size_t k) { texts[k] = surface_table_to_json(*all[k]); });
-  for (std::size_t k = 0; k < all.size(); ++k)
-    tx.add("v" + std::to_string(all[k]->valence) + "/n" + std::to_string(all[k]->n) + ".json", std::move(texts[k]));
+  add_table_files(tx, set.tables, surface_table_to_json);
   std::string binary = surface_tables_to_binary(scheme, set, precision);
   const std::size_t size = binary.size();
   tx.add(scheme.name + ".sgs", std::move(binary));

@@ -4,8 +4,8 @@
 #include <mutex>
 #include <tbb/parallel_for.h>
 
-#include "atomic_output.hpp"
 #include "error.hpp"
+#include "table_set_pipeline.hpp"
 
 namespace sg {
 
@@ -21,13 +21,7 @@ TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const st
   tbb::parallel_for(std::size_t(0), rates.size(), [&](std::size_t r) { regular[r] = solve_regular(scheme, 3 * rates[r]); });
 
   set.tables.assign(valences.size(), std::vector<TriangleTable>(rates.size()));
-  std::vector<std::pair<std::size_t, std::size_t>> jobs;
-  for (std::size_t v = 0; v < valences.size(); ++v)
-    for (std::size_t r = 0; r < rates.size(); ++r) jobs.emplace_back(v, r);
-  // Largest first (irrational valences cost more than exact ones of the same size).
-  std::sort(jobs.begin(), jobs.end(), [&](auto a, auto b) {
-    return rates[a.second] * (valences[a.first] + 4) > rates[b.second] * (valences[b.first] + 4);
-  });
+  const auto jobs = valence_rate_jobs(valences, rates);
   std::mutex report;
   std::vector<std::size_t> done(valences.size(), 0);
   std::vector<Real> worst(valences.size(), Real(0));
@@ -55,13 +49,7 @@ TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const st
 std::size_t write_triangle_tables(const TriangleScheme& scheme, const TriangleTableSet& set,
                                   const std::filesystem::path& out_dir, BinaryPrecision precision) {
   OutputTransaction tx(out_dir / scheme.name);
-  std::vector<const TriangleTable*> all;
-  for (const auto& by_rate : set.tables)
-    for (const TriangleTable& t : by_rate) all.push_back(&t);
-  std::vector<std::string> texts(all.size());
-  tbb::parallel_for(std::size_t(0), all.size(), [&](std::size_t k) { texts[k] = triangle_table_to_json(*all[k]); });
-  for (std::size_t k = 0; k < all.size(); ++k)
-    tx.add("v" + std::to_string(all[k]->valence) + "/n" + std::to_string(all[k]->n) + ".json", std::move(texts[k]));
+  add_table_files(tx, set.tables, triangle_table_to_json);
   std::string binary = triangle_tables_to_binary(scheme, set, precision);
   const std::size_t size = binary.size();
   tx.add(scheme.name + ".sgt", std::move(binary));
