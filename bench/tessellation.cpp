@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
         std::mt19937 rng(7);
         const std::vector<int> rates = rate_set(m.mesh.face_count(), rate, rng);
         std::vector<int> prepared = prepared_rates(surface, rates);
-        for (int& r : prepared) r = table_rate_at_least(tables, r);
+        for (int& r : prepared) r = table_rate_at_least(tables.rates(), r);
         for (int threads : {1, 2}) {
           std::size_t triangles = 0;
           PolygonSoup soup;  // reused across runs, as OpenSubdiv's side reuses preallocated arrays

@@ -1,5 +1,5 @@
 #pragma once
-// OpenSubdiv (Bfr) as the reference limit surface for Catmull-Clark meshes.
+// OpenSubdiv (Bfr) as the reference limit surface for Catmull-Clark and Loop meshes.
 // Approximation level 10: every parameter farther than 2^-10 from an
 // extraordinary vertex lies in an exact B-spline sub-patch (see
 // test_quad_opensubdiv.cpp for the measurements behind this choice).
@@ -18,7 +18,8 @@ namespace bfr_reference {
 namespace osd = OpenSubdiv;
 
 inline std::unique_ptr<osd::Far::TopologyRefiner> make_refiner(int num_vertices, const std::vector<int>& sizes,
-                                                               const std::vector<int>& indices) {
+                                                               const std::vector<int>& indices,
+                                                               osd::Sdc::SchemeType scheme = osd::Sdc::SCHEME_CATMARK) {
   osd::Far::TopologyDescriptor desc;
   desc.numVertices = num_vertices;
   desc.numFaces = static_cast<int>(sizes.size());
@@ -27,16 +28,20 @@ inline std::unique_ptr<osd::Far::TopologyRefiner> make_refiner(int num_vertices,
   osd::Sdc::Options sdc;
   sdc.SetVtxBoundaryInterpolation(osd::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
   using Factory = osd::Far::TopologyRefinerFactory<osd::Far::TopologyDescriptor>;
-  return std::unique_ptr<osd::Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(osd::Sdc::SCHEME_CATMARK, sdc)));
+  return std::unique_ptr<osd::Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(scheme, sdc)));
 }
 
 inline constexpr int kApproxLevel = 10;
 
-class CatmullClarkLimit {
+// The limit surface of a mesh under `scheme` (Catmull-Clark or Loop); a face's
+// (u, v) is Bfr's: for a quad, u along v0->v1 and v along v0->v3; for a
+// triangle, u along v0->v1 and v along v0->v2.
+class BfrLimit {
  public:
-  CatmullClarkLimit(const std::vector<std::array<double, 3>>& positions, const std::vector<int>& sizes,
-                    const std::vector<int>& indices)
-      : sizes_(sizes), indices_(indices), refiner_(make_refiner(static_cast<int>(positions.size()), sizes_, indices_)) {
+  BfrLimit(const std::vector<std::array<double, 3>>& positions, const std::vector<int>& sizes,
+           const std::vector<int>& indices, osd::Sdc::SchemeType scheme = osd::Sdc::SCHEME_CATMARK)
+      : sizes_(sizes), indices_(indices),
+        refiner_(make_refiner(static_cast<int>(positions.size()), sizes_, indices_, scheme)) {
     if (!refiner_) throw std::runtime_error("OpenSubdiv refused the mesh");
     osd::Bfr::SurfaceFactory::Options options;
     options.SetApproxLevelSmooth(kApproxLevel).SetApproxLevelSharp(kApproxLevel);

@@ -12,6 +12,7 @@
 
 #include "bfr_reference.hpp"
 #include "cli.hpp"
+#include "soup_checks.hpp"
 #include "stencil_runtime/tessellation.hpp"
 
 using namespace stencil_runtime;
@@ -53,7 +54,7 @@ TEST_CASE("runtime Catmull-Clark evaluation equals OpenSubdiv on every bundled m
   for (const char* name : kBundled) {
     const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
     const LimitSurface surface(tables, mesh, "catmull-clark");
-    bfr_reference::CatmullClarkLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices);
+    bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices);
     const double size = extent(mesh);
     double worst = 0;
     for (std::size_t f = 0; f < mesh.face_count(); f += (mesh.face_count() > 100 ? 3 : 1))
@@ -103,31 +104,15 @@ TEST_CASE("tessellations are closed oriented 2-manifolds for random rate mixes 1
   for (const char* name : kBundled) {
     const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
     const LimitSurface surface(tables, mesh, "nonpoly");
-    const long chi_expected = [&] {  // Euler characteristic of the control mesh
-      std::set<std::pair<int, int>> edges;
-      std::size_t off = 0;
-      for (int k : mesh.face_sizes) {
-        for (int c = 0; c < k; ++c) {
-          const int a = mesh.face_vertices[off + static_cast<std::size_t>(c)], b = mesh.face_vertices[off + static_cast<std::size_t>((c + 1) % k)];
-          edges.insert({std::min(a, b), std::max(a, b)});
-        }
-        off += static_cast<std::size_t>(k);
-      }
-      return static_cast<long>(mesh.vertex_count()) - static_cast<long>(edges.size()) + static_cast<long>(mesh.face_count());
-    }();
+    const long chi_expected = euler_characteristic(mesh);
     for (int trial = 0; trial < 4; ++trial) {
       std::vector<int> rates(mesh.face_count());
       for (int& r : rates) r = std::uniform_int_distribution<int>(1, 24)(rng);
       std::vector<int> prepared = prepared_rates(surface, rates);
-      for (int& r : prepared) r = table_rate_at_least(tables, r);
+      for (int& r : prepared) r = table_rate_at_least(tables.rates(), r);
       const PolygonSoup soup = tessellate(surface, prepared);
       // Independent count: every directed edge exactly once, its reverse exactly once.
-      std::map<std::pair<int, int>, int> directed;
-      auto add = [&](const int* poly, int k) {
-        for (int c = 0; c < k; ++c) ++directed[{poly[c], poly[(c + 1) % k]}];
-      };
-      for (const auto& q : soup.quads) add(q.data(), 4);
-      for (const auto& t : soup.triangles) add(t.data(), 3);
+      const auto directed = directed_edges(soup);
       std::set<int> used;
       for (const auto& [e, count] : directed) {
         INFO(name << " trial " << trial << " edge " << e.first << "->" << e.second);
@@ -324,7 +309,7 @@ TEST_CASE("meshes with triangles get the scheme's polygon step; Catmull-Clark th
   const Mesh m = prism();
   const LimitSurface surface(cc, m, "catmull-clark");
   CHECK(surface.prepared().steps == 2);  // polygon step, then isolation of the triangles' centres
-  bfr_reference::CatmullClarkLimit reference(m.positions, m.face_sizes, m.face_vertices);
+  bfr_reference::BfrLimit reference(m.positions, m.face_sizes, m.face_vertices);
   const double size = extent(m);
   for (std::size_t f = 2; f < 5; ++f)  // the quads: (u, v) is defined there
     for (long n : {1L, 2L, 4L, 5L, 8L})
@@ -346,16 +331,4 @@ TEST_CASE("meshes with triangles get the scheme's polygon step; Catmull-Clark th
   for (const auto& [e, count] : directed) REQUIRE((count == 1 && directed.count({e.second, e.first}) == 1));
   CHECK(static_cast<long>(soup.positions.size()) - static_cast<long>(directed.size() / 2) +
             static_cast<long>(soup.quads.size() + soup.triangles.size()) == 2);
-}
-
-TEST_CASE("triangle-scheme tables are refused by name until the runtime handles triangle meshes", "[runtime][errors]") {
-  const auto dir = scratch_dir("runtime-triangle-tables");
-  REQUIRE(run_stencilgen("-q --scheme loop --valence 3 --n 2 --out " + dir.string()).status == 0);
-  const std::string mesh = std::string(STENCIL_SOURCE_DIR) + "/meshes/cube.obj";
-  for (const std::string& tables : {(dir / "loop").string(), (dir / "loop" / "loop.sgt").string()}) {
-    const CliResult r = run_stencileval("--tables " + tables + " --mesh " + mesh + " --face 0 --uv 1/2,1/2");
-    INFO(r.output);
-    REQUIRE(r.status != 0);
-    REQUIRE(r.output.find("loop.sgt: a triangle-scheme table") != std::string::npos);
-  }
 }

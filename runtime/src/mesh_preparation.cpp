@@ -148,11 +148,7 @@ Mesh subdivide_polygons(const Mesh& mesh, const SurfaceTables& t) {
 
 PreparedMesh prepare_mesh(const Mesh& mesh, const SurfaceTables& tables, const std::string& scheme_name) {
   PreparedMesh out{mesh, 0, {}, mesh.face_sizes};
-  auto missing_valence = [&](std::size_t v, int val) {
-    return MeshError("vertex " + std::to_string(v) + " has valence " + std::to_string(val) +
-                     ", which the tables do not cover; generate it with: stencilgen --scheme " + scheme_name +
-                     " --valence " + std::to_string(val) + " --n <rates> --out <dir>");
-  };
+  auto missing_valence = [&](std::size_t v, int val) { return missing_valence_error(v, val, scheme_name); };
   const bool all_quads = std::all_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k == 4; });
   if (!all_quads) {
     if (!tables.has_polygon_rules()) {

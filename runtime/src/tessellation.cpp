@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <memory>
-#include <tbb/task_arena.h>
-#include <tbb/parallel_for.h>
+
+#include "tessellation_parts.hpp"
 
 namespace stencil_runtime {
 
@@ -23,51 +22,23 @@ inline int row_cell(int k, int t, int n) {
 
 inline int corner_cell(int c, int n) { return row_cell(c, 0, n); }
 
-struct Counts {
-  std::size_t quads = 0, triangles = 0;
-};
-
-// The zipper between two rows along one edge, both given in the edge's
-// direction: A on the left (face f), B on the right (face g).
-template <class EmitQuad, class EmitTri>
-void zipper(int na, int nb, const EmitQuad& quad, const EmitTri& tri) {
-  if (na == nb) {
-    for (int t = 0; t + 1 < na; ++t) quad(t, t);
-    return;
-  }
-  int a = 0, b = 0;
-  while (a + 1 < na || b + 1 < nb) {
-    // Advance the row whose next point comes first along the edge:
-    // compare (a + 1.5)/na with (b + 1.5)/nb exactly.
-    const bool advance_a = b + 1 >= nb || (a + 1 < na && (2 * a + 3) * nb <= (2 * b + 3) * na);
-    if (advance_a) {
-      tri(a, b, true);
-      ++a;
-    } else {
-      tri(a, b, false);
-      ++b;
-    }
-  }
-}
-
 }  // namespace
 
-int table_rate_at_least(const SurfaceTables& tables, int wanted) {
-  int best = tables.rates().back();
-  for (int n : tables.rates())
+int table_rate_at_least(const std::vector<int>& table_rates, int wanted) {
+  for (int n : table_rates)
     if (n >= wanted) return n;
-  return best;
+  return table_rates.back();
 }
 
-std::vector<int> prepared_rates(const LimitSurface& surface, const std::vector<int>& original) {
-  if (original.size() != surface.original_faces())
+std::vector<int> prepared_rates(const PreparedMesh& prepared, const std::vector<int>& original) {
+  if (original.size() != prepared.original_sizes.size())
     throw std::invalid_argument("need one rate per face: got " + std::to_string(original.size()) + " for " +
-                                std::to_string(surface.original_faces()) + " faces");
+                                std::to_string(prepared.original_sizes.size()) + " faces");
   for (std::size_t f = 0; f < original.size(); ++f)
     if (original[f] < 1) throw std::invalid_argument("face " + std::to_string(f) + ": rate must be at least 1");
   // Each step halves the faces: children get ceil(rate / 2).
   std::vector<int> rates = original;
-  for (const auto& offsets : surface.prepared().child_offsets) {
+  for (const auto& offsets : prepared.child_offsets) {
     std::vector<int> next(offsets.back());
     for (std::size_t f = 0; f + 1 < offsets.size(); ++f)
       for (std::size_t c = offsets[f]; c < offsets[f + 1]; ++c) next[c] = std::max(1, (rates[f] + 1) / 2);
@@ -130,22 +101,7 @@ void tessellate_into(const LimitSurface& surface, const std::vector<int>& rates,
   soup.quads.resize(interior_quads + quad_offset[nh + nv]);
   soup.triangles.resize(tri_offset[nh + nv]);
 
-  // Small jobs and one thread run as plain loops: task scheduling would cost
-  // more than it saves.
-  const int threads = options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
-  const bool parallel = threads > 1 && point_offset[nf] >= 4096;
-  std::unique_ptr<tbb::task_arena> arena;
-  if (parallel) arena = std::make_unique<tbb::task_arena>(threads);
-  auto for_range = [&](std::size_t count, const auto& body) {
-    if (!parallel) {
-      body(std::size_t(0), count);
-      return;
-    }
-    arena->execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count),
-                        [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); });
-    });
-  };
+  const detail::RangeRunner for_range(options.threads, point_offset[nf]);
   // Faces: limit points at the cell centres and the quads between them.
   for_range(nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f != end; ++f) {
@@ -171,7 +127,7 @@ void tessellate_into(const LimitSurface& surface, const std::vector<int>& rates,
       auto B = [&](int t) { return gb + row_cell(kg, nb - 1 - t, nb); };  // g's row, in f's direction
       std::array<int, 4>* q = soup.quads.data() + interior_quads + quad_offset[h];
       std::array<int, 3>* t = soup.triangles.data() + tri_offset[h];
-      zipper(
+      detail::zipper(
           na, nb, [&](int a, int b) { *q++ = {B(b), B(b + 1), A(a + 1), A(a)}; },
           [&](int a, int b, bool advance_a) {
             if (advance_a) *t++ = {B(b), A(a + 1), A(a)};

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "stencil_runtime/quad_topology.hpp"
+#include "stencil_runtime/uniform_topology.hpp"
 #include "stencil_runtime/tessellation.hpp"
 
 namespace stencil_tools {
@@ -41,29 +41,41 @@ V sub(const V& a, const V& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; 
 double norm(const V& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 }  // namespace
 
-std::vector<int> rates_for_tolerance(const Mesh& mesh, double tolerance) {
-  if (!(tolerance > 0)) throw std::runtime_error("--tolerance must be positive");
-  const stencil_runtime::QuadTopology topo(mesh);
+namespace {
+
+// Second differences along the lattice lines through each corner: the corner's
+// next vertex a and the neighbour opposite it (half the valence round), and
+// for quads the twist of the face.
+template <int K>
+std::vector<int> curvature_rates(const Mesh& mesh, double tolerance) {
+  using Topology = stencil_runtime::UniformTopology<K>;
+  const Topology topo(mesh);
   std::vector<int> rates(topo.faces());
+  auto at = [&](int v) -> const V& { return mesh.positions[static_cast<std::size_t>(v)]; };
+  auto head = [&](std::uint32_t h) { return topo.vertex(Topology::face_of(h), Topology::corner_of(h) + 1); };
   for (std::size_t f = 0; f < topo.faces(); ++f) {
     double d = 0;
-    for (int c = 0; c < 4; ++c) {
-      // Second differences across each corner: (prev corner) - 2 corner + (the vertex beyond it across the edge).
-      const auto& p = mesh.positions[static_cast<std::size_t>(topo.vertex(f, c))];
-      const auto& a = mesh.positions[static_cast<std::size_t>(topo.vertex(f, c + 1))];
-      const auto& b = mesh.positions[static_cast<std::size_t>(topo.vertex(f, c + 3))];
-      const std::uint32_t t = topo.twin(stencil_runtime::QuadTopology::half_edge(f, c + 3));
-      const auto& beyond = mesh.positions[static_cast<std::size_t>(
-          topo.vertex(stencil_runtime::QuadTopology::face_of(t), stencil_runtime::QuadTopology::corner_of(t) + 3))];
-      const V dd = sub(sub(a, p), sub(p, beyond));
-      d = std::max(d, norm(dd));
-      const auto& diag = mesh.positions[static_cast<std::size_t>(topo.vertex(f, c + 2))];
-      const V skew = sub(sub(diag, a), sub(b, p));  // twist of the quad
-      d = std::max(d, norm(skew));
+    for (int c = 0; c < K; ++c) {
+      const int p = topo.vertex(f, c);
+      const std::uint32_t h = Topology::half_edge(f, c);
+      std::uint32_t e = h;
+      for (int t = 0; t < topo.valence(p) / 2; ++t) e = topo.turn_ccw(e);
+      d = std::max(d, norm(sub(sub(at(head(h)), at(p)), sub(at(p), at(head(e))))));
+      if constexpr (K == 4) {
+        const V skew = sub(sub(at(topo.vertex(f, c + 2)), at(topo.vertex(f, c + 1))), sub(at(topo.vertex(f, c + 3)), at(p)));
+        d = std::max(d, norm(skew));
+      }
     }
     rates[f] = std::max(1, static_cast<int>(std::ceil(std::sqrt(d / (8 * tolerance)))));
   }
   return rates;
+}
+
+}  // namespace
+
+std::vector<int> rates_for_tolerance(const Mesh& mesh, double tolerance, int corners) {
+  if (!(tolerance > 0)) throw std::runtime_error("--tolerance must be positive");
+  return corners == 3 ? curvature_rates<3>(mesh, tolerance) : curvature_rates<4>(mesh, tolerance);
 }
 
 std::vector<int> rates_for_view(const Mesh& mesh, const Camera& cam, double target_pixels) {
@@ -96,8 +108,8 @@ std::vector<int> rates_for_view(const Mesh& mesh, const Camera& cam, double targ
   return rates;
 }
 
-void snap_to_tables(std::vector<int>& rates, const stencil_runtime::SurfaceTables& tables) {
-  for (int& r : rates) r = stencil_runtime::table_rate_at_least(tables, r);
+void snap_to_tables(std::vector<int>& rates, const std::vector<int>& table_rates) {
+  for (int& r : rates) r = stencil_runtime::table_rate_at_least(table_rates, r);
 }
 
 }  // namespace stencil_tools

@@ -1,5 +1,5 @@
 #pragma once
-// Shared by the runtime's command-line tools: finding the .sgs file behind
+// Shared by the runtime's command-line tools: finding the table file behind
 // --tables, and parsing exact parameters like "1/3".
 #include <filesystem>
 #include <numeric>
@@ -8,34 +8,30 @@
 
 namespace stencil_tools {
 
-// --tables is a .sgs file, a directory holding exactly one (e.g. tables/nonpoly),
-// or a directory of exact JSON tables only (loaded from JSON, slower).
+// --tables is a table file (.sgs for a quad scheme, .sgt for a triangle
+// scheme), a directory holding exactly one (e.g. tables/nonpoly), or a
+// directory of exact quad JSON tables only (loaded from JSON, slower).
 inline std::filesystem::path find_table_file(const std::string& spec) {
   namespace fs = std::filesystem;
   fs::path p = fs::path(spec).lexically_normal();
   if (p.filename().empty()) p = p.parent_path();  // "tables/nonpoly/"; the scheme name is the last component
-  const auto triangle_tables = [&](const fs::path& file) {
-    return std::runtime_error(file.string() +
-                              ": a triangle-scheme table (.sgt, Loop or sqrt(3)); the runtime evaluates quad schemes "
-                              "only so far (triangle meshes are not supported yet)");
-  };
-  if (fs::is_regular_file(p) && p.extension() == ".sgt") throw triangle_tables(p);
   if (fs::is_regular_file(p)) return p;
   if (!fs::is_directory(p)) throw std::runtime_error(spec + ": no such table file or directory");
   fs::path found;
   for (const auto& e : fs::directory_iterator(p))
-    if (e.path().extension() == ".sgs") {
-      if (!found.empty()) throw std::runtime_error(spec + ": holds several .sgs files; name one");
+    if (e.path().extension() == ".sgs" || e.path().extension() == ".sgt") {
+      if (!found.empty()) throw std::runtime_error(spec + ": holds several table files (.sgs, .sgt); name one");
       found = e.path();
     }
   if (found.empty() && fs::is_directory(p / "regular")) return p;  // JSON tables
   if (found.empty())
-    for (const auto& e : fs::directory_iterator(p))
-      if (e.path().extension() == ".sgt") throw triangle_tables(e.path());
-  if (found.empty())
-    throw std::runtime_error(spec + ": no .sgs table file here (make one with: stencilgen --scheme nonpoly --valence 3-8 --n 24 --out tables)");
+    throw std::runtime_error(spec + ": no .sgs or .sgt table file here (make one with: stencilgen --scheme nonpoly "
+                                    "--valence 3-8 --n 24 --out tables, or --scheme loop)");
   return found;
 }
+
+// A triangle-scheme table (Loop, sqrt(3)) rather than a quad one.
+inline bool is_triangle_table(const std::filesystem::path& file) { return file.extension() == ".sgt"; }
 
 struct Fraction {
   long num = 0, den = 1;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mesh.hpp"
+#include "prepared_mesh.hpp"
 #include "quad_topology.hpp"
 #include "surface_table.hpp"
 
@@ -27,13 +28,6 @@ Mesh subdivide_once(const Mesh& mesh, const QuadTopology& topology, const Surfac
 // subdivide_once. Throws MeshError naming the face, edge or vertex.
 Mesh subdivide_polygons(const Mesh& mesh, const SurfaceTables& rules);
 
-struct PreparedMesh {
-  Mesh mesh;
-  int steps = 0;  // subdivision steps applied
-  // Per step: the first child of each face of the mesh before that step (size faces + 1).
-  std::vector<std::vector<std::size_t>> child_offsets;
-  std::vector<int> original_sizes;  // corner count of each original face
-};
 
 // Checks the valences against the table (an error names the vertex and the
 // stencilgen call that would add its valence). A mesh with non-quad faces gets
@@ -45,10 +39,6 @@ PreparedMesh prepare_mesh(const Mesh& mesh, const SurfaceTables& tables, const s
 // Where a parameter of an original face lands after `steps` refinements:
 // the prepared face and the parameter in it. Parameters are grid indices
 // (i/n, j/n); the result is on the grid of the same n, 0 <= i', j' <= n.
-struct FaceParameter {
-  std::size_t face;
-  long i, j;
-};
 FaceParameter locate(const PreparedMesh& prepared, std::size_t original_face, long i, long j, long n);
 
 }  // namespace stencil_runtime

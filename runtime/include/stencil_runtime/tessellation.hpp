@@ -27,9 +27,12 @@ void tessellate_into(const LimitSurface& surface, const std::vector<int>& rates,
 // Rates of the prepared mesh from rates of the original faces: a face refined
 // s times covers 4^s prepared faces of half the size per step, which get
 // ceil(rate / 2^s) (at least 1), rounded up to a rate the tables hold.
-std::vector<int> prepared_rates(const LimitSurface& surface, const std::vector<int>& original_rates);
+std::vector<int> prepared_rates(const PreparedMesh& prepared, const std::vector<int>& original_rates);
+inline std::vector<int> prepared_rates(const LimitSurface& surface, const std::vector<int>& original_rates) {
+  return prepared_rates(surface.prepared(), original_rates);
+}
 
-// The smallest rate in the tables that is >= wanted (the largest if none is).
-int table_rate_at_least(const SurfaceTables& tables, int wanted);
+// The smallest of the tables' rates (ascending) that is >= wanted (the largest if none is).
+int table_rate_at_least(const std::vector<int>& table_rates, int wanted);
 
 }  // namespace stencil_runtime

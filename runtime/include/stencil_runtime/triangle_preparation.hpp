@@ -1,0 +1,35 @@
+#pragma once
+// Brings a closed triangle mesh into the form the triangle tables evaluate:
+// every face with at most one extraordinary vertex, and every face's layout
+// reachable by chart walks over regular vertices. Where that fails the whole
+// mesh is refined by the scheme's own step (rules from the table file), which
+// leaves the limit surface unchanged.
+#include <string>
+
+#include "prepared_mesh.hpp"
+#include "triangle_table.hpp"
+#include "triangle_topology.hpp"
+
+namespace stencil_runtime {
+
+// One Loop step. Children of face f are faces 4f + c: child c < 3 has corners
+// (vertex point of corner c, edge point of edge c -> c+1, edge point of edge
+// c-1 -> c), so it covers f's corner c, its u axis along f's edge c -> c+1;
+// child 3 is the middle (edge points of edges 0, 1, 2). Throws MeshError when a
+// vertex's valence has no rule in the table.
+Mesh loop_subdivide_once(const Mesh& mesh, const TriangleTopology& topology, const TriangleTables& rules);
+
+// Checks that the mesh is a closed manifold of triangles and its valences are
+// in the tables (an error names the vertex and the stencilgen call that would
+// add its valence), then refines until every face's patch can be gathered (at
+// most 3 steps; Loop needs 1 at most). sqrt(3) tables are refused by name (see
+// docs/runtime.md: their patches next to an extraordinary vertex need tables
+// that stencilgen does not write yet).
+PreparedMesh prepare_triangle_mesh(const Mesh& mesh, const TriangleTables& tables, const std::string& scheme_name);
+
+// Where parameter (i/n, j/n) of an original face (u along corner 0 -> 1, v
+// along 0 -> 2, i + j <= n) lands: the prepared face and its grid indices on
+// the same n.
+FaceParameter locate_triangle(const PreparedMesh& prepared, std::size_t original_face, long i, long j, long n);
+
+}  // namespace stencil_runtime

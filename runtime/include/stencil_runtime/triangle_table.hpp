@@ -1,0 +1,79 @@
+#pragma once
+// Loads the compact binary triangle tables (*.sgt) written by stencilgen for a
+// triangle scheme (Loop or sqrt(3); format in docs/table-format.md). For each
+// stored valence (6 is the regular patch) it gives the stencils of the patch
+// triangle (EV, e_0, e_1) at the grid nodes (i/n, j/n), i + j <= n, and at the
+// "up" and "down" centres of the grid's small triangles, for every stored rate
+// n. A stencil's weights go with the valence's layout: control point h is the
+// sector-chart position layout(v)[h] = [sector, a, b] around the EV. Doubles only.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "curve_table.hpp"
+
+namespace stencil_runtime {
+
+enum class TriangleRefinement { Loop = 0, Sqrt3 = 1 };
+
+struct ChartPoint {
+  int sector = 0;
+  int a = 0, b = 0;  // a (1,0) + b (1,1) in sector `sector`'s frame; [0,0,0] is the EV
+};
+
+class TriangleTables {
+ public:
+  // Throws LoadError naming the file (missing, truncated, bad magic, version,
+  // checksum, inconsistent contents, or a scheme hash other than a nonzero
+  // `expected_hash`).
+  static TriangleTables load(const std::string& path, std::uint64_t expected_hash = 0);
+
+  std::uint64_t scheme_hash() const { return hash_; }
+  TriangleRefinement refinement() const { return refinement_; }
+  // Loop's edge rule (3/8 on the ends, 1/8 on the opposite corners); 0 for sqrt(3).
+  double edge_end() const { return edge_end_; }
+  double edge_opposite() const { return edge_opposite_; }
+  // The vertex rule's weight per neighbour at valence v (the old vertex keeps
+  // 1 - v * weight); false when the table does not hold valence v.
+  bool neighbour_weight(int valence, double& weight) const;
+
+  const std::vector<int>& rates() const { return rates_; }
+  bool has_rate(int n) const { return rate_slot(n) >= 0; }
+  std::vector<int> valences() const;  // 6 included
+  bool has_valence(int v) const { return find(v) != nullptr; }
+  bool exact(int valence) const { return data(valence).exact; }
+  double residual(int valence) const { return data(valence).residual; }
+  const std::vector<ChartPoint>& layout(int valence) const { return data(valence).layout; }
+
+  // Weights over layout(valence) at node (i/n, j/n), up centre
+  // ((3i+1)/(3n), (3j+1)/(3n)) (i + j <= n-1) or down centre
+  // ((3i+2)/(3n), (3j+2)/(3n)) (i + j <= n-2). Throws std::out_of_range for a
+  // valence, rate or index the table does not hold.
+  const double* node_weights(int valence, int n, int i, int j) const;
+  const double* up_weights(int valence, int n, int i, int j) const;
+  const double* down_weights(int valence, int n, int i, int j) const;
+
+ private:
+  struct Valence {
+    int valence = 0;
+    bool exact = true;
+    double residual = 0, neighbour = 0;
+    std::vector<ChartPoint> layout;
+    std::vector<double> weights;                // stencil_count * layout.size()
+    std::vector<std::vector<std::uint32_t>> index;  // per rate slot: nodes, ups, downs
+  };
+  enum Kind { Node = 0, Up = 1, Down = 2 };
+  const Valence* find(int v) const;
+  const Valence& data(int v) const;  // throws std::out_of_range
+  int rate_slot(int n) const;
+  const double* weights(int valence, int n, int i, int j, Kind kind) const;
+
+  std::uint64_t hash_ = 0;
+  TriangleRefinement refinement_ = TriangleRefinement::Loop;
+  double edge_end_ = 0, edge_opposite_ = 0;
+  std::vector<int> rates_;
+  std::vector<int> slot_of_rate_;
+  std::vector<Valence> valences_;
+};
+
+}  // namespace stencil_runtime

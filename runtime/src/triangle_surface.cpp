@@ -1,0 +1,66 @@
+#include "stencil_runtime/triangle_surface.hpp"
+
+#include <stdexcept>
+
+namespace stencil_runtime {
+
+TriangleSurface::TriangleSurface(const TriangleTables& tables, const Mesh& mesh, const std::string& scheme_name)
+    : tables_(tables),
+      original_faces_(mesh.face_count()),
+      prepared_(prepare_triangle_mesh(mesh, tables, scheme_name)),
+      topology_(prepared_.mesh) {
+  patches_.reserve(topology_.faces());
+  for (std::size_t f = 0; f < topology_.faces(); ++f) patches_.push_back(gather_triangle_patch(topology_, f, tables));
+}
+
+const double* TriangleSurface::stencil(std::size_t face, long a, long b, long n) const {
+  const TrianglePatch& p = patches_.at(face);
+  long pa = 0, pb = 0;
+  p.to_patch(a, b, 3 * n, pa, pb);
+  const long r = pa % 3;
+  if (pa < 0 || pb < 0 || pb % 3 != r || pa + pb > 3 * n)
+    throw std::out_of_range("a stencil point must be a node or the centre of a small triangle of the face");
+  const int i = static_cast<int>(pa / 3), j = static_cast<int>(pb / 3), rate = static_cast<int>(n);
+  if (r == 0) return tables_.node_weights(p.valence, rate, i, j);
+  if (r == 1) return tables_.up_weights(p.valence, rate, i, j);
+  return tables_.down_weights(p.valence, rate, i, j);
+}
+
+void TriangleSurface::evaluate_centres(std::size_t face, int n, std::array<float, 3>* out) const {
+  const TrianglePatch& p = patches_[face];
+  const auto& pos = prepared_.mesh.positions;
+  const std::size_t m = p.points.size();
+  thread_local std::vector<std::array<double, 3>> local;
+  local.resize(m);
+  for (std::size_t h = 0; h < m; ++h) local[h] = pos[static_cast<std::size_t>(p.points[h])];
+  auto put = [&](long a, long b) {
+    const double* w = stencil(face, a, b, n);
+    double x = 0, y = 0, z = 0;
+    for (std::size_t h = 0; h < m; ++h) x += w[h] * local[h][0], y += w[h] * local[h][1], z += w[h] * local[h][2];
+    *out++ = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+  };
+  for (long j = 0; j < n; ++j)
+    for (long i = 0; i + j <= n - 1; ++i) put(3 * i + 1, 3 * j + 1);
+  for (long j = 0; j + 1 < n; ++j)
+    for (long i = 0; i + j <= n - 2; ++i) put(3 * i + 2, 3 * j + 2);
+}
+
+Point TriangleSurface::evaluate(std::size_t face, long i, long j, long n) const {
+  if (face >= original_faces_)
+    throw std::out_of_range("face " + std::to_string(face) + " does not exist (the mesh has " +
+                            std::to_string(original_faces_) + " faces)");
+  if (n < 1 || i < 0 || j < 0 || i + j > n) throw std::out_of_range("parameter outside the triangle (u, v >= 0, u + v <= 1)");
+  if (!tables_.has_rate(static_cast<int>(n)))
+    throw std::out_of_range("rate " + std::to_string(n) + " is not in the tables");
+  const FaceParameter at = locate_triangle(prepared_, face, i, j, n);
+  const TrianglePatch& p = patches_[at.face];
+  const double* w = stencil(at.face, 3 * at.i, 3 * at.j, n);
+  Point out{0, 0, 0};
+  for (std::size_t h = 0; h < p.points.size(); ++h) {
+    const auto& q = prepared_.mesh.positions[static_cast<std::size_t>(p.points[h])];
+    for (int k = 0; k < 3; ++k) out[k] += w[h] * q[k];
+  }
+  return out;
+}
+
+}  // namespace stencil_runtime

@@ -1,0 +1,151 @@
+#include "stencil_runtime/triangle_tessellation.hpp"
+
+#include <stdexcept>
+
+#include "tessellation_parts.hpp"
+
+namespace stencil_runtime {
+
+namespace {
+
+// The row of centres along a face's edge k (corner k -> k+1) at rate n, in the
+// edge's direction: U(t), t = 0..n-1, the up centres of the small triangles
+// on the edge, and D(t), t = 0..n-2, the down centre between U(t) and U(t+1)
+// (its corner is the edge's grid node t+1). Indices among the face's centres.
+inline int row_up(int k, int t, int n) {
+  switch (k) {
+    case 0: return up_centre_index(t, 0, n);
+    case 1: return up_centre_index(n - 1 - t, t, n);
+    default: return up_centre_index(0, n - 1 - t, n);
+  }
+}
+inline int row_down(int k, int t, int n) {
+  switch (k) {
+    case 0: return down_centre_index(t, 0, n);
+    case 1: return down_centre_index(n - 2 - t, t, n);
+    default: return down_centre_index(0, n - 2 - t, n);
+  }
+}
+
+}  // namespace
+
+PolygonSoup tessellate(const TriangleSurface& surface, const std::vector<int>& rates, const TessellationOptions& options) {
+  PolygonSoup soup;
+  tessellate_into(surface, rates, soup, options);
+  return soup;
+}
+
+void tessellate_into(const TriangleSurface& surface, const std::vector<int>& rates, PolygonSoup& soup,
+                     const TessellationOptions& options) {
+  const TriangleTopology& topo = surface.topology();
+  const std::size_t nf = topo.faces(), nh = 3 * nf, nv = topo.vertices();
+  if (rates.size() != nf) throw std::invalid_argument("need one rate per prepared face");
+  for (std::size_t f = 0; f < nf; ++f)
+    if (!surface.tables().has_rate(rates[f]))
+      throw std::out_of_range("face " + std::to_string(f) + ": rate " + std::to_string(rates[f]) + " is not in the tables");
+
+  // Counts and offsets (serial, O(faces)). Per face: n^2 points, two quads per
+  // interior node ((n-1)(n-2)/2 of them), one triangle per boundary node
+  // (3(n-1)). Per edge, owned by its smaller half-edge: the zipper. Per
+  // vertex, owned by its first outgoing half-edge: the polygon.
+  std::vector<std::size_t> point_offset(nf + 1, 0), face_quads(nf + 1, 0), face_triangles(nf + 1, 0);
+  std::vector<std::size_t> quad_offset(nh + nv + 1, 0), tri_offset(nh + nv + 1, 0);
+  std::vector<std::uint32_t> vertex_owner(nv, UINT32_MAX);
+  for (std::uint32_t h = 0; h < nh; ++h) {
+    const int v = topo.vertex(TriangleTopology::face_of(h), TriangleTopology::corner_of(h));
+    if (vertex_owner[static_cast<std::size_t>(v)] == UINT32_MAX) vertex_owner[static_cast<std::size_t>(v)] = h;
+  }
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::size_t n = static_cast<std::size_t>(rates[f]);
+    point_offset[f + 1] = point_offset[f] + n * n;
+    face_quads[f + 1] = face_quads[f] + (n - 1) * (n >= 2 ? n - 2 : 0);  // 2 per interior node
+    face_triangles[f + 1] = face_triangles[f] + 3 * (n - 1);
+  }
+  for (std::uint32_t h = 0; h < nh; ++h) {
+    std::size_t q = 0, t = 0;
+    const std::uint32_t o = topo.twin(h);
+    if (h < o) {
+      const std::size_t na = static_cast<std::size_t>(rates[TriangleTopology::face_of(h)]);
+      const std::size_t nb = static_cast<std::size_t>(rates[TriangleTopology::face_of(o)]);
+      if (na == nb) q = na - 1;
+      else t = na + nb - 2;
+    }
+    quad_offset[h + 1] = quad_offset[h] + q;
+    tri_offset[h + 1] = tri_offset[h] + t;
+  }
+  for (std::size_t v = 0; v < nv; ++v) {
+    const int k = topo.valence(static_cast<int>(v));
+    quad_offset[nh + v + 1] = quad_offset[nh + v] + (k == 4 ? 1 : 0);
+    tri_offset[nh + v + 1] = tri_offset[nh + v] + (k == 4 ? 0 : static_cast<std::size_t>(k - 2));
+  }
+  const std::size_t inner_quads = face_quads[nf], inner_triangles = face_triangles[nf];
+  soup.positions.resize(point_offset[nf]);
+  soup.quads.resize(inner_quads + quad_offset[nh + nv]);
+  soup.triangles.resize(inner_triangles + tri_offset[nh + nv]);
+
+  const detail::RangeRunner for_range(options.threads, point_offset[nf]);
+  // Faces: the centres, the hexagons round interior nodes, the triangles round boundary nodes.
+  for_range(nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f != end; ++f) {
+      const int n = rates[f];
+      surface.evaluate_centres(f, n, soup.positions.data() + point_offset[f]);
+      const int base = static_cast<int>(point_offset[f]);
+      auto up = [&](int i, int j) { return base + up_centre_index(i, j, n); };
+      auto down = [&](int i, int j) { return base + down_centre_index(i, j, n); };
+      std::array<int, 4>* q = soup.quads.data() + face_quads[f];
+      for (int j = 1; j < n; ++j)
+        for (int i = 1; i + j <= n - 1; ++i) {
+          // Counter-clockwise round node (i, j).
+          const int h[6] = {up(i, j), down(i - 1, j), up(i - 1, j), down(i - 1, j - 1), up(i, j - 1), down(i, j - 1)};
+          *q++ = {h[0], h[1], h[2], h[3]};
+          *q++ = {h[3], h[4], h[5], h[0]};
+        }
+      std::array<int, 3>* t = soup.triangles.data() + face_triangles[f];
+      for (int k = 0; k < 3; ++k)
+        for (int s = 0; s + 1 < n; ++s) *t++ = {base + row_up(k, s, n), base + row_up(k, s + 1, n), base + row_down(k, s, n)};
+    }
+  });
+  // Edges: the zipper between the two faces' rows of up centres.
+  for_range(nh, [&](std::size_t begin, std::size_t end) {
+    for (std::uint32_t h = static_cast<std::uint32_t>(begin); h != end; ++h) {
+      const std::uint32_t o = topo.twin(h);
+      if (o < h) continue;
+      const std::size_t f = TriangleTopology::face_of(h), g = TriangleTopology::face_of(o);
+      const int kf = TriangleTopology::corner_of(h), kg = TriangleTopology::corner_of(o);
+      const int na = rates[f], nb = rates[g];
+      const int fa = static_cast<int>(point_offset[f]), gb = static_cast<int>(point_offset[g]);
+      auto A = [&](int t) { return fa + row_up(kf, t, na); };
+      auto B = [&](int t) { return gb + row_up(kg, nb - 1 - t, nb); };  // g's row, in f's direction
+      std::array<int, 4>* q = soup.quads.data() + inner_quads + quad_offset[h];
+      std::array<int, 3>* t = soup.triangles.data() + inner_triangles + tri_offset[h];
+      detail::zipper(
+          na, nb, [&](int a, int b) { *q++ = {B(b), B(b + 1), A(a + 1), A(a)}; },
+          [&](int a, int b, bool advance_a) {
+            if (advance_a) *t++ = {B(b), A(a + 1), A(a)};
+            else *t++ = {B(b), B(b + 1), A(a)};
+          });
+    }
+  });
+  // Vertices: the polygon of the corner centres round each mesh vertex.
+  for_range(nv, [&](std::size_t begin, std::size_t end) {
+    int ring[64];
+    for (std::size_t v = begin; v != end; ++v) {
+      const std::uint32_t h = vertex_owner[v];
+      int k = 0;
+      std::uint32_t e = h;
+      do {
+        const std::size_t f = TriangleTopology::face_of(e);
+        ring[k++] = static_cast<int>(point_offset[f]) + row_up(TriangleTopology::corner_of(e), 0, rates[f]);
+        e = topo.turn_ccw(e);
+      } while (e != h && k < 64);
+      if (k == 4) {
+        soup.quads[inner_quads + quad_offset[nh + v]] = {ring[0], ring[1], ring[2], ring[3]};
+      } else {
+        std::array<int, 3>* t = soup.triangles.data() + inner_triangles + tri_offset[nh + v];
+        for (int i = 1; i + 1 < k; ++i) *t++ = {ring[0], ring[i], ring[i + 1]};
+      }
+    }
+  });
+}
+
+}  // namespace stencil_runtime

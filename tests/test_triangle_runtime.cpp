@@ -1,0 +1,231 @@
+// The runtime on triangle meshes against independent references: OpenSubdiv's
+// Loop limit surface on the bundled triangle meshes (through the runtime's own
+// topology, Loop isolation step, chart walks and rotations), the tessellation's
+// centre points against OpenSubdiv too, watertightness by an independent edge
+// count, and the command-line tools with .sgt tables.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <set>
+
+#include "bfr_reference.hpp"
+#include "cli.hpp"
+#include "soup_checks.hpp"
+#include "stencil_runtime/triangle_tessellation.hpp"
+
+using namespace stencil_runtime;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
+const char* kTriangleMeshes[] = {"icosahedron", "tri-torus", "tri-mix"};
+
+// Loop tables as the quick start makes them, once per test process.
+fs::path loop_tables() {
+  static fs::path made;
+  if (made.empty()) {
+    const fs::path dir = scratch_dir("triangle-runtime-loop");
+    const CliResult r = run_stencilgen("--scheme loop --valence 3-8 --n 24 --out " + dir.string() + " -q");
+    if (r.status != 0) throw std::runtime_error(r.output);
+    made = dir / "loop" / "loop.sgt";
+  }
+  return made;
+}
+
+Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
+
+double extent(const Mesh& m) {
+  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const auto& p : m.positions)
+    for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], p[c]), hi[c] = std::max(hi[c], p[c]);
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+double distance(const Point& a, const Point& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+bfr_reference::BfrLimit loop_reference(const Mesh& mesh) {
+  return {mesh.positions, mesh.face_sizes, mesh.face_vertices, OpenSubdiv::Sdc::SCHEME_LOOP};
+}
+
+}  // namespace
+
+TEST_CASE("runtime Loop evaluation equals OpenSubdiv on every bundled triangle mesh", "[runtime][triangle][opensubdiv]") {
+  const TriangleTables tables = TriangleTables::load(loop_tables().string());
+  for (const char* name : kTriangleMeshes) {
+    const Mesh mesh = bundled(name);
+    const TriangleSurface surface(tables, mesh, "loop");
+    CHECK(surface.prepared().steps == 1);  // every bundled mesh has faces with two extraordinary corners
+    auto reference = loop_reference(mesh);
+    const double size = extent(mesh);
+    double worst = 0;
+    for (std::size_t f = 0; f < mesh.face_count(); ++f)
+      for (long n : {1L, 2L, 3L, 4L, 5L, 6L, 7L, 8L, 24L}) {
+        if (n == 24 && f % 5 != 0) continue;
+        for (long j = 0; j <= n; ++j)
+          for (long i = 0; i + j <= n; ++i) {
+            const Point ours = surface.evaluate(f, i, j, n);
+            const auto ref = reference.evaluate(static_cast<int>(f), double(i) / n, double(j) / n);
+            const double err = distance(ours, ref) / size;
+            worst = std::max(worst, err);
+            INFO(name << " face " << f << " at (" << i << "/" << n << ", " << j << "/" << n << "): " << err);
+            REQUIRE(err < 1e-12);
+          }
+      }
+    INFO(name << ": largest difference " << worst);
+    SUCCEED();
+  }
+}
+
+TEST_CASE("triangle tessellation points equal OpenSubdiv at the up and down centres", "[runtime][triangle][opensubdiv]") {
+  const TriangleTables tables = TriangleTables::load(loop_tables().string());
+  for (const char* name : kTriangleMeshes) {
+    // The prepared mesh itself, so that each face's centres are Bfr parameters of that face.
+    const Mesh prepared = TriangleSurface(tables, bundled(name), "loop").prepared().mesh;
+    const TriangleSurface surface(tables, prepared, "loop");
+    REQUIRE(surface.prepared().steps == 0);
+    auto reference = loop_reference(prepared);
+    const double size = extent(prepared);
+    for (std::size_t f = 0; f < prepared.face_count(); f += 3)
+      for (int n : {1, 2, 3, 5, 24}) {
+        std::vector<std::array<float, 3>> centres(static_cast<std::size_t>(n * n));
+        surface.evaluate_centres(f, n, centres.data());
+        for (int j = 0; j < n; ++j)
+          for (int i = 0; i + j < n; ++i)
+            for (int kind = 1; kind <= 2; ++kind) {
+              if (kind == 2 && i + j > n - 2) continue;
+              const int k = kind == 1 ? up_centre_index(i, j, n) : down_centre_index(i, j, n);
+              const auto ref = reference.evaluate(static_cast<int>(f), (3.0 * i + kind) / (3 * n), (3.0 * j + kind) / (3 * n));
+              const auto& c = centres[static_cast<std::size_t>(k)];
+              INFO(name << " face " << f << " n " << n << (kind == 1 ? " up " : " down ") << i << "," << j);
+              REQUIRE(distance({c[0], c[1], c[2]}, ref) / size < 1e-6);
+            }
+      }
+  }
+}
+
+TEST_CASE("triangle tessellations are closed oriented 2-manifolds for random rate mixes 1..24", "[runtime][triangle][tessellation]") {
+  const TriangleTables tables = TriangleTables::load(loop_tables().string());
+  std::mt19937 rng(20261122u);
+  for (const char* name : kTriangleMeshes) {
+    const Mesh mesh = bundled(name);
+    const TriangleSurface surface(tables, mesh, "loop");
+    for (int trial = 0; trial < 5; ++trial) {
+      std::vector<int> rates(mesh.face_count());
+      for (int& r : rates) r = trial == 0 ? 1 : std::uniform_int_distribution<int>(1, 24)(rng);
+      std::vector<int> prepared = prepared_rates(surface, rates);
+      for (int& r : prepared) r = table_rate_at_least(tables.rates(), r);
+      const PolygonSoup soup = tessellate(surface, prepared);
+      const auto directed = directed_edges(soup);
+      std::set<int> used;
+      for (const auto& [e, count] : directed) {
+        INFO(name << " trial " << trial << " edge " << e.first << "->" << e.second);
+        REQUIRE(count == 1);
+        REQUIRE(directed.count({e.second, e.first}) == 1);
+        REQUIRE(e.first != e.second);
+        used.insert(e.first);
+      }
+      REQUIRE(used.size() == soup.positions.size());
+      const long chi = static_cast<long>(soup.positions.size()) - static_cast<long>(directed.size() / 2) +
+                       static_cast<long>(soup.quads.size() + soup.triangles.size());
+      REQUIRE(chi == euler_characteristic(mesh));
+      std::set<std::array<float, 3>> distinct(soup.positions.begin(), soup.positions.end());
+      REQUIRE(distinct.size() == soup.positions.size());
+    }
+  }
+}
+
+TEST_CASE("stencileval and stenciltess take triangle meshes with .sgt tables", "[runtime][triangle][tessellation]") {
+  const fs::path dir = scratch_dir("triangle-tools");
+  const std::string tables = loop_tables().parent_path().string();  // the directory stencilgen wrote
+  const std::string torus = (kMeshes / "tri-torus.obj").string();
+  const Mesh mesh = bundled("tri-torus");
+  auto reference = loop_reference(mesh);
+  {
+    std::ofstream q(dir / "q.txt");
+    q << "0 0 0\n5 1/3 1/3\n17 1/2 1/4\n191 0 1\n100 5/24 7/12\n";
+  }
+  const CliResult r = run_stencileval("--tables " + tables + " --mesh " + torus + " --batch " + (dir / "q.txt").string());
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  std::istringstream lines(r.output);
+  const double queries[][3] = {{0, 0, 0}, {5, 1.0 / 3, 1.0 / 3}, {17, 0.5, 0.25}, {191, 0, 1}, {100, 5.0 / 24, 7.0 / 12}};
+  for (const auto& q : queries) {
+    Point p{};
+    REQUIRE(static_cast<bool>(lines >> p[0] >> p[1] >> p[2]));
+    REQUIRE(distance(p, reference.evaluate(static_cast<int>(q[0]), q[1], q[2])) / extent(mesh) < 1e-12);
+  }
+  {
+    std::ofstream rates(dir / "rates.txt");
+    for (std::size_t f = 0; f < mesh.face_count(); ++f) rates << 1 + (f * 7) % 24 << "\n";
+  }
+  for (const std::string& mode : {std::string("--rate 5"), "--rates " + (dir / "rates.txt").string(),
+                                  std::string("--tolerance 0.002"), std::string("--camera 0,-6,3,0,0,0 --pixels 5")}) {
+    const fs::path out = dir / "t.obj";
+    const CliResult t = run_stenciltess("--tables " + tables + " --mesh " + torus + " " + mode + " --out " + out.string());
+    INFO(mode << "\n" << t.output);
+    REQUIRE(t.status == 0);
+    const Mesh m = read_obj(out.string());
+    PolygonSoup soup;
+    std::size_t off = 0;
+    for (int k : m.face_sizes) {
+      const int* v = m.face_vertices.data() + off;
+      if (k == 3) soup.triangles.push_back({v[0], v[1], v[2]});
+      else soup.quads.push_back({v[0], v[1], v[2], v[3]});
+      off += static_cast<std::size_t>(k);
+    }
+    const auto directed = directed_edges(soup);
+    for (const auto& [e, count] : directed) REQUIRE((count == 1 && directed.count({e.second, e.first}) == 1));
+    REQUIRE(static_cast<long>(m.vertex_count()) - static_cast<long>(directed.size() / 2) + static_cast<long>(m.face_count()) == 0);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("triangle meshes and tables: bad input gets clear errors, and nothing is written", "[runtime][triangle][errors]") {
+  const fs::path dir = scratch_dir("triangle-errors");
+  const std::string loop = loop_tables().string();
+  auto eval = [&](const std::string& tables, const std::string& mesh, const std::string& extra = "--face 0 --uv 1/3,1/3") {
+    return run_stencileval("--tables " + tables + " --mesh " + mesh + " " + extra);
+  };
+  auto expect = [](const CliResult& r, const std::string& text) {
+    INFO(r.output);
+    REQUIRE(r.status != 0);
+    REQUIRE(r.output.find(text) != std::string::npos);
+  };
+  expect(eval(loop, (kMeshes / "cube.obj").string()), "face 0 has 4 vertices; triangle schemes need a mesh of triangles");
+  expect(eval(loop, (kMeshes / "icosahedron.obj").string(), "--face 0 --uv 2/3,1/2"),
+         "lies outside the triangle: u + v must be at most 1");
+  expect(eval(loop, (kMeshes / "icosahedron.obj").string(), "--face 20 --uv 0,0"), "face 20 does not exist");
+  expect(eval(loop, (kMeshes / "icosahedron.obj").string(), "--face 0 --uv 1/25,0"), "needs rate 25");
+  // A valence the tables lack, named with the call that adds it.
+  REQUIRE(run_stencilgen("-q --scheme loop --valence 3-5 --n 2 --out " + dir.string()).status == 0);
+  expect(eval((dir / "loop").string(), (kMeshes / "tri-mix.obj").string()),
+         "has valence 8, which the tables do not cover; generate it with: stencilgen --scheme loop --valence 8");
+  // sqrt(3) tables are refused by name.
+  REQUIRE(run_stencilgen("-q --scheme sqrt3 --valence 3 --n 3 --out " + dir.string()).status == 0);
+  expect(eval((dir / "sqrt3").string(), (kMeshes / "icosahedron.obj").string()),
+         "sqrt(3) tables: the runtime evaluates Loop triangle meshes only so far");
+  // A corrupt table file, and stenciltess leaves no output behind.
+  {
+    std::string bytes;
+    {
+      std::ifstream in(loop, std::ios::binary);
+      bytes.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    bytes[bytes.size() / 2] ^= 0x5a;
+    std::ofstream(dir / "bad.sgt", std::ios::binary) << bytes;
+  }
+  expect(eval((dir / "bad.sgt").string(), (kMeshes / "icosahedron.obj").string()), "bad.sgt: checksum mismatch");
+  const fs::path out = dir / "never.ply";
+  expect(run_stenciltess("--tables " + (dir / "bad.sgt").string() + " --mesh " + (kMeshes / "icosahedron.obj").string() +
+                         " --rate 3 --out " + out.string()),
+         "checksum mismatch");
+  expect(run_stenciltess("--tables " + loop + " --mesh " + (kMeshes / "cube.obj").string() + " --rate 3 --out " + out.string()),
+         "triangle schemes need a mesh of triangles");
+  REQUIRE(!fs::exists(out));
+  fs::remove_all(dir);
+}
