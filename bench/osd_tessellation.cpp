@@ -74,7 +74,7 @@ Far::TopologyRefiner* make_refiner(const Input& mesh) {
   desc.vertIndicesPerFace = verts.data();
 
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  Far::TopologyRefiner* refiner = Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc));
+  Far::TopologyRefiner* refiner = Factory::Create(desc, Factory::Options(mesh.loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, sdc));
   if (!refiner) throw std::runtime_error("osd_bench: OpenSubdiv rejected the mesh topology");
   return refiner;
 }

@@ -21,6 +21,7 @@ struct Input {
   const std::vector<std::array<double, 3>>* positions;
   const std::vector<int>* face_sizes;
   const std::vector<int>* face_vertices;
+  bool loop = false;  // Loop (triangle meshes) instead of Catmull-Clark
 };
 
 struct Result {
@@ -39,7 +40,7 @@ enum class FactoryCache {
 class BfrTessellator {
  public:
   // Setup, not timed: converts positions to float, builds the
-  // Far::TopologyRefiner (SCHEME_CATMARK, VTX_BOUNDARY_EDGE_ONLY) and one
+  // Far::TopologyRefiner (SCHEME_CATMARK or SCHEME_LOOP, VTX_BOUNDARY_EDGE_ONLY) and one
   // Bfr::RefinerSurfaceFactory. Throws std::invalid_argument on an
   // inconsistent mesh and std::runtime_error if OpenSubdiv rejects it.
   explicit BfrTessellator(const Input& mesh, FactoryCache cache = FactoryCache::ThreadSafe);

@@ -4,8 +4,10 @@
 // 4, 8, 16, 24 and a random adaptive mix 1..24, with 1 and 2 threads. For
 // Catmull-Clark, OpenSubdiv 3.5's Bfr tessellates the same meshes at the same
 // rates in the same run (positions only, float, preallocated arrays), and the
-// ratio is printed. Also: table load time and memory.
-// Usage: bench_tessellation [NONPOLY.sgs] [CATMULL-CLARK.sgs] [MESH-NAME-FILTER]
+// ratio is printed. Also: table load time and memory. Triangle meshes: Loop
+// from its .sgt tables on the bundled triangle meshes and the triangulated torus
+// refined to >= 100k faces, against Bfr's Loop tessellation likewise.
+// Usage: bench_tessellation [NONPOLY.sgs] [CATMULL-CLARK.sgs] [MESH-NAME-FILTER] [LOOP.sgt]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -17,6 +19,7 @@
 
 #include "osd_tessellation.hpp"
 #include "stencil_runtime/tessellation.hpp"
+#include "stencil_runtime/triangle_tessellation.hpp"
 
 using namespace stencil_runtime;
 
@@ -41,6 +44,11 @@ Mesh refined(Mesh mesh, const SurfaceTables& rules, std::size_t min_faces) {
   return mesh;
 }
 
+Mesh loop_refined(Mesh mesh, const TriangleTables& rules, std::size_t min_faces) {
+  while (mesh.face_count() < min_faces) mesh = loop_subdivide_once(mesh, TriangleTopology(mesh), rules);
+  return mesh;
+}
+
 std::vector<int> rate_set(std::size_t faces, int rate, std::mt19937& rng) {
   std::vector<int> r(faces, rate);
   if (rate == 0)
@@ -54,6 +62,50 @@ double median3(F f) {
   double t[3] = {f(), f(), f()};
   std::sort(t, t + 3);
   return t[1];
+}
+
+template <class Surface>
+void run_rows(const char* scheme, const NamedMesh& m, const Surface& surface, const std::vector<int>& table_rates,
+          bool with_osd) {
+  const bool loop = std::string(scheme) == "loop";
+  std::unique_ptr<osd_bench::BfrTessellator> osd;
+  if (with_osd) osd = std::make_unique<osd_bench::BfrTessellator>(
+      osd_bench::Input{&m.mesh.positions, &m.mesh.face_sizes, &m.mesh.face_vertices, loop});
+  for (int rate : {4, 8, 16, 24, 0}) {
+    std::mt19937 rng(7);
+    const std::vector<int> rates = rate_set(m.mesh.face_count(), rate, rng);
+    std::vector<int> prepared = prepared_rates(surface, rates);
+    for (int& r : prepared) r = table_rate_at_least(table_rates, r);
+    for (int threads : {1, 2}) {
+      std::size_t triangles = 0;
+      PolygonSoup soup;  // reused across runs, as OpenSubdiv's side reuses preallocated arrays
+      tessellate_into(surface, prepared, soup, {threads});
+      const double ours = median3([&] {
+        const auto s = Clock::now();
+        tessellate_into(surface, prepared, soup, {threads});
+        const double secs = std::chrono::duration<double>(Clock::now() - s).count();
+        triangles = soup.triangle_count();
+        return secs;
+      });
+      const double ours_rate = triangles / ours / 1e6;
+      if (with_osd) {
+        std::size_t osd_triangles = 0;
+        const double theirs = median3([&] {
+          const osd_bench::Result r = osd->run(rates, threads);
+          osd_triangles = r.triangles;
+          return r.seconds;
+        });
+        const double osd_rate = osd_triangles / theirs / 1e6;
+        std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | %.1f | %.2f |\n", scheme, m.name.c_str(),
+                    m.mesh.face_count(), rate ? std::to_string(rate).c_str() : "mix 1..24", threads, triangles,
+                    ours_rate, osd_rate, ours_rate / osd_rate);
+      } else {
+        std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | | |\n", scheme, m.name.c_str(), m.mesh.face_count(),
+                    rate ? std::to_string(rate).c_str() : "mix 1..24", threads, triangles, ours_rate);
+      }
+      std::fflush(stdout);
+    }
+  }
 }
 
 }  // namespace
@@ -82,47 +134,21 @@ int main(int argc, char** argv) {
     meshes.push_back({"chess-piece, refined", refined(read_obj(mesh_dir + "chess-piece.obj"), tables, 100000)});
     for (const NamedMesh& m : meshes) {
       if (m.name.find(only) == std::string::npos) continue;
-      const LimitSurface surface(tables, m.mesh, scheme);
-      const bool with_osd = std::string(scheme) == "catmull-clark";
-      std::unique_ptr<osd_bench::BfrTessellator> osd;
-      if (with_osd) osd = std::make_unique<osd_bench::BfrTessellator>(
-          osd_bench::Input{&m.mesh.positions, &m.mesh.face_sizes, &m.mesh.face_vertices});
-      for (int rate : {4, 8, 16, 24, 0}) {
-        std::mt19937 rng(7);
-        const std::vector<int> rates = rate_set(m.mesh.face_count(), rate, rng);
-        std::vector<int> prepared = prepared_rates(surface, rates);
-        for (int& r : prepared) r = table_rate_at_least(tables.rates(), r);
-        for (int threads : {1, 2}) {
-          std::size_t triangles = 0;
-          PolygonSoup soup;  // reused across runs, as OpenSubdiv's side reuses preallocated arrays
-          tessellate_into(surface, prepared, soup, {threads});
-          const double ours = median3([&] {
-            const auto s = Clock::now();
-            tessellate_into(surface, prepared, soup, {threads});
-            const double secs = std::chrono::duration<double>(Clock::now() - s).count();
-            triangles = soup.triangle_count();
-            return secs;
-          });
-          const double ours_rate = triangles / ours / 1e6;
-          if (with_osd) {
-            std::size_t osd_triangles = 0;
-            const double theirs = median3([&] {
-              const osd_bench::Result r = osd->run(rates, threads);
-              osd_triangles = r.triangles;
-              return r.seconds;
-            });
-            const double osd_rate = osd_triangles / theirs / 1e6;
-            std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | %.1f | %.2f |\n", scheme, m.name.c_str(),
-                        m.mesh.face_count(), rate ? std::to_string(rate).c_str() : "mix 1..24", threads, triangles,
-                        ours_rate, osd_rate, ours_rate / osd_rate);
-          } else {
-            std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | | |\n", scheme, m.name.c_str(), m.mesh.face_count(),
-                        rate ? std::to_string(rate).c_str() : "mix 1..24", threads, triangles, ours_rate);
-          }
-          std::fflush(stdout);
-        }
-      }
+      run_rows(scheme, m, LimitSurface(tables, m.mesh, scheme), tables.rates(), std::string(scheme) == "catmull-clark");
     }
+  }
+  const std::string loop_path = argc > 4 ? argv[4] : "tables/loop/loop.sgt";
+  if (std::ifstream(loop_path)) {
+    const TriangleTables loop = TriangleTables::load(loop_path);
+    std::vector<NamedMesh> meshes;
+    for (const char* name : {"icosahedron", "tri-torus", "tri-mix"}) meshes.push_back({name, read_obj(mesh_dir + name + ".obj")});
+    meshes.push_back({"tri-torus, refined", loop_refined(read_obj(mesh_dir + "tri-torus.obj"), loop, 100000)});
+    for (const NamedMesh& m : meshes) {
+      if (m.name.find(only) == std::string::npos) continue;
+      run_rows("loop", m, TriangleSurface(loop, m.mesh, "loop"), loop.rates(), true);
+    }
+  } else {
+    std::printf("\n# %s not found: no Loop rows (stencilgen --scheme loop --valence 3-8 --n 24 --out tables)\n", loop_path.c_str());
   }
   return 0;
 }
