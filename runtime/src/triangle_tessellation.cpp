@@ -38,7 +38,7 @@ PolygonSoup tessellate(const TriangleSurface& surface, const std::vector<int>& r
 void tessellate_into(const TriangleSurface& surface, const std::vector<int>& rates, PolygonSoup& soup,
                      const TessellationOptions& options) {
   const TriangleTopology& topo = surface.topology();
-  const std::size_t nf = topo.faces(), nh = 3 * nf, nv = topo.vertices();
+  const std::size_t nf = topo.faces();
   if (rates.size() != nf) throw std::invalid_argument("need one rate per prepared face");
   for (std::size_t f = 0; f < nf; ++f)
     if (!surface.tables().has_rate(rates[f]))
@@ -46,42 +46,19 @@ void tessellate_into(const TriangleSurface& surface, const std::vector<int>& rat
 
   // Counts and offsets (serial, O(faces)). Per face: n^2 points, two quads per
   // interior node ((n-1)(n-2)/2 of them), one triangle per boundary node
-  // (3(n-1)). Per edge, owned by its smaller half-edge: the zipper. Per
-  // vertex, owned by its first outgoing half-edge: the polygon.
+  // (3(n-1)); then the zippers and vertex polygons.
   std::vector<std::size_t> point_offset(nf + 1, 0), face_quads(nf + 1, 0), face_triangles(nf + 1, 0);
-  std::vector<std::size_t> quad_offset(nh + nv + 1, 0), tri_offset(nh + nv + 1, 0);
-  std::vector<std::uint32_t> vertex_owner(nv, UINT32_MAX);
-  for (std::uint32_t h = 0; h < nh; ++h) {
-    const int v = topo.vertex(TriangleTopology::face_of(h), TriangleTopology::corner_of(h));
-    if (vertex_owner[static_cast<std::size_t>(v)] == UINT32_MAX) vertex_owner[static_cast<std::size_t>(v)] = h;
-  }
   for (std::size_t f = 0; f < nf; ++f) {
     const std::size_t n = static_cast<std::size_t>(rates[f]);
     point_offset[f + 1] = point_offset[f] + n * n;
-    face_quads[f + 1] = face_quads[f] + (n - 1) * (n >= 2 ? n - 2 : 0);  // 2 per interior node
+    face_quads[f + 1] = face_quads[f] + (n - 1) * (n >= 2 ? n - 2 : 0);
     face_triangles[f + 1] = face_triangles[f] + 3 * (n - 1);
   }
-  for (std::uint32_t h = 0; h < nh; ++h) {
-    std::size_t q = 0, t = 0;
-    const std::uint32_t o = topo.twin(h);
-    if (h < o) {
-      const std::size_t na = static_cast<std::size_t>(rates[TriangleTopology::face_of(h)]);
-      const std::size_t nb = static_cast<std::size_t>(rates[TriangleTopology::face_of(o)]);
-      if (na == nb) q = na - 1;
-      else t = na + nb - 2;
-    }
-    quad_offset[h + 1] = quad_offset[h] + q;
-    tri_offset[h + 1] = tri_offset[h] + t;
-  }
-  for (std::size_t v = 0; v < nv; ++v) {
-    const int k = topo.valence(static_cast<int>(v));
-    quad_offset[nh + v + 1] = quad_offset[nh + v] + (k == 4 ? 1 : 0);
-    tri_offset[nh + v + 1] = tri_offset[nh + v] + (k == 4 ? 0 : static_cast<std::size_t>(k - 2));
-  }
+  const detail::SeamPolygons<3> seams(topo, rates);
   const std::size_t inner_quads = face_quads[nf], inner_triangles = face_triangles[nf];
   soup.positions.resize(point_offset[nf]);
-  soup.quads.resize(inner_quads + quad_offset[nh + nv]);
-  soup.triangles.resize(inner_triangles + tri_offset[nh + nv]);
+  soup.quads.resize(inner_quads + seams.quads());
+  soup.triangles.resize(inner_triangles + seams.triangles());
 
   const detail::RangeRunner for_range(options.threads, point_offset[nf]);
   // Faces: the centres, the hexagons round interior nodes, the triangles round boundary nodes.
@@ -105,46 +82,12 @@ void tessellate_into(const TriangleSurface& surface, const std::vector<int>& rat
         for (int s = 0; s + 1 < n; ++s) *t++ = {base + row_up(k, s, n), base + row_up(k, s + 1, n), base + row_down(k, s, n)};
     }
   });
-  // Edges: the zipper between the two faces' rows of up centres.
-  for_range(nh, [&](std::size_t begin, std::size_t end) {
-    for (std::uint32_t h = static_cast<std::uint32_t>(begin); h != end; ++h) {
-      const std::uint32_t o = topo.twin(h);
-      if (o < h) continue;
-      const std::size_t f = TriangleTopology::face_of(h), g = TriangleTopology::face_of(o);
-      const int kf = TriangleTopology::corner_of(h), kg = TriangleTopology::corner_of(o);
-      const int na = rates[f], nb = rates[g];
-      const int fa = static_cast<int>(point_offset[f]), gb = static_cast<int>(point_offset[g]);
-      auto A = [&](int t) { return fa + row_up(kf, t, na); };
-      auto B = [&](int t) { return gb + row_up(kg, nb - 1 - t, nb); };  // g's row, in f's direction
-      std::array<int, 4>* q = soup.quads.data() + inner_quads + quad_offset[h];
-      std::array<int, 3>* t = soup.triangles.data() + inner_triangles + tri_offset[h];
-      detail::zipper(
-          na, nb, [&](int a, int b) { *q++ = {B(b), B(b + 1), A(a + 1), A(a)}; },
-          [&](int a, int b, bool advance_a) {
-            if (advance_a) *t++ = {B(b), A(a + 1), A(a)};
-            else *t++ = {B(b), B(b + 1), A(a)};
-          });
-    }
+  // Edges: the zipper between the two faces' rows of up centres; vertices: the polygon of the corner centres.
+  for_range(seams.half_edges(), [&](std::size_t begin, std::size_t end) {
+    seams.edges(begin, end, point_offset, row_up, soup.quads.data() + inner_quads, soup.triangles.data() + inner_triangles);
   });
-  // Vertices: the polygon of the corner centres round each mesh vertex.
-  for_range(nv, [&](std::size_t begin, std::size_t end) {
-    int ring[64];
-    for (std::size_t v = begin; v != end; ++v) {
-      const std::uint32_t h = vertex_owner[v];
-      int k = 0;
-      std::uint32_t e = h;
-      do {
-        const std::size_t f = TriangleTopology::face_of(e);
-        ring[k++] = static_cast<int>(point_offset[f]) + row_up(TriangleTopology::corner_of(e), 0, rates[f]);
-        e = topo.turn_ccw(e);
-      } while (e != h && k < 64);
-      if (k == 4) {
-        soup.quads[inner_quads + quad_offset[nh + v]] = {ring[0], ring[1], ring[2], ring[3]};
-      } else {
-        std::array<int, 3>* t = soup.triangles.data() + inner_triangles + tri_offset[nh + v];
-        for (int i = 1; i + 1 < k; ++i) *t++ = {ring[0], ring[i], ring[i + 1]};
-      }
-    }
+  for_range(topo.vertices(), [&](std::size_t begin, std::size_t end) {
+    seams.vertices(begin, end, point_offset, row_up, soup.quads.data() + inner_quads, soup.triangles.data() + inner_triangles);
   });
 }
 
