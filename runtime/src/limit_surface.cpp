@@ -92,12 +92,7 @@ Point LimitSurface::evaluate(std::size_t face, long i, long j, long n) const {
   double w[2 * 64 + 8];
   if (p.points.size() > sizeof w / sizeof w[0]) throw std::out_of_range("valence too large");
   stencil(at.face, 2 * at.i, 2 * at.j, n, w);
-  Point out{0, 0, 0};
-  for (std::size_t h = 0; h < p.points.size(); ++h) {
-    const auto& q = prepared_.mesh.positions[static_cast<std::size_t>(p.points[h])];
-    for (int k = 0; k < 3; ++k) out[k] += w[h] * q[k];
-  }
-  return out;
+  return apply_stencil(w, p.points, prepared_.mesh.positions);
 }
 
 }  // namespace stencil_runtime

@@ -55,11 +55,7 @@ void tessellate_into(const LimitSurface& surface, const std::vector<int>& rates,
                      const TessellationOptions& options) {
   const QuadTopology& topo = surface.topology();
   const std::size_t nf = topo.faces();
-  if (rates.size() != nf) throw std::invalid_argument("need one rate per prepared face");
-  const SurfaceTables& tables = surface.tables();
-  for (std::size_t f = 0; f < nf; ++f)
-    if (!tables.has_rate(rates[f]))
-      throw std::out_of_range("face " + std::to_string(f) + ": rate " + std::to_string(rates[f]) + " is not in the tables");
+  detail::check_rates(rates, nf, surface.tables());
 
   // Counts and offsets (serial, O(faces)): points and interior quads per face,
   // then the zippers and vertex polygons.

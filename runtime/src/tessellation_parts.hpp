@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "stencil_runtime/uniform_topology.hpp"
@@ -59,6 +61,15 @@ class RangeRunner {
  private:
   std::unique_ptr<tbb::task_arena> arena_;
 };
+
+// One rate per prepared face, each stored in the tables (has_rate).
+template <class Tables>
+void check_rates(const std::vector<int>& rates, std::size_t faces, const Tables& tables) {
+  if (rates.size() != faces) throw std::invalid_argument("need one rate per prepared face");
+  for (std::size_t f = 0; f < faces; ++f)
+    if (!tables.has_rate(rates[f]))
+      throw std::out_of_range("face " + std::to_string(f) + ": rate " + std::to_string(rates[f]) + " is not in the tables");
+}
 
 // The polygons the mesh's edges and vertices contribute: the zipper of each
 // edge (owned by its smaller half-edge) and the polygon of the corner points

@@ -54,13 +54,7 @@ Point TriangleSurface::evaluate(std::size_t face, long i, long j, long n) const 
     throw std::out_of_range("rate " + std::to_string(n) + " is not in the tables");
   const FaceParameter at = locate_triangle(prepared_, face, i, j, n);
   const TrianglePatch& p = patches_[at.face];
-  const double* w = stencil(at.face, 3 * at.i, 3 * at.j, n);
-  Point out{0, 0, 0};
-  for (std::size_t h = 0; h < p.points.size(); ++h) {
-    const auto& q = prepared_.mesh.positions[static_cast<std::size_t>(p.points[h])];
-    for (int k = 0; k < 3; ++k) out[k] += w[h] * q[k];
-  }
-  return out;
+  return apply_stencil(stencil(at.face, 3 * at.i, 3 * at.j, n), p.points, prepared_.mesh.positions);
 }
 
 }  // namespace stencil_runtime

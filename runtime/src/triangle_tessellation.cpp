@@ -39,10 +39,7 @@ void tessellate_into(const TriangleSurface& surface, const std::vector<int>& rat
                      const TessellationOptions& options) {
   const TriangleTopology& topo = surface.topology();
   const std::size_t nf = topo.faces();
-  if (rates.size() != nf) throw std::invalid_argument("need one rate per prepared face");
-  for (std::size_t f = 0; f < nf; ++f)
-    if (!surface.tables().has_rate(rates[f]))
-      throw std::out_of_range("face " + std::to_string(f) + ": rate " + std::to_string(rates[f]) + " is not in the tables");
+  detail::check_rates(rates, nf, surface.tables());
 
   // Counts and offsets (serial, O(faces)). Per face: n^2 points, two quads per
   // interior node ((n-1)(n-2)/2 of them), one triangle per boundary node

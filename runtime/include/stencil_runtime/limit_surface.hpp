@@ -15,6 +15,17 @@ namespace stencil_runtime {
 
 using Point = std::array<double, 3>;
 
+// sum_h weights[h] * positions[points[h]]: a stencil applied to a patch's control points.
+inline Point apply_stencil(const double* weights, const std::vector<int>& points,
+                           const std::vector<std::array<double, 3>>& positions) {
+  Point out{0, 0, 0};
+  for (std::size_t h = 0; h < points.size(); ++h) {
+    const auto& q = positions[static_cast<std::size_t>(points[h])];
+    for (int k = 0; k < 3; ++k) out[k] += weights[h] * q[k];
+  }
+  return out;
+}
+
 class LimitSurface {
  public:
   // Prepares the mesh (see prepare_mesh) and gathers every face's patch.
