@@ -90,6 +90,7 @@ PreparedMesh prepare_triangle_mesh(const Mesh& mesh, const TriangleTables& table
   TriangleTopology topo(mesh);
   for (std::size_t v = 0; v < topo.vertices(); ++v) {
     const int val = topo.valence(static_cast<int>(v));
+    if (val > 64) throw MeshError("vertex " + std::to_string(v) + " has valence " + std::to_string(val) + "; the runtime supports valences up to 64");
     if (!tables.has_valence(val)) throw missing_valence_error(v, val, scheme_name);
   }
   while (!isolated(topo, tables)) {

@@ -48,7 +48,7 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
   for (std::uint32_t k = 0; k < valence_count; ++k) {
     Valence v;
     v.valence = static_cast<int>(r.get<std::uint32_t>());
-    if (v.valence < 3 || v.valence > 64 || t.find(v.valence)) r.fail("invalid or repeated valence " + std::to_string(v.valence));
+    if (v.valence < 3 || v.valence > 100000 || t.find(v.valence)) r.fail("invalid or repeated valence " + std::to_string(v.valence));
     v.exact = r.get<std::uint8_t>() != 0;
     v.residual = r.get<double>();
     v.neighbour = r.get<double>();
