@@ -12,7 +12,7 @@
 
 #include "bfr_reference.hpp"
 #include "cli.hpp"
-#include "soup_checks.hpp"
+#include "runtime_checks.hpp"
 #include "stencil_runtime/tessellation.hpp"
 
 using namespace stencil_runtime;
@@ -32,17 +32,6 @@ fs::path tables_for(const std::string& scheme) {
     made[scheme] = dir / scheme / (scheme + ".sgs");
   }
   return made[scheme];
-}
-
-double extent(const Mesh& m) {
-  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const auto& p : m.positions)
-    for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], p[c]), hi[c] = std::max(hi[c], p[c]);
-  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
-double distance(const Point& a, const Point& b) {
-  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
 
 const char* kBundled[] = {"cube", "torus-3-5", "chess-piece", "bumpy-sphere"};
@@ -239,13 +228,7 @@ TEST_CASE("stenciltess writes closed meshes in every rate mode", "[runtime][tess
     INFO(mode << "\n" << r.output);
     REQUIRE(r.status == 0);
     const Mesh m = read_obj(out.string());
-    std::map<std::pair<int, int>, int> directed;
-    std::size_t off = 0;
-    for (int k : m.face_sizes) {
-      for (int c = 0; c < k; ++c)
-        ++directed[{m.face_vertices[off + static_cast<std::size_t>(c)], m.face_vertices[off + static_cast<std::size_t>((c + 1) % k)]}];
-      off += static_cast<std::size_t>(k);
-    }
+    const auto directed = directed_edges(m);
     for (const auto& [e, count] : directed) {
       REQUIRE(count == 1);
       REQUIRE(directed.count({e.second, e.first}) == 1);
@@ -323,11 +306,7 @@ TEST_CASE("meshes with triangles get the scheme's polygon step; Catmull-Clark th
   CHECK_THROWS_WITH(surface.evaluate(0, 0, 0, 1), Catch::Contains("face 0 has 3 vertices"));
   // The tessellation of the mixed mesh is closed, and a sphere.
   const PolygonSoup soup = tessellate(surface, prepared_rates(surface, {3, 7, 12, 5, 24}));
-  std::map<std::pair<int, int>, int> directed;
-  for (const auto& q : soup.quads)
-    for (int c = 0; c < 4; ++c) ++directed[{q[c], q[(c + 1) % 4]}];
-  for (const auto& t : soup.triangles)
-    for (int c = 0; c < 3; ++c) ++directed[{t[c], t[(c + 1) % 3]}];
+  const auto directed = directed_edges(soup);
   for (const auto& [e, count] : directed) REQUIRE((count == 1 && directed.count({e.second, e.first}) == 1));
   CHECK(static_cast<long>(soup.positions.size()) - static_cast<long>(directed.size() / 2) +
             static_cast<long>(soup.quads.size() + soup.triangles.size()) == 2);

@@ -12,7 +12,7 @@
 
 #include "bfr_reference.hpp"
 #include "cli.hpp"
-#include "soup_checks.hpp"
+#include "runtime_checks.hpp"
 #include "stencil_runtime/triangle_tessellation.hpp"
 
 using namespace stencil_runtime;
@@ -36,17 +36,6 @@ fs::path loop_tables() {
 }
 
 Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
-
-double extent(const Mesh& m) {
-  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const auto& p : m.positions)
-    for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], p[c]), hi[c] = std::max(hi[c], p[c]);
-  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
-double distance(const Point& a, const Point& b) {
-  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-}
 
 bfr_reference::BfrLimit loop_reference(const Mesh& mesh) {
   return {mesh.positions, mesh.face_sizes, mesh.face_vertices, OpenSubdiv::Sdc::SCHEME_LOOP};
@@ -170,15 +159,7 @@ TEST_CASE("stencileval and stenciltess take triangle meshes with .sgt tables", "
     INFO(mode << "\n" << t.output);
     REQUIRE(t.status == 0);
     const Mesh m = read_obj(out.string());
-    PolygonSoup soup;
-    std::size_t off = 0;
-    for (int k : m.face_sizes) {
-      const int* v = m.face_vertices.data() + off;
-      if (k == 3) soup.triangles.push_back({v[0], v[1], v[2]});
-      else soup.quads.push_back({v[0], v[1], v[2], v[3]});
-      off += static_cast<std::size_t>(k);
-    }
-    const auto directed = directed_edges(soup);
+    const auto directed = directed_edges(m);
     for (const auto& [e, count] : directed) REQUIRE((count == 1 && directed.count({e.second, e.first}) == 1));
     REQUIRE(static_cast<long>(m.vertex_count()) - static_cast<long>(directed.size() / 2) + static_cast<long>(m.face_count()) == 0);
   }

@@ -1,0 +1,62 @@
+#pragma once
+// Independent measures for the runtime tests: the size of a mesh, distances,
+// directed-edge counts of a tessellation (soup or written mesh) and the Euler
+// characteristic of a control mesh.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <utility>
+
+#include "stencil_runtime/mesh.hpp"
+
+// Length of the diagonal of the mesh's bounding box.
+inline double extent(const stencil_runtime::Mesh& m) {
+  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const auto& p : m.positions)
+    for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], p[c]), hi[c] = std::max(hi[c], p[c]);
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+inline double distance(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// How often each directed edge (a -> b) occurs in the soup's polygons. A closed,
+// consistently oriented 2-manifold has every count 1 and every reverse present.
+inline std::map<std::pair<int, int>, int> directed_edges(const stencil_runtime::PolygonSoup& soup) {
+  std::map<std::pair<int, int>, int> directed;
+  auto add = [&](const int* poly, int k) {
+    for (int c = 0; c < k; ++c) ++directed[{poly[c], poly[(c + 1) % k]}];
+  };
+  for (const auto& q : soup.quads) add(q.data(), 4);
+  for (const auto& t : soup.triangles) add(t.data(), 3);
+  return directed;
+}
+
+// The same for a mesh read back from a written tessellation.
+inline std::map<std::pair<int, int>, int> directed_edges(const stencil_runtime::Mesh& mesh) {
+  std::map<std::pair<int, int>, int> directed;
+  std::size_t off = 0;
+  for (int k : mesh.face_sizes) {
+    for (int c = 0; c < k; ++c)
+      ++directed[{mesh.face_vertices[off + static_cast<std::size_t>(c)], mesh.face_vertices[off + static_cast<std::size_t>((c + 1) % k)]}];
+    off += static_cast<std::size_t>(k);
+  }
+  return directed;
+}
+
+inline long euler_characteristic(const stencil_runtime::Mesh& mesh) {
+  std::set<std::pair<int, int>> edges;
+  std::size_t off = 0;
+  for (int k : mesh.face_sizes) {
+    for (int c = 0; c < k; ++c) {
+      const int a = mesh.face_vertices[off + static_cast<std::size_t>(c)];
+      const int b = mesh.face_vertices[off + static_cast<std::size_t>((c + 1) % k)];
+      edges.insert({std::min(a, b), std::max(a, b)});
+    }
+    off += static_cast<std::size_t>(k);
+  }
+  return static_cast<long>(mesh.vertex_count()) - static_cast<long>(edges.size()) + static_cast<long>(mesh.face_count());
+}
