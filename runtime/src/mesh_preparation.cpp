@@ -176,16 +176,12 @@ PreparedMesh prepare_mesh(const Mesh& mesh, const SurfaceTables& tables, const s
   QuadTopology topo(out.mesh);
   for (std::size_t v = 0; v < topo.vertices(); ++v) {
     const int val = topo.valence(static_cast<int>(v));
-    if (val > 64) throw MeshError("vertex " + std::to_string(v) + " has valence " + std::to_string(val) + "; the runtime supports valences up to 64");
+    check_valence_limit(v, val);
     if (!tables.has_valence(val) || !tables.vertex_rule(val)) throw missing_valence(v, val);
   }
   while (!isolated(topo)) {
     if (out.steps == 3) throw MeshError("extraordinary vertices still share faces after 3 subdivision steps");
-    std::vector<std::size_t> offsets(topo.faces() + 1);
-    for (std::size_t f = 0; f <= topo.faces(); ++f) offsets[f] = 4 * f;
-    out.mesh = subdivide_once(out.mesh, topo, tables);
-    out.child_offsets.push_back(std::move(offsets));
-    ++out.steps;
+    out.add_four_way_step(subdivide_once(out.mesh, topo, tables));
     topo = QuadTopology(out.mesh);
   }
   return out;

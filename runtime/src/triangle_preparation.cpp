@@ -90,16 +90,12 @@ PreparedMesh prepare_triangle_mesh(const Mesh& mesh, const TriangleTables& table
   TriangleTopology topo(mesh);
   for (std::size_t v = 0; v < topo.vertices(); ++v) {
     const int val = topo.valence(static_cast<int>(v));
-    if (val > 64) throw MeshError("vertex " + std::to_string(v) + " has valence " + std::to_string(val) + "; the runtime supports valences up to 64");
+    check_valence_limit(v, val);
     if (!tables.has_valence(val)) throw missing_valence_error(v, val, scheme_name);
   }
   while (!isolated(topo, tables)) {
     if (out.steps == 3) throw MeshError("extraordinary vertices are still too close after 3 subdivision steps");
-    std::vector<std::size_t> offsets(topo.faces() + 1);
-    for (std::size_t f = 0; f <= topo.faces(); ++f) offsets[f] = 4 * f;
-    out.mesh = loop_subdivide_once(out.mesh, topo, tables);
-    out.child_offsets.push_back(std::move(offsets));
-    ++out.steps;
+    out.add_four_way_step(loop_subdivide_once(out.mesh, topo, tables));
     topo = TriangleTopology(out.mesh);
   }
   return out;

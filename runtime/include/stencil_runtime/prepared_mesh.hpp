@@ -16,6 +16,16 @@ struct PreparedMesh {
   // Per step: the first child of each face of the mesh before that step (size faces + 1).
   std::vector<std::vector<std::size_t>> child_offsets;
   std::vector<int> original_sizes;  // corner count of each original face
+
+  // Records one step of a scheme that splits every face in four: face f of
+  // the mesh before it became faces 4f .. 4f+3 of `refined`.
+  void add_four_way_step(Mesh refined) {
+    std::vector<std::size_t> offsets(mesh.face_count() + 1);
+    for (std::size_t f = 0; f < offsets.size(); ++f) offsets[f] = 4 * f;
+    child_offsets.push_back(std::move(offsets));
+    mesh = std::move(refined);
+    ++steps;
+  }
 };
 
 // A parameter of a prepared face: grid indices (i/n, j/n) on the same n as the
@@ -24,6 +34,13 @@ struct FaceParameter {
   std::size_t face;
   long i, j;
 };
+
+// Valences above 64 are refused (the tessellation's vertex polygon holds 64 corners).
+inline void check_valence_limit(std::size_t vertex, int valence) {
+  if (valence > 64)
+    throw MeshError("vertex " + std::to_string(vertex) + " has valence " + std::to_string(valence) +
+                    "; the runtime supports valences up to 64");
+}
 
 // The error for a vertex whose valence the tables do not cover, with the
 // stencilgen call that adds it.
