@@ -13,17 +13,22 @@ TriangleSurface::TriangleSurface(const TriangleTables& tables, const Mesh& mesh,
   for (std::size_t f = 0; f < topology_.faces(); ++f) patches_.push_back(gather_triangle_patch(topology_, f, tables));
 }
 
-const double* TriangleSurface::stencil(std::size_t face, long a, long b, long n) const {
-  const TrianglePatch& p = patches_.at(face);
+namespace {
+
+// The weights at patch point (a/(3n), b/(3n)) of the face, from its grid.
+const double* weights_at(const TriangleTables::Grid& grid, const TrianglePatch& p, long a, long b, long n) {
   long pa = 0, pb = 0;
   p.to_patch(a, b, 3 * n, pa, pb);
-  const long r = pa % 3;
-  if (pa < 0 || pb < 0 || pb % 3 != r || pa + pb > 3 * n)
+  if (pa < 0 || pb < 0 || pb % 3 != pa % 3 || pa + pb > 3 * n)
     throw std::out_of_range("a stencil point must be a node or the centre of a small triangle of the face");
-  const int i = static_cast<int>(pa / 3), j = static_cast<int>(pb / 3), rate = static_cast<int>(n);
-  if (r == 0) return tables_.node_weights(p.valence, rate, i, j);
-  if (r == 1) return tables_.up_weights(p.valence, rate, i, j);
-  return tables_.down_weights(p.valence, rate, i, j);
+  return grid.weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3);
+}
+
+}  // namespace
+
+const double* TriangleSurface::stencil(std::size_t face, long a, long b, long n) const {
+  const TrianglePatch& p = patches_.at(face);
+  return weights_at(tables_.grid(p.valence, static_cast<int>(n)), p, a, b, n);
 }
 
 void TriangleSurface::evaluate_centres(std::size_t face, int n, std::array<float, 3>* out) const {
@@ -33,8 +38,9 @@ void TriangleSurface::evaluate_centres(std::size_t face, int n, std::array<float
   thread_local std::vector<std::array<double, 3>> local;
   local.resize(m);
   for (std::size_t h = 0; h < m; ++h) local[h] = pos[static_cast<std::size_t>(p.points[h])];
+  const TriangleTables::Grid grid = tables_.grid(p.valence, n);
   auto put = [&](long a, long b) {
-    const double* w = stencil(face, a, b, n);
+    const double* w = weights_at(grid, p, a, b, n);
     double x = 0, y = 0, z = 0;
     for (std::size_t h = 0; h < m; ++h) x += w[h] * local[h][0], y += w[h] * local[h][1], z += w[h] * local[h][2];
     *out++ = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};

@@ -117,21 +117,29 @@ int TriangleTables::rate_slot(int n) const {
   return n >= 0 && static_cast<std::size_t>(n) < slot_of_rate_.size() ? slot_of_rate_[static_cast<std::size_t>(n)] : -1;
 }
 
-const double* TriangleTables::weights(int valence, int n, int i, int j, Kind kind) const {
+TriangleTables::Grid TriangleTables::grid(int valence, int n) const {
   const Valence& v = data(valence);
   const int slot = rate_slot(n);
   if (slot < 0) throw std::out_of_range("rate " + std::to_string(n) + " is not in the triangle table");
-  // Row j of each kind holds (n + 1 - kind) - j points; rows are j-major.
-  const long side = n + 1 - kind;  // points in row 0
-  if (i < 0 || j < 0 || i + j >= side) throw std::out_of_range("grid index outside the patch triangle");
-  const std::size_t before = kind == Node ? 0 : kind == Up ? nodes_of(n) : nodes_of(n) + ups_of(n);
-  const std::size_t row = static_cast<std::size_t>(j * side - static_cast<long>(j) * (j - 1) / 2);
-  const std::uint32_t s = v.index[static_cast<std::size_t>(slot)][before + row + static_cast<std::size_t>(i)];
-  return v.weights.data() + static_cast<std::size_t>(s) * v.layout.size();
+  Grid g;
+  g.weights_ = v.weights.data();
+  g.points_ = v.layout.size();
+  g.index_ = v.index[static_cast<std::size_t>(slot)].data();
+  g.n_ = n;
+  return g;
 }
 
-const double* TriangleTables::node_weights(int valence, int n, int i, int j) const { return weights(valence, n, i, j, Node); }
-const double* TriangleTables::up_weights(int valence, int n, int i, int j) const { return weights(valence, n, i, j, Up); }
-const double* TriangleTables::down_weights(int valence, int n, int i, int j) const { return weights(valence, n, i, j, Down); }
+const double* TriangleTables::Grid::weights(GridPoint kind, long i, long j) const {
+  // Row j of each kind holds (n + 1 - kind) - j points; rows are j-major.
+  const long k = static_cast<long>(kind), side = n_ + 1 - k;  // points in row 0
+  if (i < 0 || j < 0 || i + j >= side) throw std::out_of_range("grid index outside the patch triangle");
+  const std::size_t before = kind == GridPoint::Node ? 0 : kind == GridPoint::Up ? nodes_of(n_) : nodes_of(n_) + ups_of(n_);
+  const std::size_t row = static_cast<std::size_t>(j * side - j * (j - 1) / 2);
+  return weights_ + static_cast<std::size_t>(index_[before + row + static_cast<std::size_t>(i)]) * points_;
+}
+
+const double* TriangleTables::node_weights(int valence, int n, int i, int j) const { return grid(valence, n).weights(GridPoint::Node, i, j); }
+const double* TriangleTables::up_weights(int valence, int n, int i, int j) const { return grid(valence, n).weights(GridPoint::Up, i, j); }
+const double* TriangleTables::down_weights(int valence, int n, int i, int j) const { return grid(valence, n).weights(GridPoint::Down, i, j); }
 
 }  // namespace stencil_runtime

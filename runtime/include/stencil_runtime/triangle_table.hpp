@@ -53,6 +53,24 @@ class TriangleTables {
   const double* up_weights(int valence, int n, int i, int j) const;
   const double* down_weights(int valence, int n, int i, int j) const;
 
+  // The same lookups with the valence and rate resolved once (a face's
+  // tessellation asks for n^2 stencils of one grid).
+  enum class GridPoint { Node = 0, Up = 1, Down = 2 };
+  class Grid {
+   public:
+    // Throws std::out_of_range for an index outside the patch triangle.
+    const double* weights(GridPoint kind, long i, long j) const;
+
+   private:
+    friend class TriangleTables;
+    const double* weights_ = nullptr;
+    std::size_t points_ = 0;
+    const std::uint32_t* index_ = nullptr;
+    long n_ = 1;
+  };
+  // Throws std::out_of_range for a valence or rate the table does not hold.
+  Grid grid(int valence, int n) const;
+
  private:
   struct Valence {
     int valence = 0;
@@ -62,11 +80,9 @@ class TriangleTables {
     std::vector<double> weights;                // stencil_count * layout.size()
     std::vector<std::vector<std::uint32_t>> index;  // per rate slot: nodes, ups, downs
   };
-  enum Kind { Node = 0, Up = 1, Down = 2 };
   const Valence* find(int v) const;
   const Valence& data(int v) const;  // throws std::out_of_range
   int rate_slot(int n) const;
-  const double* weights(int valence, int n, int i, int j, Kind kind) const;
 
   std::uint64_t hash_ = 0;
   TriangleRefinement refinement_ = TriangleRefinement::Loop;
