@@ -3,7 +3,8 @@
 // own connectivity (no sector chart), and the fine vertex at each grid node
 // (i/3^j, k/3^j) is pushed to the limit with Kobbelt's limit rule
 // p + 3 alpha mean(neighbours), over 1 + 3 alpha. The generator's stencil at
-// that node must give the same value.
+// that node must give the same value, in the patch (EV, e_0, e_1) and in the
+// three band triangles of the EV's second ring that sqrt(3)'s tables add.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
@@ -126,10 +127,26 @@ void check_valence(const sg::TriangleScheme& sqrt3, int v) {
     mesh = sqrt3_step(sqrt3_step(mesh, v), v);
     n *= 3;
     const auto nb = neighbours(mesh);
-    const auto patch = sg::solve_triangle_patch<T>(sqrt3, v, n, sg::solve_regular(sqrt3, n));
+    // Region corners in sector 0's frame (a, b), written out here as the
+    // tables document them: the patch, then the band.
+    static constexpr long corners[4][3][2] = {{{0, 0}, {1, 0}, {1, 1}},
+                                              {{1, 0}, {2, 0}, {2, 1}},
+                                              {{1, 0}, {2, 1}, {1, 1}},
+                                              {{1, 1}, {2, 1}, {2, 2}}};
+    const int regions = v == 6 ? 1 : 4;
+    REQUIRE(sg::patch_regions(sqrt3, v) == regions);
+    std::vector<std::array<long, 3>> band;
+    for (long r = 1; r < regions; ++r)
+      for (long k = 0; k <= n; ++k)
+        for (long i = 0; i + k <= n; ++i) band.push_back({r, i, k});
+    const auto patch = sg::solve_triangle_patch<T>(sqrt3, v, n, sg::solve_regular(sqrt3, n), band);
+    for (int r = 0; r < regions; ++r)
     for (long k = 0; k <= n; ++k)
       for (long i = 0; i + k <= n; ++i) {
-        const ConePoint target = canonical(v, 0, double(i + k) / n, double(k) / n);
+        const auto& c = corners[r];
+        const double u = double(i) / n, w = double(k) / n;
+        const ConePoint target = canonical(v, 0, c[0][0] + u * (c[1][0] - c[0][0]) + w * (c[2][0] - c[0][0]),
+                                           c[0][1] + u * (c[1][1] - c[0][1]) + w * (c[2][1] - c[0][1]));
         int found = -1;
         for (std::size_t p = 0; p < mesh.value.size(); ++p) {
           const ConePoint& c = mesh.pos[p];
@@ -138,7 +155,7 @@ void check_valence(const sg::TriangleScheme& sqrt3, int v) {
             found = static_cast<int>(p);
           }
         }
-        INFO("valence " << v << ", n = " << n << ", node (" << i << "," << k << ")");
+        INFO("valence " << v << ", n = " << n << ", region " << r << ", node (" << i << "," << k << ")");
         REQUIRE(found >= 0);
         const double a = alpha(static_cast<int>(nb[found].size()));
         double mean = 0;
@@ -146,8 +163,7 @@ void check_valence(const sg::TriangleScheme& sqrt3, int v) {
         mean /= static_cast<double>(nb[found].size());
         const double limit = (mesh.value[found] + 3 * a * mean) / (1 + 3 * a);
         double ours = 0;
-        const auto& w = patch.at(i, k);
-        for (const auto& [h, x] : w) ours += sg::to_double(x) * control[static_cast<std::size_t>(fan.at(patch.chart.point(h)))];
+        for (const auto& [h, x] : patch.at(r, i, k)) ours += sg::to_double(x) * control[static_cast<std::size_t>(fan.at(patch.chart.point(h)))];
         REQUIRE(std::fabs(ours - limit) < 1e-12);
       }
   }
@@ -155,7 +171,8 @@ void check_valence(const sg::TriangleScheme& sqrt3, int v) {
 
 }  // namespace
 
-TEST_CASE("sqrt(3) patches equal 2j steps of plain subdivision and the limit rule at n = 3, 9", "[triangle][sqrt3]") {
+TEST_CASE("sqrt(3) patches and band triangles equal 2j steps of plain subdivision and the limit rule at n = 3, 9",
+          "[triangle][sqrt3]") {
   const sg::TriangleScheme sqrt3 = sg::load_triangle_scheme("sqrt3");
   for (int v : {3, 4, 5, 6, 7, 8, 12}) {
     if (sqrt3.exact_neighbour_weight(v)) check_valence<sg::Rational>(sqrt3, v);

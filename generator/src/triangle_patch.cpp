@@ -60,6 +60,35 @@ T magnitude(const T& x) {
 long patch_rings(const TriangleScheme& scheme) { return scheme.refinement == TriangleRefinement::Loop ? 3 : 8; }
 long irregular_radius(const TriangleScheme& scheme) { return scheme.refinement == TriangleRefinement::Loop ? 1 : 2; }
 
+int patch_regions(const TriangleScheme& scheme, int valence) { return irregular_radius(scheme) > 1 && valence != 6 ? 4 : 1; }
+
+std::array<LatticeIndex, 3> region_corners(int region) {
+  switch (region) {
+    case 0: return {{{0, 0}, {1, 0}, {1, 1}}};
+    case 1: return {{{1, 0}, {2, 0}, {2, 1}}};
+    case 2: return {{{1, 0}, {2, 1}, {1, 1}}};
+    case 3: return {{{1, 1}, {2, 1}, {2, 2}}};
+    default: throw Error("internal: no patch region " + std::to_string(region));
+  }
+}
+
+LatticeIndex region_point(int region, long i, long j, long g) {
+  const auto c = region_corners(region);
+  return {g * c[0].first + i * (c[1].first - c[0].first) + j * (c[2].first - c[0].first),
+          g * c[0].second + i * (c[1].second - c[0].second) + j * (c[2].second - c[0].second)};
+}
+
+template <class T>
+const SparseRow<T>& TrianglePatch<T>::at(int region, long i, long j) const {
+  const auto [ya, yb] = region_point(region, i, j, grid);
+  if (ya <= grid) return at(ya - yb, yb);
+  const auto it = beyond.find({ya, yb});
+  if (it == beyond.end() || it->second.empty())
+    throw Error("internal: region " + std::to_string(region) + " point (" + std::to_string(i) + "," + std::to_string(j) +
+                ")/" + std::to_string(grid) + " was not solved");
+  return it->second;
+}
+
 BivariateSolution solve_regular(const TriangleScheme& scheme, long g) {
   const Rational w = *scheme.exact_neighbour_weight(6);
   const BivariateMask mask = scheme.refinement == TriangleRefinement::Loop
@@ -82,7 +111,8 @@ TriangleWeights<Real> triangle_weights(const TriangleScheme& s, int valence) {
 }
 
 template <class T>
-TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence, long g, const BivariateSolution& regular) {
+TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence, long g, const BivariateSolution& regular,
+                                      const std::vector<std::array<long, 3>>& band) {
   if (g < 1) throw Error("grid must be at least 1");
   if (regular.n != g) throw Error("internal: the regular solution is on the grid " + std::to_string(regular.n));
   const std::string context = where(scheme, valence);
@@ -163,7 +193,7 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
   // passes through (sqrt(3)) in a map. A computed stencil is never empty.
   const long radius = irregular_radius(scheme) * g;
   out.stencils.assign(static_cast<std::size_t>((g + 1) * (g + 1)), {});
-  std::map<LatticeIndex, SparseRow<T>> beyond;
+  std::map<LatticeIndex, SparseRow<T>>& beyond = out.beyond;
   auto stored = [&](long ya, long yb) -> SparseRow<T>& {
     return ya <= g ? out.stencils[static_cast<std::size_t>(yb * (g + 1) + ya - yb)] : beyond[{ya, yb}];
   };
@@ -188,6 +218,14 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
   };
   for (long j = 0; j <= g; ++j)
     for (long i = 0; i + j <= g; ++i) solve(solve, i + j, j);
+  const int regions = patch_regions(scheme, valence);
+  for (const auto& [r, i, j] : band) {
+    if (r < 1 || r >= regions || i < 0 || j < 0 || i + j > g)
+      throw Error("internal: " + context + " has no band point (" + std::to_string(r) + ", " + std::to_string(i) + ", " +
+                  std::to_string(j) + ")");
+    const auto [ya, yb] = region_point(static_cast<int>(r), i, j, g);
+    solve(solve, ya, yb);
+  }
 
   // Residuals (exact arithmetic must give zero).
   {
@@ -197,19 +235,25 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
     for (const auto& [c, x] : w0) diff[c] -= x;
     for (const T& d : diff) out.eigen_residual = std::max(out.eigen_residual, magnitude(d));
   }
-  for (long j = 0; j <= g; ++j)
-    for (long i = 0; i + j <= g; ++i) {
-      T sum = 0;
-      for (const auto& [c, w] : out.at(i, j)) sum += w;
-      out.unity_residual = std::max(out.unity_residual, magnitude(T(sum - 1)));
-    }
+  auto unity = [&](const SparseRow<T>& stencil) {
+    T sum = 0;
+    for (const auto& [c, w] : stencil) sum += w;
+    out.unity_residual = std::max(out.unity_residual, magnitude(T(sum - 1)));
+  };
+  for (const SparseRow<T>& s : out.stencils)
+    if (!s.empty()) unity(s);
+  for (const auto& [y, s] : out.beyond) unity(s);
   if constexpr (std::is_same_v<T, Rational>)
     if (out.eigen_residual != 0 || out.unity_residual != 0)
       throw Error(context + ": exact check failed (partition of unity or the limit stencil)");
   return out;
 }
 
-template TrianglePatch<Rational> solve_triangle_patch(const TriangleScheme&, int, long, const BivariateSolution&);
-template TrianglePatch<Real> solve_triangle_patch(const TriangleScheme&, int, long, const BivariateSolution&);
+template struct TrianglePatch<Rational>;
+template struct TrianglePatch<Real>;
+template TrianglePatch<Rational> solve_triangle_patch(const TriangleScheme&, int, long, const BivariateSolution&,
+                                                      const std::vector<std::array<long, 3>>&);
+template TrianglePatch<Real> solve_triangle_patch(const TriangleScheme&, int, long, const BivariateSolution&,
+                                                  const std::vector<std::array<long, 3>>&);
 
 }  // namespace sg

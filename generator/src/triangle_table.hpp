@@ -5,7 +5,9 @@
 // the watertight tessellation samples: "up" triangles ((3i+1)/(3n), (3j+1)/(3n)),
 // i + j <= n-1, and "down" triangles ((3i+2)/(3n), (3j+2)/(3n)), i + j <= n-2.
 // Stencils refer to the sector-chart points listed in `layout` (those some
-// stencil of the table uses). Exact (integer numerators over one denominator)
+// stencil of the table uses). For sqrt(3) at valences other than 6 the table
+// also holds the three "band" regions of the EV's second ring
+// (triangle_patch.hpp), each on the same grid and with its own layout. Exact (integer numerators over one denominator)
 // where the scheme's weights are rational at this valence, else high precision
 // (Real) with the largest residual recorded. docs/table-format.md.
 #include <string>
@@ -29,12 +31,16 @@ struct TriangleTable {
   long n = 1;
   bool exact = true;
   Real residual = 0;  // max of the eigenvector and partition-of-unity residuals
-  std::vector<SectorPoint> layout;
+  struct Region {
+    int index = 0;  // 0: the patch; 1..3: the band (triangle_patch.hpp)
+    std::vector<SectorPoint> layout;
+    std::vector<Entry> nodes, up, down;  // j-major
+  };
+  std::vector<Region> regions;  // [0] is the patch
   struct Rules {
     std::string edge_end, edge_opposite;  // Loop only
     std::string neighbour_regular, neighbour;  // w(6) and w(valence), exact or 40 digits
   } rules;
-  std::vector<Entry> nodes, up, down;  // j-major
 };
 
 // Digits written for high-precision values (the solve carries kRealDigits).
@@ -51,6 +57,6 @@ TriangleTable solve_triangle_table(const TriangleScheme& scheme, int valence, lo
 std::string triangle_table_to_json(const TriangleTable& table);
 
 inline constexpr const char* kTriangleTableFormat = "stencilgen-triangle-table";
-inline constexpr int kTriangleTableVersion = 1;
+inline constexpr int kTriangleTableVersion = 2;  // 2: band regions
 
 }  // namespace sg

@@ -22,7 +22,7 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
   const auto version = r.get<std::uint32_t>();
   if (version != format::kTriangleVersion)
     r.fail("format version " + std::to_string(version) + " is not supported (expected " +
-           std::to_string(format::kTriangleVersion) + ")");
+           std::to_string(format::kTriangleVersion) + "; regenerate the tables with this stencilgen)");
   const auto scalar = r.get<std::uint32_t>();
   if (scalar != 4 && scalar != 8) r.fail("invalid scalar size " + std::to_string(scalar));
   TriangleTables t;
@@ -52,30 +52,38 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
     v.exact = r.get<std::uint8_t>() != 0;
     v.residual = r.get<double>();
     v.neighbour = r.get<double>();
-    const auto points = r.get<std::uint32_t>();
-    if (points == 0 || points > left() / 12) r.fail("valence " + std::to_string(v.valence) + ": truncated layout");
-    for (std::uint32_t h = 0; h < points; ++h) {
-      ChartPoint p{r.get<std::int32_t>(), r.get<std::int32_t>(), r.get<std::int32_t>()};
-      const bool ev = p.sector == 0 && p.a == 0 && p.b == 0;
-      if (!ev && (p.sector < 0 || p.sector >= v.valence || p.a < 1 || p.a > 64 || p.b < 0 || p.b >= p.a))
-        r.fail("valence " + std::to_string(v.valence) + ": invalid layout point [" + std::to_string(p.sector) + "," +
-               std::to_string(p.a) + "," + std::to_string(p.b) + "]");
-      v.layout.push_back(p);
-    }
-    const auto stencils = r.get<std::uint32_t>();
-    if (stencils > left() / scalar / points) r.fail("valence " + std::to_string(v.valence) + ": truncated weights");
-    v.weights.resize(static_cast<std::size_t>(stencils) * points);
-    for (auto& x : v.weights) x = scalar == 8 ? r.get<double>() : static_cast<double>(r.get<float>());
-    for (int n : t.rates_) {
-      const std::size_t count = nodes_of(n) + ups_of(n) + downs_of(n);
-      if (count > left() / 4) r.fail("truncated index block");
-      std::vector<std::uint32_t> index(count);
-      for (auto& x : index) {
-        x = r.get<std::uint32_t>();
-        if (x >= stencils) r.fail("stencil index out of range");
+    const auto regions = r.get<std::uint32_t>();
+    if (regions != 1 && regions != 4) r.fail("valence " + std::to_string(v.valence) + ": invalid region count " + std::to_string(regions));
+    for (std::uint32_t g = 0; g < regions; ++g) {
+      Region region;
+      const std::string where = "valence " + std::to_string(v.valence) + (g ? ", band region " + std::to_string(g) : "");
+      const auto points = r.get<std::uint32_t>();
+      if (points == 0 || points > left() / 12) r.fail(where + ": truncated layout");
+      for (std::uint32_t h = 0; h < points; ++h) {
+        ChartPoint p{r.get<std::int32_t>(), r.get<std::int32_t>(), r.get<std::int32_t>()};
+        const bool ev = p.sector == 0 && p.a == 0 && p.b == 0;
+        if (!ev && (p.sector < 0 || p.sector >= v.valence || p.a < 1 || p.a > 64 || p.b < 0 || p.b >= p.a))
+          r.fail(where + ": invalid layout point [" + std::to_string(p.sector) + "," + std::to_string(p.a) + "," +
+                 std::to_string(p.b) + "]");
+        region.layout.push_back(p);
       }
-      v.index.push_back(std::move(index));
+      const auto stencils = r.get<std::uint32_t>();
+      if (stencils > left() / scalar / points) r.fail(where + ": truncated weights");
+      region.weights.resize(static_cast<std::size_t>(stencils) * points);
+      for (auto& x : region.weights) x = scalar == 8 ? r.get<double>() : static_cast<double>(r.get<float>());
+      for (int n : t.rates_) {
+        const std::size_t count = nodes_of(n) + ups_of(n) + downs_of(n);
+        if (count > left() / 4) r.fail(where + ": truncated index block");
+        std::vector<std::uint32_t> index(count);
+        for (auto& x : index) {
+          x = r.get<std::uint32_t>();
+          if (x >= stencils) r.fail(where + ": stencil index out of range");
+        }
+        region.index.push_back(std::move(index));
+      }
+      v.regions.push_back(std::move(region));
     }
+    if (v.valence == 6 && regions != 1) r.fail("the regular patch (valence 6) has band regions");
     t.valences_.push_back(std::move(v));
   }
   if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
@@ -117,8 +125,16 @@ int TriangleTables::rate_slot(int n) const {
   return n >= 0 && static_cast<std::size_t>(n) < slot_of_rate_.size() ? slot_of_rate_[static_cast<std::size_t>(n)] : -1;
 }
 
-TriangleTables::Grid TriangleTables::grid(int valence, int n) const {
+const TriangleTables::Region& TriangleTables::region_data(int valence, int region) const {
   const Valence& v = data(valence);
+  if (region < 0 || static_cast<std::size_t>(region) >= v.regions.size())
+    throw std::out_of_range("valence " + std::to_string(valence) + " has no region " + std::to_string(region) +
+                            " in the triangle table");
+  return v.regions[static_cast<std::size_t>(region)];
+}
+
+TriangleTables::Grid TriangleTables::grid(int valence, int n, int region) const {
+  const Region& v = region_data(valence, region);
   const int slot = rate_slot(n);
   if (slot < 0) throw std::out_of_range("rate " + std::to_string(n) + " is not in the triangle table");
   Grid g;

@@ -6,6 +6,12 @@
 // "up" and "down" centres of the grid's small triangles, for every stored rate
 // n. A stencil's weights go with the valence's layout: control point h is the
 // sector-chart position layout(v)[h] = [sector, a, b] around the EV. Doubles only.
+//
+// sqrt(3) tables hold, for each valence other than 6, three more regions: the
+// "band" triangles of the EV's second ring, where its vertex rule still
+// reaches. In sector 0's frame, corners counter-clockwise: region 1 =
+// (1,0),(2,0),(2,1); 2 = (1,0),(2,1),(1,1); 3 = (1,1),(2,1),(2,2); each has its
+// own layout. Region 0 is the patch (EV, e_0, e_1).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -43,7 +49,9 @@ class TriangleTables {
   bool has_valence(int v) const { return find(v) != nullptr; }
   bool exact(int valence) const { return data(valence).exact; }
   double residual(int valence) const { return data(valence).residual; }
-  const std::vector<ChartPoint>& layout(int valence) const { return data(valence).layout; }
+  // 1, or 4 where the valence has band regions.
+  int regions(int valence) const { return static_cast<int>(data(valence).regions.size()); }
+  const std::vector<ChartPoint>& layout(int valence, int region = 0) const { return region_data(valence, region).layout; }
 
   // Weights over layout(valence) at node (i/n, j/n), up centre
   // ((3i+1)/(3n), (3j+1)/(3n)) (i + j <= n-1) or down centre
@@ -68,20 +76,24 @@ class TriangleTables {
     const std::uint32_t* index_ = nullptr;
     long n_ = 1;
   };
-  // Throws std::out_of_range for a valence or rate the table does not hold.
-  Grid grid(int valence, int n) const;
+  // Throws std::out_of_range for a valence, region or rate the table does not hold.
+  Grid grid(int valence, int n, int region = 0) const;
 
  private:
-  struct Valence {
-    int valence = 0;
-    bool exact = true;
-    double residual = 0, neighbour = 0;
+  struct Region {
     std::vector<ChartPoint> layout;
     std::vector<double> weights;                // stencil_count * layout.size()
     std::vector<std::vector<std::uint32_t>> index;  // per rate slot: nodes, ups, downs
   };
+  struct Valence {
+    int valence = 0;
+    bool exact = true;
+    double residual = 0, neighbour = 0;
+    std::vector<Region> regions;
+  };
   const Valence* find(int v) const;
   const Valence& data(int v) const;  // throws std::out_of_range
+  const Region& region_data(int v, int region) const;  // throws std::out_of_range
   int rate_slot(int n) const;
 
   std::uint64_t hash_ = 0;
