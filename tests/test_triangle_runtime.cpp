@@ -186,10 +186,6 @@ TEST_CASE("triangle meshes and tables: bad input gets clear errors, and nothing 
   REQUIRE(run_stencilgen("-q --scheme loop --valence 3-5 --n 2 --out " + dir.string()).status == 0);
   expect(eval((dir / "loop").string(), (kMeshes / "tri-mix.obj").string()),
          "has valence 8, which the tables do not cover; generate it with: stencilgen --scheme loop --valence 8");
-  // sqrt(3) tables are refused by name.
-  REQUIRE(run_stencilgen("-q --scheme sqrt3 --valence 3 --n 3 --out " + dir.string()).status == 0);
-  expect(eval((dir / "sqrt3").string(), (kMeshes / "icosahedron.obj").string()),
-         "sqrt(3) tables: the runtime evaluates Loop triangle meshes only so far");
   // A corrupt table file, and stenciltess leaves no output behind.
   {
     std::string bytes;

@@ -147,7 +147,7 @@ Mesh subdivide_polygons(const Mesh& mesh, const SurfaceTables& t) {
 }
 
 PreparedMesh prepare_mesh(const Mesh& mesh, const SurfaceTables& tables, const std::string& scheme_name) {
-  PreparedMesh out{mesh, 0, {}, mesh.face_sizes};
+  PreparedMesh out{mesh, 0, {}, {}, mesh.face_sizes};
   auto missing_valence = [&](std::size_t v, int val) { return missing_valence_error(v, val, scheme_name); };
   const bool all_quads = std::all_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k == 4; });
   if (!all_quads) {
@@ -169,9 +169,7 @@ PreparedMesh prepare_mesh(const Mesh& mesh, const SurfaceTables& tables, const s
                         scheme_name + " --valence " + std::to_string(mesh.face_sizes[f]) + " --n <rates> --out <dir>");
     std::vector<std::size_t> offsets(mesh.face_count() + 1, 0);
     for (std::size_t f = 0; f < mesh.face_count(); ++f) offsets[f + 1] = offsets[f] + static_cast<std::size_t>(mesh.face_sizes[f]);
-    out.mesh = subdivide_polygons(mesh, tables);
-    out.child_offsets.push_back(std::move(offsets));
-    ++out.steps;
+    out.add_step(subdivide_polygons(mesh, tables), std::move(offsets), 2);
   }
   QuadTopology topo(out.mesh);
   for (std::size_t v = 0; v < topo.vertices(); ++v) {

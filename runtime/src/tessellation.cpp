@@ -34,12 +34,14 @@ std::vector<int> prepared_rates(const PreparedMesh& prepared, const std::vector<
                                 std::to_string(prepared.original_sizes.size()) + " faces");
   for (std::size_t f = 0; f < original.size(); ++f)
     if (original[f] < 1) throw std::invalid_argument("face " + std::to_string(f) + ": rate must be at least 1");
-  // Each step halves the faces: children get ceil(rate / 2).
+  // A step whose children are s times smaller across gives them ceil(rate / s).
   std::vector<int> rates = original;
-  for (const auto& offsets : prepared.child_offsets) {
+  for (std::size_t s = 0; s < prepared.child_offsets.size(); ++s) {
+    const auto& offsets = prepared.child_offsets[s];
+    const int scale = prepared.step_scales[s];
     std::vector<int> next(offsets.back());
     for (std::size_t f = 0; f + 1 < offsets.size(); ++f)
-      for (std::size_t c = offsets[f]; c < offsets[f + 1]; ++c) next[c] = std::max(1, (rates[f] + 1) / 2);
+      for (std::size_t c = offsets[f]; c < offsets[f + 1]; ++c) next[c] = std::max(1, (rates[f] + scale - 1) / scale);
     rates = std::move(next);
   }
   return rates;

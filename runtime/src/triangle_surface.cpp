@@ -28,7 +28,7 @@ const double* weights_at(const TriangleTables::Grid& grid, const TrianglePatch& 
 
 const double* TriangleSurface::stencil(std::size_t face, long a, long b, long n) const {
   const TrianglePatch& p = patches_.at(face);
-  return weights_at(tables_.grid(p.valence, static_cast<int>(n)), p, a, b, n);
+  return weights_at(tables_.grid(p.valence, static_cast<int>(n), p.region), p, a, b, n);
 }
 
 void TriangleSurface::evaluate_centres(std::size_t face, int n, std::array<float, 3>* out) const {
@@ -38,7 +38,7 @@ void TriangleSurface::evaluate_centres(std::size_t face, int n, std::array<float
   thread_local std::vector<std::array<double, 3>> local;
   local.resize(m);
   for (std::size_t h = 0; h < m; ++h) local[h] = pos[static_cast<std::size_t>(p.points[h])];
-  const TriangleTables::Grid grid = tables_.grid(p.valence, n);
+  const TriangleTables::Grid grid = tables_.grid(p.valence, n, p.region);
   auto put = [&](long a, long b) {
     const double* w = weights_at(grid, p, a, b, n);
     double x = 0, y = 0, z = 0;

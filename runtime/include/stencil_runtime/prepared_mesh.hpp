@@ -15,14 +15,22 @@ struct PreparedMesh {
   int steps = 0;  // subdivision steps applied
   // Per step: the first child of each face of the mesh before that step (size faces + 1).
   std::vector<std::vector<std::size_t>> child_offsets;
+  // Per step: how many times smaller its children are across (2 for the
+  // 1-to-4 splits, 3 for two sqrt(3) steps, which split each face in 9).
+  std::vector<int> step_scales;
   std::vector<int> original_sizes;  // corner count of each original face
 
-  // Records one step of a scheme that splits every face in four: face f of
-  // the mesh before it became faces 4f .. 4f+3 of `refined`.
-  void add_four_way_step(Mesh refined) {
+  // Records one step that split every face of the mesh into `children` faces
+  // `scale` times smaller across: face f became faces children*f .. of `refined`.
+  void add_uniform_step(Mesh refined, std::size_t children, int scale) {
     std::vector<std::size_t> offsets(mesh.face_count() + 1);
-    for (std::size_t f = 0; f < offsets.size(); ++f) offsets[f] = 4 * f;
+    for (std::size_t f = 0; f < offsets.size(); ++f) offsets[f] = children * f;
+    add_step(std::move(refined), std::move(offsets), scale);
+  }
+  void add_four_way_step(Mesh refined) { add_uniform_step(std::move(refined), 4, 2); }
+  void add_step(Mesh refined, std::vector<std::size_t> offsets, int scale) {
     child_offsets.push_back(std::move(offsets));
+    step_scales.push_back(scale);
     mesh = std::move(refined);
     ++steps;
   }

@@ -1,0 +1,146 @@
+// The runtime on triangle meshes with sqrt(3) tables, against plain sqrt(3)
+// subdivision (sqrt3_reference.hpp, written from Kobbelt's rules with no
+// runtime code): 2j steps, then the limit rule at the vertex that sits at
+// parameter (i/3^j, k/3^j) of each original face. This goes through the
+// runtime's double sqrt(3) isolation steps, the 1-to-9 child location, the
+// band regions of the extraordinary vertices' second rings and the regular
+// faces next to them. Then watertight tessellations and the command-line tools.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "cli.hpp"
+#include "runtime_checks.hpp"
+#include "sqrt3_reference.hpp"
+#include "stencil_runtime/triangle_tessellation.hpp"
+
+using namespace stencil_runtime;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
+const char* kTriangleMeshes[] = {"icosahedron", "tri-torus", "tri-mix"};
+
+// sqrt(3) tables at the rates 3^j the reference reaches (and 1), once per test process.
+fs::path sqrt3_tables() {
+  static fs::path made;
+  if (made.empty()) {
+    const fs::path dir = scratch_dir("triangle-runtime-sqrt3");
+    const CliResult r = run_stencilgen("--scheme sqrt3 --valence 3-8 --n 1,3,9,27 --out " + dir.string() + " -q");
+    if (r.status != 0) throw std::runtime_error(r.output);
+    made = dir / "sqrt3" / "sqrt3.sgt";
+  }
+  return made;
+}
+
+Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
+
+}  // namespace
+
+TEST_CASE("runtime sqrt(3) evaluation equals plain sqrt(3) subdivision and its limit rule", "[runtime][triangle][sqrt3]") {
+  const TriangleTables tables = TriangleTables::load(sqrt3_tables().string());
+  for (const char* name : kTriangleMeshes) {
+    const Mesh mesh = bundled(name);
+    const TriangleSurface surface(tables, mesh, "sqrt3");
+    // Every kind of face occurs: regular, the EV's own patch and the three band regions.
+    std::set<std::pair<bool, int>> kinds;
+    for (std::size_t f = 0; f < surface.topology().faces(); ++f)
+      kinds.emplace(surface.patch(f).valence == 6, surface.patch(f).region);
+    CHECK(kinds == std::set<std::pair<bool, int>>{{true, 0}, {false, 0}, {false, 1}, {false, 2}, {false, 3}});
+
+    sqrt3_reference::Subdivision reference(mesh);
+    const double size = extent(mesh);
+    double worst = 0;
+    long n = 1;
+    // n = 27 on the small mesh: its points fall inside the "down" cells of the 1-to-9 splits.
+    const int levels = std::string(name) == "icosahedron" ? 3 : 2;
+    for (int j = 1; j <= levels; ++j) {
+      reference.step();
+      reference.step();
+      n *= 3;
+      const auto limits = reference.limits();
+      for (std::size_t f = 0; f < mesh.face_count(); ++f)
+        for (long k = 0; k <= n; ++k)
+          for (long i = 0; i + k <= n; ++i) {
+            const Point ours = surface.evaluate(f, i, k, n);
+            const auto& ref = limits[static_cast<std::size_t>(reference.vertex_at(static_cast<int>(f), i, k, n))];
+            const double err = distance(ours, ref) / size;
+            worst = std::max(worst, err);
+            INFO(name << " face " << f << " at (" << i << "/" << n << ", " << k << "/" << n << "): " << err);
+            REQUIRE(err < 1e-12);
+          }
+    }
+    INFO(name << ": " << surface.prepared().steps << " double steps, largest difference " << worst);
+    SUCCEED();
+  }
+}
+
+TEST_CASE("sqrt(3) tessellations are closed oriented 2-manifolds for random rate mixes", "[runtime][triangle][sqrt3][tessellation]") {
+  const TriangleTables tables = TriangleTables::load(sqrt3_tables().string());
+  std::mt19937 rng(20261122u);
+  for (const char* name : kTriangleMeshes) {
+    const Mesh mesh = bundled(name);
+    const TriangleSurface surface(tables, mesh, "sqrt3");
+    for (int trial = 0; trial < 3; ++trial) {
+      std::vector<int> rates(mesh.face_count());
+      for (int& r : rates) r = trial == 0 ? 1 : std::uniform_int_distribution<int>(1, 27)(rng);
+      std::vector<int> prepared = prepared_rates(surface, rates);
+      for (int& r : prepared) r = table_rate_at_least(tables.rates(), r);
+      const PolygonSoup soup = tessellate(surface, prepared);
+      const auto directed = directed_edges(soup);
+      std::set<int> used;
+      for (const auto& [e, count] : directed) {
+        INFO(name << " trial " << trial << " edge " << e.first << "->" << e.second);
+        REQUIRE(count == 1);
+        REQUIRE(directed.count({e.second, e.first}) == 1);
+        REQUIRE(e.first != e.second);
+        used.insert(e.first);
+      }
+      REQUIRE(used.size() == soup.positions.size());
+      const long chi = static_cast<long>(soup.positions.size()) - static_cast<long>(directed.size() / 2) +
+                       static_cast<long>(soup.quads.size() + soup.triangles.size());
+      REQUIRE(chi == euler_characteristic(mesh));
+    }
+  }
+}
+
+TEST_CASE("stencileval and stenciltess take triangle meshes with sqrt(3) tables", "[runtime][triangle][sqrt3][tessellation]") {
+  const fs::path dir = scratch_dir("sqrt3-tools");
+  const std::string tables = sqrt3_tables().parent_path().string();
+  const std::string mix = (kMeshes / "tri-mix.obj").string();
+  const Mesh mesh = bundled("tri-mix");
+  sqrt3_reference::Subdivision reference(mesh);
+  for (int s = 0; s < 4; ++s) reference.step();
+  const auto limits = reference.limits();
+  {
+    std::ofstream q(dir / "q.txt");
+    q << "0 0 0\n1 1/3 1/3\n2 2/9 5/9\n3 1 0\n";
+  }
+  const CliResult r = run_stencileval("--tables " + tables + " --mesh " + mix + " --batch " + (dir / "q.txt").string());
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  std::istringstream lines(r.output);
+  const long queries[][3] = {{0, 0, 0}, {1, 3, 3}, {2, 2, 5}, {3, 9, 0}};  // face, i, k on n = 9
+  for (const auto& q : queries) {
+    Point p{};
+    REQUIRE(static_cast<bool>(lines >> p[0] >> p[1] >> p[2]));
+    const auto& ref = limits[static_cast<std::size_t>(reference.vertex_at(static_cast<int>(q[0]), q[1], q[2], 9))];
+    REQUIRE(distance(p, ref) / extent(mesh) < 1e-12);
+  }
+  for (const std::string& mode : {std::string("--rate 9"), std::string("--tolerance 0.01")}) {
+    const fs::path out = dir / "t.obj";
+    const CliResult t = run_stenciltess("--tables " + tables + " --mesh " + mix + " " + mode + " --out " + out.string());
+    INFO(mode << "\n" << t.output);
+    REQUIRE(t.status == 0);
+    const Mesh m = read_obj(out.string());
+    const auto directed = directed_edges(m);
+    for (const auto& [e, count] : directed) REQUIRE((count == 1 && directed.count({e.second, e.first}) == 1));
+    REQUIRE(static_cast<long>(m.vertex_count()) - static_cast<long>(directed.size() / 2) + static_cast<long>(m.face_count()) ==
+            euler_characteristic(mesh));
+  }
+  fs::remove_all(dir);
+}
