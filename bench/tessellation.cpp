@@ -6,8 +6,10 @@
 // rates in the same run (positions only, float, preallocated arrays), and the
 // ratio is printed. Also: table load time and memory. Triangle meshes: Loop
 // from its .sgt tables on the bundled triangle meshes and the triangulated torus
-// refined to >= 100k faces, against Bfr's Loop tessellation likewise.
-// Usage: bench_tessellation [NONPOLY.sgs] [CATMULL-CLARK.sgs] [MESH-NAME-FILTER] [LOOP.sgt]
+// refined by Loop steps to >= 100k faces, against Bfr's Loop tessellation
+// likewise; sqrt(3) on the same meshes (the torus refined by double sqrt(3)
+// steps), alone: OpenSubdiv has no sqrt(3).
+// Usage: bench_tessellation [NONPOLY.sgs] [CATMULL-CLARK.sgs] [MESH-NAME-FILTER] [LOOP.sgt] [SQRT3.sgt]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -44,8 +46,11 @@ Mesh refined(Mesh mesh, const SurfaceTables& rules, std::size_t min_faces) {
   return mesh;
 }
 
-Mesh loop_refined(Mesh mesh, const TriangleTables& rules, std::size_t min_faces) {
-  while (mesh.face_count() < min_faces) mesh = loop_subdivide_once(mesh, TriangleTopology(mesh), rules);
+// The scheme's own refinement: Loop steps, or double sqrt(3) steps (1-to-9).
+Mesh triangle_refined(Mesh mesh, const TriangleTables& rules, std::size_t min_faces) {
+  while (mesh.face_count() < min_faces)
+    mesh = rules.refinement() == TriangleRefinement::Loop ? loop_subdivide_once(mesh, TriangleTopology(mesh), rules)
+                                                          : sqrt3_subdivide_twice(mesh, TriangleTopology(mesh), rules);
   return mesh;
 }
 
@@ -137,18 +142,25 @@ int main(int argc, char** argv) {
       run_rows(scheme, m, LimitSurface(tables, m.mesh, scheme), tables.rates(), std::string(scheme) == "catmull-clark");
     }
   }
-  const std::string loop_path = argc > 4 ? argv[4] : "tables/loop/loop.sgt";
-  if (std::ifstream(loop_path)) {
-    const TriangleTables loop = TriangleTables::load(loop_path);
+  // Triangle schemes: Loop against Bfr's Loop; sqrt(3), which OpenSubdiv lacks, alone.
+  const std::string triangle_paths[2] = {argc > 4 ? argv[4] : "tables/loop/loop.sgt",
+                                         argc > 5 ? argv[5] : "tables/sqrt3/sqrt3.sgt"};
+  for (const char* scheme : {"loop", "sqrt3"}) {
+    const bool loop = std::string(scheme) == "loop";
+    const std::string& path = triangle_paths[loop ? 0 : 1];
+    if (!std::ifstream(path)) {
+      std::printf("\n# %s not found: no %s rows (stencilgen --scheme %s --valence 3-8 --n 24 --out tables)\n", path.c_str(),
+                  scheme, scheme);
+      continue;
+    }
+    const TriangleTables tables = TriangleTables::load(path);
     std::vector<NamedMesh> meshes;
     for (const char* name : {"icosahedron", "tri-torus", "tri-mix"}) meshes.push_back({name, read_obj(mesh_dir + name + ".obj")});
-    meshes.push_back({"tri-torus, refined", loop_refined(read_obj(mesh_dir + "tri-torus.obj"), loop, 100000)});
+    meshes.push_back({"tri-torus, refined", triangle_refined(read_obj(mesh_dir + "tri-torus.obj"), tables, 100000)});
     for (const NamedMesh& m : meshes) {
       if (m.name.find(only) == std::string::npos) continue;
-      run_rows("loop", m, TriangleSurface(loop, m.mesh, "loop"), loop.rates(), true);
+      run_rows(scheme, m, TriangleSurface(tables, m.mesh, scheme), tables.rates(), loop);
     }
-  } else {
-    std::printf("\n# %s not found: no Loop rows (stencilgen --scheme loop --valence 3-8 --n 24 --out tables)\n", loop_path.c_str());
   }
   return 0;
 }

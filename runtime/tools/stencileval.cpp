@@ -59,7 +59,7 @@ Point evaluate(const Evaluator& e, const Query& q, const std::string& scheme) {
 int main(int argc, char** argv) {
   CLI::App app{
       "stencileval: exact-stencil limit points of a control mesh at rational parameters: a quad mesh\n"
-      "with a quad scheme's tables (.sgs), a triangle mesh with Loop tables (.sgt).\n"
+      "with a quad scheme's tables (.sgs), a triangle mesh with Loop or sqrt(3) tables (.sgt).\n"
       "Parameter convention: for face F (v0, v1, v2, v3) as listed in the OBJ file, (0,0) is at v0,\n"
       "u runs along v0->v1 and v runs along v0->v3; for a triangle (v0, v1, v2), u runs along v0->v1,\n"
       "v along v0->v2, and u + v <= 1. Prints the point as `x y z` on the last line.\n\n"

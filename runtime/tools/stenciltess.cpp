@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
   using namespace stencil_runtime;
   CLI::App app{
       "stenciltess: watertight adaptive tessellation of a control mesh (the paper's dual scheme): a quad\n"
-      "mesh with a quad scheme's tables (.sgs), a triangle mesh with Loop tables (.sgt). One exact limit\n"
+      "mesh with a quad scheme's tables (.sgs), a triangle mesh with Loop or sqrt(3) tables (.sgt). One exact limit\n"
       "point per grid cell (quads) or small grid triangle (triangles) of each face at its own rate; quads\n"
       "(triangles: hexagons as two quads) inside faces, triangle zippers along edges, a polygon around every\n"
       "vertex. The output is closed and consistently oriented for any mix of rates.\n\n"
