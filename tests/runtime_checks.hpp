@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <string>
 #include <utility>
 
 #include "stencil_runtime/mesh.hpp"
@@ -59,4 +60,27 @@ inline long euler_characteristic(const stencil_runtime::Mesh& mesh) {
     off += static_cast<std::size_t>(k);
   }
   return static_cast<long>(mesh.vertex_count()) - static_cast<long>(edges.size()) + static_cast<long>(mesh.face_count());
+}
+
+// The first defect of a tessellation as a closed, consistently oriented
+// 2-manifold with Euler characteristic `chi` whose points are all used and
+// distinct ("" when there is none), by an independent directed-edge count.
+inline std::string tessellation_defect(const stencil_runtime::PolygonSoup& soup, long chi) {
+  const auto directed = directed_edges(soup);
+  std::set<int> used;
+  for (const auto& [e, count] : directed) {
+    const std::string edge = std::to_string(e.first) + "->" + std::to_string(e.second);
+    if (count != 1) return "edge " + edge + " occurs " + std::to_string(count) + " times";
+    if (!directed.count({e.second, e.first})) return "edge " + edge + " has no reverse";
+    if (e.first == e.second) return "degenerate edge " + edge;
+    used.insert(e.first);
+  }
+  if (used.size() != soup.positions.size()) return "unused points";
+  const long found = static_cast<long>(soup.positions.size()) - static_cast<long>(directed.size() / 2) +
+                     static_cast<long>(soup.quads.size() + soup.triangles.size());
+  if (found != chi) return "Euler characteristic " + std::to_string(found) + ", expected " + std::to_string(chi);
+  // Every limit point computed once: no two output vertices coincide.
+  const std::set<std::array<float, 3>> distinct(soup.positions.begin(), soup.positions.end());
+  if (distinct.size() != soup.positions.size()) return "repeated points";
+  return "";
 }
