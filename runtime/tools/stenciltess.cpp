@@ -125,8 +125,10 @@ int main(int argc, char** argv) {
     write_polygons(soup, out);
     const auto [lo, hi] = std::minmax_element(prepared.begin(), prepared.end());
     const double tess = result.seconds;
-    std::printf("%zu faces (%zu after %d subdivision step%s to isolate extraordinary vertices), rates %d..%d\n",
-                mesh.face_count(), prepared.size(), result.steps, result.steps == 1 ? "" : "s", *lo, *hi);
+    const bool double_steps = triangles && triangle_tables->refinement() == TriangleRefinement::Sqrt3;
+    std::printf("%zu faces (%zu after %d %s step%s to isolate extraordinary vertices), rates %d..%d\n",
+                mesh.face_count(), prepared.size(), result.steps, double_steps ? "double sqrt(3)" : "subdivision",
+                result.steps == 1 ? "" : "s", *lo, *hi);
     std::printf("%zu limit points, %zu quads + %zu triangles (%zu triangles), tessellated in %.4f s (%.1f M triangles/s), "
                 "setup %.4f s\n",
                 soup.positions.size(), soup.quads.size(), soup.triangles.size(), soup.triangle_count(), tess,
