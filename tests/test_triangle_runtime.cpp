@@ -184,6 +184,22 @@ TEST_CASE("triangle meshes and tables: bad input gets clear errors, and nothing 
     std::ofstream(dir / "bad.sgt", std::ios::binary) << bytes;
   }
   expect(eval((dir / "bad.sgt").string(), (kMeshes / "icosahedron.obj").string()), "bad.sgt: checksum mismatch");
+  // A version 1 file (before the sqrt(3) band regions), its checksum made valid
+  // again (FNV-1a 64 over every byte before the last eight): refused by version.
+  {
+    std::string bytes;
+    {
+      std::ifstream in(loop, std::ios::binary);
+      bytes.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    bytes[8] = 1, bytes[9] = bytes[10] = bytes[11] = 0;  // the u32 after the 8-byte magic
+    std::uint64_t h = 14695981039346656037ull;
+    for (std::size_t k = 0; k + 8 < bytes.size(); ++k) h = (h ^ static_cast<unsigned char>(bytes[k])) * 1099511628211ull;
+    for (int k = 0; k < 8; ++k) bytes[bytes.size() - 8 + static_cast<std::size_t>(k)] = static_cast<char>((h >> (8 * k)) & 0xff);
+    std::ofstream(dir / "old.sgt", std::ios::binary) << bytes;
+  }
+  expect(eval((dir / "old.sgt").string(), (kMeshes / "icosahedron.obj").string()),
+         "old.sgt: format version 1 is not supported (expected 2; regenerate the tables");
   const fs::path out = dir / "never.ply";
   expect(run_stenciltess("--tables " + (dir / "bad.sgt").string() + " --mesh " + (kMeshes / "icosahedron.obj").string() +
                          " --rate 3 --out " + out.string()),
