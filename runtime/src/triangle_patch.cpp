@@ -142,10 +142,4 @@ std::optional<TrianglePatch> find_triangle_patch(const TriangleTopology& t, std:
   return std::nullopt;
 }
 
-TrianglePatch gather_triangle_patch(const TriangleTopology& t, std::size_t face, const TriangleTables& tables) {
-  if (auto patch = find_triangle_patch(t, face, tables)) return std::move(*patch);
-  throw MeshError("face " + std::to_string(face) +
-                  ": extraordinary vertices lie too close to it for its patch to be gathered (the mesh was not isolated enough)");
-}
-
 }  // namespace stencil_runtime

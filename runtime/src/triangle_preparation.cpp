@@ -3,7 +3,6 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "stencil_runtime/triangle_patch.hpp"
 
 namespace stencil_runtime {
 
@@ -15,10 +14,15 @@ void axpy(P& acc, double w, const P& p) {
   for (int k = 0; k < 3; ++k) acc[k] += w * p[k];
 }
 
-// Every face's patch can be gathered.
-bool isolated(const TriangleTopology& topo, const TriangleTables& tables) {
-  for (std::size_t f = 0; f < topo.faces(); ++f)
-    if (!find_triangle_patch(topo, f, tables)) return false;
+// Every face's patch, or false when one cannot be gathered.
+bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, std::vector<TrianglePatch>& patches) {
+  patches.clear();
+  patches.reserve(topo.faces());
+  for (std::size_t f = 0; f < topo.faces(); ++f) {
+    auto patch = find_triangle_patch(topo, f, tables);
+    if (!patch) return false;
+    patches.push_back(std::move(*patch));
+  }
   return true;
 }
 
@@ -161,16 +165,17 @@ Mesh loop_subdivide_once(const Mesh& mesh, const TriangleTopology& topo, const T
   return out;
 }
 
-PreparedMesh prepare_triangle_mesh(const Mesh& mesh, const TriangleTables& tables, const std::string& scheme_name) {
+PreparedTriangleMesh prepare_triangle_mesh(const Mesh& mesh, const TriangleTables& tables, const std::string& scheme_name) {
   PreparedMesh out{mesh, 0, {}, {}, mesh.face_sizes};
   TriangleTopology topo(mesh);
+  std::vector<TrianglePatch> patches;
   for (std::size_t v = 0; v < topo.vertices(); ++v) {
     const int val = topo.valence(static_cast<int>(v));
     check_valence_limit(v, val);
     if (!tables.has_valence(val)) throw missing_valence_error(v, val, scheme_name);
   }
   const bool sqrt3 = tables.refinement() == TriangleRefinement::Sqrt3;
-  while (!isolated(topo, tables)) {
+  while (!gather_patches(topo, tables, patches)) {
     if (out.steps == 3)
       throw MeshError(std::string("extraordinary vertices are still too close after 3 ") +
                       (sqrt3 ? "double sqrt(3) steps" : "subdivision steps"));
@@ -178,7 +183,7 @@ PreparedMesh prepare_triangle_mesh(const Mesh& mesh, const TriangleTables& table
     else out.add_four_way_step(loop_subdivide_once(out.mesh, topo, tables));
     topo = TriangleTopology(out.mesh);
   }
-  return out;
+  return {std::move(out), std::move(topo), std::move(patches)};
 }
 
 FaceParameter locate_triangle(const PreparedMesh& prepared, std::size_t face, long i, long j, long n) {

@@ -5,13 +5,14 @@
 namespace stencil_runtime {
 
 TriangleSurface::TriangleSurface(const TriangleTables& tables, const Mesh& mesh, const std::string& scheme_name)
+    : TriangleSurface(tables, mesh.face_count(), prepare_triangle_mesh(mesh, tables, scheme_name)) {}
+
+TriangleSurface::TriangleSurface(const TriangleTables& tables, std::size_t original_faces, PreparedTriangleMesh&& prepared)
     : tables_(tables),
-      original_faces_(mesh.face_count()),
-      prepared_(prepare_triangle_mesh(mesh, tables, scheme_name)),
-      topology_(prepared_.mesh) {
-  patches_.reserve(topology_.faces());
-  for (std::size_t f = 0; f < topology_.faces(); ++f) patches_.push_back(gather_triangle_patch(topology_, f, tables));
-}
+      original_faces_(original_faces),
+      prepared_(std::move(prepared.prepared)),
+      topology_(std::move(prepared.topology)),
+      patches_(std::move(prepared.patches)) {}
 
 namespace {
 

@@ -53,8 +53,4 @@ inline std::optional<int> chart_vertex(const TriangleTopology& topology, std::si
 //   is regular: the first rotation whose layout walks all succeed.
 std::optional<TrianglePatch> find_triangle_patch(const TriangleTopology& topology, std::size_t face, const TriangleTables& tables);
 
-// find_triangle_patch, throwing MeshError naming the face (the mesh needs
-// isolating, see prepare_triangle_mesh).
-TrianglePatch gather_triangle_patch(const TriangleTopology& topology, std::size_t face, const TriangleTables& tables);
-
 }  // namespace stencil_runtime

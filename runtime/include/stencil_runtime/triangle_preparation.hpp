@@ -8,6 +8,7 @@
 #include <string>
 
 #include "prepared_mesh.hpp"
+#include "triangle_patch.hpp"
 #include "triangle_table.hpp"
 #include "triangle_topology.hpp"
 
@@ -39,13 +40,21 @@ const std::array<TernaryCell, 9>& ternary_cells();
 // each with its corners in the cell's order.
 Mesh sqrt3_subdivide_twice(const Mesh& mesh, const TriangleTopology& topology, const TriangleTables& rules);
 
+// A prepared triangle mesh with its topology and every face's patch, as the
+// isolation check found them.
+struct PreparedTriangleMesh {
+  PreparedMesh prepared;
+  TriangleTopology topology;  // of prepared.mesh
+  std::vector<TrianglePatch> patches;
+};
+
 // Checks that the mesh is a closed manifold of triangles and its valences are
 // in the tables (an error names the vertex and the stencilgen call that would
 // add its valence), then refines until every face's patch can be gathered
 // (find_triangle_patch), by Loop steps or by double sqrt(3) steps, at most 3.
 // Loop needs 1 step for the bundled meshes, sqrt(3) 1 or 2 double steps:
 // its band reaches 4 rings from an extraordinary vertex.
-PreparedMesh prepare_triangle_mesh(const Mesh& mesh, const TriangleTables& tables, const std::string& scheme_name);
+PreparedTriangleMesh prepare_triangle_mesh(const Mesh& mesh, const TriangleTables& tables, const std::string& scheme_name);
 
 // Where parameter (i/n, j/n) of an original face (u along corner 0 -> 1, v
 // along 0 -> 2, i + j <= n) lands: the prepared face and its grid indices on

@@ -15,7 +15,7 @@ namespace stencil_runtime {
 
 class TriangleSurface {
  public:
-  // Prepares the mesh (see prepare_triangle_mesh) and gathers every face's patch.
+  // Prepares the mesh (see prepare_triangle_mesh), which gathers every face's patch.
   TriangleSurface(const TriangleTables& tables, const Mesh& mesh, const std::string& scheme_name);
 
   std::size_t original_faces() const { return original_faces_; }
@@ -42,6 +42,8 @@ class TriangleSurface {
   void evaluate_centres(std::size_t prepared_face, int n, std::array<float, 3>* out) const;
 
  private:
+  TriangleSurface(const TriangleTables& tables, std::size_t original_faces, PreparedTriangleMesh&& prepared);
+
   const TriangleTables& tables_;
   std::size_t original_faces_;
   PreparedMesh prepared_;
