@@ -107,12 +107,14 @@ const std::array<TernaryCell, 9>& ternary_cells() {
 Mesh sqrt3_subdivide_twice(const Mesh& mesh, const TriangleTopology& topo, const TriangleTables& rules) {
   const Mesh once = sqrt3_step(mesh, topo, rules);
   const Mesh twice = sqrt3_step(once, TriangleTopology(once), rules);
-  // The second step's faces by their first directed edge, to list them cell by cell.
-  std::unordered_map<std::uint64_t, std::size_t> face_of_edge;
-  face_of_edge.reserve(3 * twice.face_count());
+  // The second step's faces by their directed edges (the vertex opposite each),
+  // to list them cell by cell.
+  std::unordered_map<std::uint64_t, int> opposite_of_edge;
+  opposite_of_edge.reserve(3 * twice.face_count());
   auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
+  const std::vector<int>& fv = twice.face_vertices;
   for (std::size_t f = 0; f < twice.face_count(); ++f)
-    for (int c = 0; c < 3; ++c) face_of_edge[key(twice.face_vertices[3 * f + c], twice.face_vertices[3 * f + (c + 1) % 3])] = f;
+    for (std::size_t c = 0; c < 3; ++c) opposite_of_edge[key(fv[3 * f + c], fv[3 * f + (c + 1) % 3])] = fv[3 * f + (c + 2) % 3];
   Mesh out;
   out.positions = twice.positions;
   out.face_sizes.assign(9 * topo.faces(), 3);
@@ -122,9 +124,8 @@ Mesh sqrt3_subdivide_twice(const Mesh& mesh, const TriangleTopology& topo, const
       const auto corners = cell.corners();
       int v[3];
       for (int k = 0; k < 3; ++k) v[k] = ternary_vertex(topo, f, corners[k][0], corners[k][1]);
-      const auto it = face_of_edge.find(key(v[0], v[1]));
-      const std::size_t g = it == face_of_edge.end() ? twice.face_count() : it->second;
-      if (g == twice.face_count() || twice.face_vertices[3 * g] + twice.face_vertices[3 * g + 1] + twice.face_vertices[3 * g + 2] != v[0] + v[1] + v[2])
+      const auto it = opposite_of_edge.find(key(v[0], v[1]));
+      if (it == opposite_of_edge.end() || it->second != v[2])
         throw std::logic_error("two sqrt(3) steps did not give the 1-to-9 split of face " + std::to_string(f));
       out.face_vertices.insert(out.face_vertices.end(), {v[0], v[1], v[2]});
     }
