@@ -3,6 +3,8 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <stdexcept>
 #include <string>
 
 struct CliResult {
@@ -33,4 +35,20 @@ inline std::filesystem::path scratch_dir(const std::string& name) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+// The binary table file stencilgen writes for `scheme` with `options` (e.g.
+// "--valence 3-8 --n 24"): <dir>/<scheme>/<scheme>.<extension>, generated once
+// per test process for each scheme and options.
+inline std::filesystem::path generated_table(const std::string& scheme, const std::string& options,
+                                             const std::string& extension) {
+  static std::map<std::string, std::filesystem::path> made;
+  const std::string key = scheme + " " + options;
+  if (!made.count(key)) {
+    const std::filesystem::path dir = scratch_dir("tables-" + scheme + "-" + std::to_string(made.size()));
+    const CliResult r = run_stencilgen("--scheme " + scheme + " " + options + " --out " + dir.string() + " -q");
+    if (r.status != 0) throw std::runtime_error(r.output);
+    made[key] = dir / scheme / (scheme + "." + extension);
+  }
+  return made[key];
 }

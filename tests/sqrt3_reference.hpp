@@ -108,14 +108,13 @@ class Subdivision {
   // along 0 -> 2); n must divide kDenominator and the mesh must have been
   // refined to that lattice (2j steps for n = 3^j).
   int vertex_at(int f, long i, long k, long n) const {
-    if (index_.size() != positions_.size()) {
-      index_.clear();
+    if (indexed_ != positions_.size()) {
       lookup_.clear();
       for (std::size_t p = 0; p < places_.size(); ++p)
         for (const Place& q : places_[p])
           if (!lookup_.emplace(std::array<long, 3>{q.face, q.w[1], q.w[2]}, static_cast<int>(p)).second)
             throw std::logic_error("two vertices at one place");
-      index_.assign(positions_.size(), 1);
+      indexed_ = positions_.size();
     }
     const long s = kDenominator / n;
     const auto it = lookup_.find({f, s * i, s * k});
@@ -200,7 +199,7 @@ class Subdivision {
   std::vector<std::vector<Place>> places_;
   std::vector<std::array<int, 3>> original_;
   std::map<std::pair<int, int>, int> across_;  // (face, neighbour) -> the face's shared edge
-  mutable std::vector<char> index_;                         // built for this many vertices
+  mutable std::size_t indexed_ = 0;                    // lookup_ covers this many vertices
   mutable std::map<std::array<long, 3>, int> lookup_;  // (face, w1, w2) -> vertex
 };
 

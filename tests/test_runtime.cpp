@@ -23,16 +23,7 @@ namespace {
 const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
 
 // Tables generated once per test process.
-fs::path tables_for(const std::string& scheme) {
-  static std::map<std::string, fs::path> made;
-  if (!made.count(scheme)) {
-    const fs::path dir = scratch_dir("runtime-tables-" + scheme);
-    const CliResult r = run_stencilgen("--scheme " + scheme + " --valence 3-8 --n 24 --out " + dir.string() + " -q");
-    if (r.status != 0) throw std::runtime_error(r.output);
-    made[scheme] = dir / scheme / (scheme + ".sgs");
-  }
-  return made[scheme];
-}
+fs::path tables_for(const std::string& scheme) { return generated_table(scheme, "--valence 3-8 --n 24", "sgs"); }
 
 const char* kBundled[] = {"cube", "torus-3-5", "chess-piece", "bumpy-sphere"};
 

@@ -26,16 +26,7 @@ const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
 const char* kTriangleMeshes[] = {"icosahedron", "tri-torus", "tri-mix"};
 
 // sqrt(3) tables at the rates 3^j the reference reaches (and 1), once per test process.
-fs::path sqrt3_tables() {
-  static fs::path made;
-  if (made.empty()) {
-    const fs::path dir = scratch_dir("triangle-runtime-sqrt3");
-    const CliResult r = run_stencilgen("--scheme sqrt3 --valence 3-8 --n 1,3,9,27 --out " + dir.string() + " -q");
-    if (r.status != 0) throw std::runtime_error(r.output);
-    made = dir / "sqrt3" / "sqrt3.sgt";
-  }
-  return made;
-}
+fs::path sqrt3_tables() { return generated_table("sqrt3", "--valence 3-8 --n 1,3,9,27", "sgt"); }
 
 Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
 

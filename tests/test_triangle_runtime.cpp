@@ -24,16 +24,7 @@ const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
 const char* kTriangleMeshes[] = {"icosahedron", "tri-torus", "tri-mix"};
 
 // Loop tables as the quick start makes them, once per test process.
-fs::path loop_tables() {
-  static fs::path made;
-  if (made.empty()) {
-    const fs::path dir = scratch_dir("triangle-runtime-loop");
-    const CliResult r = run_stencilgen("--scheme loop --valence 3-8 --n 24 --out " + dir.string() + " -q");
-    if (r.status != 0) throw std::runtime_error(r.output);
-    made = dir / "loop" / "loop.sgt";
-  }
-  return made;
-}
+fs::path loop_tables() { return generated_table("loop", "--valence 3-8 --n 24", "sgt"); }
 
 Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
 
