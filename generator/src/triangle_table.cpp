@@ -172,11 +172,9 @@ std::string triangle_table_to_json(const TriangleTable& t) {
   out += t.exact ? std::string(" \"stencil\": \"limit point = sum of numerators[h] * P[layout[h]] / denominator\",\n")
                  : std::string(" \"stencil\": \"limit point = sum of weights[h] * P[layout[h]] (not exact: " +
                                std::to_string(kTableDigits) + " significant digits)\",\n");
-  if (t.regions.size() == 1) {
-    append_region(out, " ", t, t.regions.front());
-  } else {
-    append_region(out, " ", t, t.regions.front());
-    out.resize(out.size() - 1);
+  append_region(out, " ", t, t.regions.front());
+  if (t.regions.size() > 1) {
+    out.resize(out.size() - 1);  // the band follows the last "]"
     out += ",\n \"band\": [\n";
     for (std::size_t k = 1; k < t.regions.size(); ++k) {
       const TriangleTable::Region& r = t.regions[k];
