@@ -20,8 +20,9 @@
 #include <vector>
 
 #include "osd_tessellation.hpp"
+#include "stencil_runtime/mesh_io.hpp"
+#include "stencil_runtime/subdivide.hpp"
 #include "stencil_runtime/tessellation.hpp"
-#include "stencil_runtime/triangle_tessellation.hpp"
 
 using namespace stencil_runtime;
 
@@ -41,16 +42,9 @@ struct NamedMesh {
   Mesh mesh;
 };
 
-Mesh refined(Mesh mesh, const SurfaceTables& rules, std::size_t min_faces) {
-  while (mesh.face_count() < min_faces) mesh = subdivide_once(mesh, QuadTopology(mesh), rules);
-  return mesh;
-}
-
-// The scheme's own refinement: Loop steps, or double sqrt(3) steps (1-to-9).
-Mesh triangle_refined(Mesh mesh, const TriangleTables& rules, std::size_t min_faces) {
-  while (mesh.face_count() < min_faces)
-    mesh = rules.refinement() == TriangleRefinement::Loop ? loop_subdivide_once(mesh, TriangleTopology(mesh), rules)
-                                                          : sqrt3_subdivide_twice(mesh, TriangleTopology(mesh), rules);
+// The scheme's own refinement (quad steps; Loop steps, or double sqrt(3) steps, 1-to-9).
+Mesh refined(Mesh mesh, const Tables& rules, std::size_t min_faces) {
+  while (mesh.face_count() < min_faces) mesh = subdivide(rules, mesh);
   return mesh;
 }
 
@@ -69,9 +63,9 @@ double median3(F f) {
   return t[1];
 }
 
-template <class Surface>
-void run_rows(const char* scheme, const NamedMesh& m, const Surface& surface, const std::vector<int>& table_rates,
-          bool with_osd) {
+void run_rows(const char* scheme, const NamedMesh& m, const std::shared_ptr<const Tables>& tables, bool with_osd) {
+  const Surface surface(SurfaceTopology::create(tables, m.mesh.vertex_count(), m.mesh.face_sizes, m.mesh.face_vertices),
+                        m.mesh.positions);
   const bool loop = std::string(scheme) == "loop";
   std::unique_ptr<osd_bench::BfrTessellator> osd;
   if (with_osd) osd = std::make_unique<osd_bench::BfrTessellator>(
@@ -79,15 +73,14 @@ void run_rows(const char* scheme, const NamedMesh& m, const Surface& surface, co
   for (int rate : {4, 8, 16, 24, 0}) {
     std::mt19937 rng(7);
     const std::vector<int> rates = rate_set(m.mesh.face_count(), rate, rng);
-    std::vector<int> prepared = prepared_rates(surface, rates);
-    for (int& r : prepared) r = table_rate_at_least(table_rates, r);
     for (int threads : {1, 2}) {
       std::size_t triangles = 0;
-      PolygonSoup soup;  // reused across runs, as OpenSubdiv's side reuses preallocated arrays
-      tessellate_into(surface, prepared, soup, {threads});
+      // A whole static tessellation: the plan (rates, connectivity) and the points.
       const double ours = median3([&] {
         const auto s = Clock::now();
-        tessellate_into(surface, prepared, soup, {threads});
+        const TessellationPlan plan(surface.shared_topology(), rates, {threads});
+        PolygonSoup soup = plan.make_soup();
+        plan.evaluate(surface, soup.positions.data());
         const double secs = std::chrono::duration<double>(Clock::now() - s).count();
         triangles = soup.triangle_count();
         return secs;
@@ -123,23 +116,23 @@ int main(int argc, char** argv) {
 
   const double before = resident_mb();
   const auto t0 = Clock::now();
-  const SurfaceTables nonpoly = SurfaceTables::load(nonpoly_path);
+  const auto nonpoly = Tables::load(nonpoly_path);
   const double load_s = std::chrono::duration<double>(Clock::now() - t0).count();
   std::printf("# table load: %s, %.1f ms, resident memory +%.1f MB\n", nonpoly_path.c_str(), load_s * 1e3,
               resident_mb() - before);
-  const SurfaceTables cc = SurfaceTables::load(cc_path);
+  const auto cc = Tables::load(cc_path);
 
   std::printf("\n| scheme | mesh | control faces | rate | threads | triangles | ours (M tri/s) | OpenSubdiv Bfr (M tri/s) | ratio |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
   for (const auto* scheme : {"nonpoly", "catmull-clark"}) {
-    const SurfaceTables& tables = std::string(scheme) == "nonpoly" ? nonpoly : cc;
+    const auto& tables = std::string(scheme) == "nonpoly" ? nonpoly : cc;
     std::vector<NamedMesh> meshes;
     for (const char* name : {"cube", "torus-3-5", "chess-piece", "bumpy-sphere"})
       meshes.push_back({name, read_obj(mesh_dir + name + ".obj")});
-    meshes.push_back({"chess-piece, refined", refined(read_obj(mesh_dir + "chess-piece.obj"), tables, 100000)});
+    meshes.push_back({"chess-piece, refined", refined(read_obj(mesh_dir + "chess-piece.obj"), *tables, 100000)});
     for (const NamedMesh& m : meshes) {
       if (m.name.find(only) == std::string::npos) continue;
-      run_rows(scheme, m, LimitSurface(tables, m.mesh, scheme), tables.rates(), std::string(scheme) == "catmull-clark");
+      run_rows(scheme, m, tables, std::string(scheme) == "catmull-clark");
     }
   }
   // Triangle schemes: Loop against Bfr's Loop; sqrt(3), which OpenSubdiv lacks, alone.
@@ -153,13 +146,13 @@ int main(int argc, char** argv) {
                   scheme, scheme);
       continue;
     }
-    const TriangleTables tables = TriangleTables::load(path);
+    const auto tables = Tables::load(path);
     std::vector<NamedMesh> meshes;
     for (const char* name : {"icosahedron", "tri-torus", "tri-mix"}) meshes.push_back({name, read_obj(mesh_dir + name + ".obj")});
-    meshes.push_back({"tri-torus, refined", triangle_refined(read_obj(mesh_dir + "tri-torus.obj"), tables, 100000)});
+    meshes.push_back({"tri-torus, refined", refined(read_obj(mesh_dir + "tri-torus.obj"), *tables, 100000)});
     for (const NamedMesh& m : meshes) {
       if (m.name.find(only) == std::string::npos) continue;
-      run_rows(scheme, m, TriangleSurface(tables, m.mesh, scheme), tables.rates(), loop);
+      run_rows(scheme, m, tables, loop);
     }
   }
   return 0;

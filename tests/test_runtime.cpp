@@ -13,9 +13,12 @@
 #include "bfr_reference.hpp"
 #include "cli.hpp"
 #include "runtime_checks.hpp"
-#include "stencil_runtime/tessellation.hpp"
+#include "runtime_api.hpp"
+#include "mesh/uniform_topology.hpp"
+#include "tables/quad_tables.hpp"
 
 using namespace stencil_runtime;
+using namespace test_runtime;
 namespace fs = std::filesystem;
 
 namespace {
@@ -30,10 +33,10 @@ const char* kBundled[] = {"cube", "torus-3-5", "chess-piece", "bumpy-sphere"};
 }  // namespace
 
 TEST_CASE("runtime Catmull-Clark evaluation equals OpenSubdiv on every bundled mesh", "[runtime][opensubdiv]") {
-  const SurfaceTables tables = SurfaceTables::load(tables_for("catmull-clark").string());
+  const auto tables = Tables::load(tables_for("catmull-clark").string());
   for (const char* name : kBundled) {
     const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
-    const LimitSurface surface(tables, mesh, "catmull-clark");
+    const Surface surface = surface_of(tables, mesh);
     bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices);
     const double size = extent(mesh);
     double worst = 0;
@@ -41,7 +44,7 @@ TEST_CASE("runtime Catmull-Clark evaluation equals OpenSubdiv on every bundled m
       for (long n : {1L, 2L, 3L, 5L, 8L})
         for (long j = 0; j <= n; ++j)
           for (long i = 0; i <= n; ++i) {
-            const Point ours = surface.evaluate(f, i, j, n);
+            const Point ours = at_grid(surface, f, i, j, n);
             const auto ref = reference.evaluate(static_cast<int>(f), double(i) / n, double(j) / n);
             const double err = distance(ours, ref) / size;
             worst = std::max(worst, err);
@@ -54,17 +57,17 @@ TEST_CASE("runtime Catmull-Clark evaluation equals OpenSubdiv on every bundled m
 }
 
 TEST_CASE("the non-polynomial surface is continuous across every edge and vertex of the bundled meshes", "[runtime]") {
-  const SurfaceTables tables = SurfaceTables::load(tables_for("nonpoly").string());
+  const auto tables = Tables::load(tables_for("nonpoly").string());
   for (const char* name : kBundled) {
     const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
-    const LimitSurface surface(tables, mesh, "nonpoly");
-    const QuadTopology topo(mesh);
+    const Surface surface = surface_of(tables, mesh);
+    const QuadTopology topo(Connectivity{mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices});
     const double size = extent(mesh);
     const long n = 12;
     // A point on edge c -> c+1 of face f at fraction t/n from corner c, in f's parameters.
     auto on_edge = [&](std::size_t f, int c, long t) {
       const long u[4] = {t, n, n - t, 0}, v[4] = {0, t, n, n - t};
-      return surface.evaluate(f, u[c & 3], v[c & 3], n);
+      return at_grid(surface, f, u[c & 3], v[c & 3], n);
     };
     for (std::uint32_t h = 0; h < 4 * topo.faces(); ++h) {
       const std::uint32_t o = topo.twin(h);
@@ -79,18 +82,16 @@ TEST_CASE("the non-polynomial surface is continuous across every edge and vertex
 }
 
 TEST_CASE("tessellations are closed oriented 2-manifolds for random rate mixes 1..24", "[runtime][tessellation]") {
-  const SurfaceTables tables = SurfaceTables::load(tables_for("nonpoly").string());
+  const auto tables = Tables::load(tables_for("nonpoly").string());
   std::mt19937 rng(20261122u);
   for (const char* name : kBundled) {
     const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
-    const LimitSurface surface(tables, mesh, "nonpoly");
+    const Surface surface = surface_of(tables, mesh);
     const long chi_expected = euler_characteristic(mesh);
     for (int trial = 0; trial < 4; ++trial) {
       std::vector<int> rates(mesh.face_count());
       for (int& r : rates) r = std::uniform_int_distribution<int>(1, 24)(rng);
-      std::vector<int> prepared = prepared_rates(surface, rates);
-      for (int& r : prepared) r = table_rate_at_least(tables.rates(), r);
-      const PolygonSoup soup = tessellate(surface, prepared);
+      const PolygonSoup soup = tessellate(surface, rates);
       INFO(name << " trial " << trial);
       REQUIRE(tessellation_defect(soup, chi_expected) == "");
     }
@@ -100,12 +101,11 @@ TEST_CASE("tessellations are closed oriented 2-manifolds for random rate mixes 1
 TEST_CASE("tessellation vertices equal stencileval at their parameters", "[runtime][tessellation]") {
   const auto table = tables_for("nonpoly");
   const Mesh mesh = read_obj((kMeshes / "torus-3-5.obj").string());
-  const SurfaceTables tables = SurfaceTables::load(table.string());
-  const LimitSurface surface(tables, mesh, "nonpoly");
+  const Surface surface = surface_of(Tables::load(table.string()), mesh);
   // Original rate 6 -> prepared faces at rate 3 after one isolation step; the
   // centre (i, j) of child c of face F lies at an original parameter on the grid 1/12.
-  const PolygonSoup soup = tessellate(surface, prepared_rates(surface, std::vector<int>(mesh.face_count(), 6)));
-  REQUIRE(surface.prepared().steps == 1);
+  const PolygonSoup soup = tessellate(surface, std::vector<int>(mesh.face_count(), 6));
+  REQUIRE(surface.topology().refinement_steps() == 1);
   const long n = 3;
   const fs::path dir = scratch_dir("tess-eval");
   std::ofstream queries(dir / "q.txt");
@@ -172,8 +172,8 @@ TEST_CASE("bad tables and bad meshes get clear errors, and nothing is written", 
   CHECK(eval(good.string(), write("tri.obj", quadv + "f 1 2 3\nf 1 3 4\n")).output.find("has a boundary") != std::string::npos);
   CHECK(eval(good.string(), write("badindex.obj", quadv + "f 1 2 3 9\n")).output.find("badindex.obj:5: face index 9") != std::string::npos);
   CHECK(eval(good.string(), cube, "--face 6 --uv 0,0").output.find("face 6 does not exist") != std::string::npos);
-  CHECK(eval(good.string(), cube, "--face 0 --uv 1/29,0").output.find("--n 29") != std::string::npos);
-  CHECK(eval(good.string(), cube, "--face 0 --uv 3/2,0").output.find("outside [0, 1]") != std::string::npos);
+  CHECK(eval(good.string(), cube, "--face 0 --uv 1/29,0").output.find("tables with rate 29 make it exact") != std::string::npos);
+  CHECK(eval(good.string(), cube, "--face 0 --uv 3/2,0").output.find("lies outside face 0 (its domain is 0 <= u, v <= 1)") != std::string::npos);
   // A valence the tables lack: name the vertex and the stencilgen call.
   const fs::path only5 = dir / "only5";
   REQUIRE(run_stencilgen("--scheme nonpoly --valence 5 --n 4 --out " + only5.string() + " -q").status == 0);
@@ -228,15 +228,19 @@ TEST_CASE("the runtime loads the exact JSON tables too, with the same stencils a
   REQUIRE(run_stencilgen("--scheme nonpoly --valence 3,5 --n 1-6 --out " + dir.string() + " -q").status == 0);
   const fs::path json_dir = dir / "nonpoly";
   fs::rename(json_dir / "nonpoly.sgs", dir / "nonpoly.sgs");
-  const SurfaceTables binary = SurfaceTables::load((dir / "nonpoly.sgs").string());
-  const SurfaceTables exact = SurfaceTables::load(json_dir.string(), binary.scheme_hash());
+  const QuadTables binary = QuadTables::load_binary((dir / "nonpoly.sgs").string());
+  const QuadTables exact = QuadTables::load_json_directory(json_dir.string(), binary.scheme_hash());
+  // Tables::load reads such a directory too, with the scheme's name from the tables.
+  const auto loaded = Tables::load(json_dir.string());
+  CHECK(loaded->scheme() == "nonpoly");
+  CHECK(loaded->family() == SchemeFamily::Quad);
   REQUIRE(exact.rates() == binary.rates());
   REQUIRE(exact.valences() == binary.valences());
   REQUIRE(exact.face_corner() == binary.face_corner());
   REQUIRE(exact.vertex_rule(5)->edge == binary.vertex_rule(5)->edge);
   for (int v : {3, 4, 5})
     for (int n = 1; n <= 6; ++n) {
-      std::vector<double> a(static_cast<std::size_t>(SurfaceTables::points(v))), b(a.size());
+      std::vector<double> a(static_cast<std::size_t>(QuadTables::points(v))), b(a.size());
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
           exact.centre_stencil(v, n, i, j, a.data());
@@ -247,9 +251,9 @@ TEST_CASE("the runtime loads the exact JSON tables too, with the same stencils a
           for (std::size_t h = 0; h < a.size(); ++h) REQUIRE(a[h] == Approx(b[h]).epsilon(1e-15).margin(1e-300));
         }
     }
-  CHECK_THROWS_WITH(SurfaceTables::load(json_dir.string(), binary.scheme_hash() + 1), Catch::Contains("different scheme"));
+  CHECK_THROWS_WITH(QuadTables::load_json_directory(json_dir.string(), binary.scheme_hash() + 1), Catch::Contains("different scheme"));
   fs::remove(json_dir / "v5" / "n4.json");
-  CHECK_THROWS_WITH(SurfaceTables::load(json_dir.string()), Catch::Contains("different set of rates"));
+  CHECK_THROWS_WITH(Tables::load(json_dir.string()), Catch::Contains("different set of rates"));
   fs::remove_all(dir);
 }
 
@@ -265,24 +269,32 @@ Mesh prism() {
 }  // namespace
 
 TEST_CASE("meshes with triangles get the scheme's polygon step; Catmull-Clark then equals OpenSubdiv", "[runtime][opensubdiv]") {
-  const SurfaceTables cc = SurfaceTables::load(tables_for("catmull-clark").string());
+  const auto cc = Tables::load(tables_for("catmull-clark").string());
   const Mesh m = prism();
-  const LimitSurface surface(cc, m, "catmull-clark");
-  CHECK(surface.prepared().steps == 2);  // polygon step, then isolation of the triangles' centres
+  const Surface surface = surface_of(cc, m);
+  CHECK(surface.topology().refinement_steps() == 2);  // polygon step, then isolation of the triangles' centres
   bfr_reference::BfrLimit reference(m.positions, m.face_sizes, m.face_vertices);
   const double size = extent(m);
-  for (std::size_t f = 2; f < 5; ++f)  // the quads: (u, v) is defined there
-    for (long n : {1L, 2L, 4L, 5L, 8L})
-      for (long j = 0; j <= n; ++j)
-        for (long i = 0; i <= n; ++i) {
-          const Point ours = surface.evaluate(f, i, j, n);
-          const auto ref = reference.evaluate(static_cast<int>(f), double(i) / n, double(j) / n);
-          INFO("face " << f << " at (" << i << "/" << n << ", " << j << "/" << n << ")");
-          REQUIRE(distance(ours, ref) / size < 1e-12);
-        }
-  CHECK_THROWS_WITH(surface.evaluate(0, 0, 0, 1), Catch::Contains("face 0 has 3 vertices"));
+  for (std::size_t f = 0; f < 5; ++f) {
+    // A triangle's (u, v) is Bfr's: three sub-face tiles [a, a + 1/2] x [b, b + 1/2]
+    // at (a, b) = (0,0), (1,0), (0,1); a quad's is [0,1]^2.
+    const FaceDomain domain = surface.topology().domain(f);
+    const int tiles = domain.kind == FaceDomain::Kind::Quad ? 1 : domain.corners;
+    for (int s = 0; s < tiles; ++s)
+      for (long n : {1L, 2L, 4L, 5L, 8L})
+        for (long j = 0; j <= n; ++j)
+          for (long i = 0; i <= n; ++i) {
+            ExactParameter at = grid(i, j, n);
+            if (tiles > 1)
+              at = {add(Fraction{s % domain.u_tiles, 1}, Fraction::make(i, 2 * n)), add(Fraction{s / domain.u_tiles, 1}, Fraction::make(j, 2 * n))};
+            const Point ours = surface.evaluate(f, at);
+            const auto ref = reference.evaluate(static_cast<int>(f), at.u.to_double(), at.v.to_double());
+            INFO("face " << f << " at " << at.str());
+            REQUIRE(distance(ours, ref) / size < 1e-12);
+          }
+  }
   // The tessellation of the mixed mesh is closed, and a sphere.
-  const PolygonSoup soup = tessellate(surface, prepared_rates(surface, {3, 7, 12, 5, 24}));
+  const PolygonSoup soup = tessellate(surface, {3, 7, 12, 5, 24});
   const auto directed = directed_edges(soup);
   for (const auto& [e, count] : directed) REQUIRE((count == 1 && directed.count({e.second, e.first}) == 1));
   CHECK(static_cast<long>(soup.positions.size()) - static_cast<long>(directed.size() / 2) +

@@ -15,9 +15,11 @@
 #include "cli.hpp"
 #include "runtime_checks.hpp"
 #include "sqrt3_reference.hpp"
-#include "stencil_runtime/triangle_tessellation.hpp"
+#include "runtime_api.hpp"
+#include "triangle/triangle_family.hpp"
 
 using namespace stencil_runtime;
+using namespace test_runtime;
 namespace fs = std::filesystem;
 
 namespace {
@@ -33,14 +35,15 @@ Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj
 }  // namespace
 
 TEST_CASE("runtime sqrt(3) evaluation equals plain sqrt(3) subdivision and its limit rule", "[runtime][triangle][sqrt3]") {
-  const TriangleTables tables = TriangleTables::load(sqrt3_tables().string());
+  const auto tables = Tables::load(sqrt3_tables().string());
   for (const char* name : kTriangleMeshes) {
     const Mesh mesh = bundled(name);
-    const TriangleSurface surface(tables, mesh, "sqrt3");
+    const Surface surface = surface_of(tables, mesh);
+    const auto& family = dynamic_cast<const TriangleFamily&>(surface.topology().family());
     // Every kind of face occurs: regular, the EV's own patch and the three band regions.
     std::set<std::pair<bool, int>> kinds;
-    for (std::size_t f = 0; f < surface.topology().faces(); ++f)
-      kinds.emplace(surface.patch(f).valence == 6, surface.patch(f).region);
+    for (std::size_t f = 0; f < family.topology().faces(); ++f)
+      kinds.emplace(family.patch(f).valence == 6, family.patch(f).region);
     CHECK(kinds == std::set<std::pair<bool, int>>{{true, 0}, {false, 0}, {false, 1}, {false, 2}, {false, 3}});
 
     sqrt3_reference::Subdivision reference(mesh);
@@ -57,7 +60,7 @@ TEST_CASE("runtime sqrt(3) evaluation equals plain sqrt(3) subdivision and its l
       for (std::size_t f = 0; f < mesh.face_count(); ++f)
         for (long k = 0; k <= n; ++k)
           for (long i = 0; i + k <= n; ++i) {
-            const Point ours = surface.evaluate(f, i, k, n);
+            const Point ours = at_grid(surface, f, i, k, n);
             const auto& ref = limits[static_cast<std::size_t>(reference.vertex_at(static_cast<int>(f), i, k, n))];
             const double err = distance(ours, ref) / size;
             worst = std::max(worst, err);
@@ -65,23 +68,21 @@ TEST_CASE("runtime sqrt(3) evaluation equals plain sqrt(3) subdivision and its l
             REQUIRE(err < 1e-12);
           }
     }
-    INFO(name << ": " << surface.prepared().steps << " double steps, largest difference " << worst);
+    INFO(name << ": " << surface.topology().preparation() << ", largest difference " << worst);
     SUCCEED();
   }
 }
 
 TEST_CASE("sqrt(3) tessellations are closed oriented 2-manifolds for random rate mixes", "[runtime][triangle][sqrt3][tessellation]") {
-  const TriangleTables tables = TriangleTables::load(sqrt3_tables().string());
+  const auto tables = Tables::load(sqrt3_tables().string());
   std::mt19937 rng(20261122u);
   for (const char* name : kTriangleMeshes) {
     const Mesh mesh = bundled(name);
-    const TriangleSurface surface(tables, mesh, "sqrt3");
+    const Surface surface = surface_of(tables, mesh);
     for (int trial = 0; trial < 3; ++trial) {
       std::vector<int> rates(mesh.face_count());
       for (int& r : rates) r = trial == 0 ? 1 : std::uniform_int_distribution<int>(1, 27)(rng);
-      std::vector<int> prepared = prepared_rates(surface, rates);
-      for (int& r : prepared) r = table_rate_at_least(tables.rates(), r);
-      const PolygonSoup soup = tessellate(surface, prepared);
+      const PolygonSoup soup = tessellate(surface, rates);
       INFO(name << " trial " << trial);
       REQUIRE(tessellation_defect(soup, euler_characteristic(mesh)) == "");
     }

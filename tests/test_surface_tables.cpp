@@ -13,7 +13,7 @@
 #include "quad_scheme_loader.hpp"
 #include "residue_solver.hpp"
 #include "smoothness_analysis.hpp"
-#include "stencil_runtime/surface_table.hpp"
+#include "tables/quad_tables.hpp"
 
 using independent::Q;
 
@@ -191,14 +191,14 @@ TEST_CASE("binary surface tables load in the runtime and hold the exact stencils
   REQUIRE(r.status == 0);
   const auto file = (dir / "nonpoly" / "nonpoly.sgs").string();
   const sg::QuadScheme s = sg::load_quad_scheme("nonpoly");
-  const auto t = stencil_runtime::SurfaceTables::load(file, s.hash);
+  const auto t = stencil_runtime::QuadTables::load_binary(file, s.hash);
   REQUIRE(t.rates() == std::vector<int>{1, 2, 3, 4, 5, 6});
   REQUIRE(t.valences() == std::vector<int>{3, 5});  // 4 is the regular patch
   for (int v : {3, 4, 5}) {
     const sg::PatchLayout layout(v);
     for (int n = 1; n <= 6; ++n) {
       const sg::PatchGrid exact = sg::solve_ev_patch(s, v, 2 * n);
-      std::vector<double> w(static_cast<std::size_t>(stencil_runtime::SurfaceTables::points(v)));
+      std::vector<double> w(static_cast<std::size_t>(stencil_runtime::QuadTables::points(v)));
       auto expect = [&](long a, long b) {
         for (std::size_t h = 0; h < layout.size(); ++h) {
           // The regular patch is stored in row order; map it to the EV layout for v = 4.
@@ -221,13 +221,13 @@ TEST_CASE("binary surface tables load in the runtime and hold the exact stencils
         }
     }
   }
-  CHECK_THROWS_AS(stencil_runtime::SurfaceTables::load(file, s.hash + 1), stencil_runtime::LoadError);
+  CHECK_THROWS_AS(stencil_runtime::QuadTables::load_binary(file, s.hash + 1), stencil_runtime::LoadError);
   {
     std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
     f.seekp(100);
     f.put('\x7f');
   }
-  CHECK_THROWS_WITH(stencil_runtime::SurfaceTables::load(file), Catch::Contains("checksum mismatch"));
+  CHECK_THROWS_WITH(stencil_runtime::QuadTables::load_binary(file), Catch::Contains("checksum mismatch"));
   std::filesystem::remove_all(dir);
 }
 
@@ -237,11 +237,11 @@ TEST_CASE("valence 16 at rate 64 works end to end, with progress output", "[surf
   INFO(r.output);
   REQUIRE(r.status == 0);
   CHECK(r.output.find("nonpoly: valence 16 solved and checked for 2 rates") != std::string::npos);
-  const auto t = stencil_runtime::SurfaceTables::load((dir / "nonpoly" / "nonpoly.sgs").string());
+  const auto t = stencil_runtime::QuadTables::load_binary((dir / "nonpoly" / "nonpoly.sgs").string());
   REQUIRE(t.valences() == std::vector<int>{3, 16});
   for (int v : {3, 4, 16})
     for (int n : {63, 64}) {
-      std::vector<double> w(static_cast<std::size_t>(stencil_runtime::SurfaceTables::points(v)));
+      std::vector<double> w(static_cast<std::size_t>(stencil_runtime::QuadTables::points(v)));
       for (int j = 0; j <= n; j += 7)
         for (int i = 0; i <= n; i += 5) {
           t.node_stencil(v, n, i, j, w.data());

@@ -13,9 +13,11 @@
 #include "bfr_reference.hpp"
 #include "cli.hpp"
 #include "runtime_checks.hpp"
-#include "stencil_runtime/triangle_tessellation.hpp"
+#include "runtime_api.hpp"
+#include "triangle/triangle_family.hpp"
 
 using namespace stencil_runtime;
+using namespace test_runtime;
 namespace fs = std::filesystem;
 
 namespace {
@@ -35,11 +37,11 @@ bfr_reference::BfrLimit loop_reference(const Mesh& mesh) {
 }  // namespace
 
 TEST_CASE("runtime Loop evaluation equals OpenSubdiv on every bundled triangle mesh", "[runtime][triangle][opensubdiv]") {
-  const TriangleTables tables = TriangleTables::load(loop_tables().string());
+  const auto tables = Tables::load(loop_tables().string());
   for (const char* name : kTriangleMeshes) {
     const Mesh mesh = bundled(name);
-    const TriangleSurface surface(tables, mesh, "loop");
-    CHECK(surface.prepared().steps == 1);  // every bundled mesh has faces with two extraordinary corners
+    const Surface surface = surface_of(tables, mesh);
+    CHECK(surface.topology().refinement_steps() == 1);  // every bundled mesh has faces with two extraordinary corners
     auto reference = loop_reference(mesh);
     const double size = extent(mesh);
     double worst = 0;
@@ -48,7 +50,7 @@ TEST_CASE("runtime Loop evaluation equals OpenSubdiv on every bundled triangle m
         if (n == 24 && f % 5 != 0) continue;
         for (long j = 0; j <= n; ++j)
           for (long i = 0; i + j <= n; ++i) {
-            const Point ours = surface.evaluate(f, i, j, n);
+            const Point ours = at_grid(surface, f, i, j, n);
             const auto ref = reference.evaluate(static_cast<int>(f), double(i) / n, double(j) / n);
             const double err = distance(ours, ref) / size;
             worst = std::max(worst, err);
@@ -62,18 +64,19 @@ TEST_CASE("runtime Loop evaluation equals OpenSubdiv on every bundled triangle m
 }
 
 TEST_CASE("triangle tessellation points equal OpenSubdiv at the up and down centres", "[runtime][triangle][opensubdiv]") {
-  const TriangleTables tables = TriangleTables::load(loop_tables().string());
+  const auto tables = Tables::load(loop_tables().string());
   for (const char* name : kTriangleMeshes) {
     // The prepared mesh itself, so that each face's centres are Bfr parameters of that face.
-    const Mesh prepared = TriangleSurface(tables, bundled(name), "loop").prepared().mesh;
-    const TriangleSurface surface(tables, prepared, "loop");
-    REQUIRE(surface.prepared().steps == 0);
+    const Mesh prepared = surface_of(tables, bundled(name)).prepared_mesh();
+    const Surface surface = surface_of(tables, prepared);
+    REQUIRE(surface.topology().refinement_steps() == 0);
     auto reference = loop_reference(prepared);
     const double size = extent(prepared);
-    for (std::size_t f = 0; f < prepared.face_count(); f += 3)
-      for (int n : {1, 2, 3, 5, 24}) {
-        std::vector<std::array<float, 3>> centres(static_cast<std::size_t>(n * n));
-        surface.evaluate_centres(f, n, centres.data());
+    for (int n : {1, 2, 3, 5, 24}) {
+      // A uniform rate: face f's n^2 centres are points [f n^2, (f+1) n^2).
+      const PolygonSoup soup = tessellate(surface, std::vector<int>(prepared.face_count(), n));
+      for (std::size_t f = 0; f < prepared.face_count(); f += 3) {
+        const auto* centres = soup.positions.data() + f * static_cast<std::size_t>(n * n);
         for (int j = 0; j < n; ++j)
           for (int i = 0; i + j < n; ++i)
             for (int kind = 1; kind <= 2; ++kind) {
@@ -85,21 +88,20 @@ TEST_CASE("triangle tessellation points equal OpenSubdiv at the up and down cent
               REQUIRE(distance({c[0], c[1], c[2]}, ref) / size < 1e-6);
             }
       }
+    }
   }
 }
 
 TEST_CASE("triangle tessellations are closed oriented 2-manifolds for random rate mixes 1..24", "[runtime][triangle][tessellation]") {
-  const TriangleTables tables = TriangleTables::load(loop_tables().string());
+  const auto tables = Tables::load(loop_tables().string());
   std::mt19937 rng(20261122u);
   for (const char* name : kTriangleMeshes) {
     const Mesh mesh = bundled(name);
-    const TriangleSurface surface(tables, mesh, "loop");
+    const Surface surface = surface_of(tables, mesh);
     for (int trial = 0; trial < 5; ++trial) {
       std::vector<int> rates(mesh.face_count());
       for (int& r : rates) r = trial == 0 ? 1 : std::uniform_int_distribution<int>(1, 24)(rng);
-      std::vector<int> prepared = prepared_rates(surface, rates);
-      for (int& r : prepared) r = table_rate_at_least(tables.rates(), r);
-      const PolygonSoup soup = tessellate(surface, prepared);
+      const PolygonSoup soup = tessellate(surface, rates);
       INFO(name << " trial " << trial);
       REQUIRE(tessellation_defect(soup, euler_characteristic(mesh)) == "");
     }
@@ -157,13 +159,14 @@ TEST_CASE("triangle meshes and tables: bad input gets clear errors, and nothing 
   };
   expect(eval(loop, (kMeshes / "cube.obj").string()), "face 0 has 4 vertices; triangle schemes need a mesh of triangles");
   expect(eval(loop, (kMeshes / "icosahedron.obj").string(), "--face 0 --uv 2/3,1/2"),
-         "lies outside the triangle: u + v must be at most 1");
+         "lies outside face 0 (its domain is u, v >= 0 and u + v <= 1)");
   expect(eval(loop, (kMeshes / "icosahedron.obj").string(), "--face 20 --uv 0,0"), "face 20 does not exist");
-  expect(eval(loop, (kMeshes / "icosahedron.obj").string(), "--face 0 --uv 1/25,0"), "needs rate 25");
+  expect(eval(loop, (kMeshes / "icosahedron.obj").string(), "--face 0 --uv 1/25,0"), "tables with rate 25 make it exact");
   // A valence the tables lack, named with the call that adds it.
   REQUIRE(run_stencilgen("-q --scheme loop --valence 3-5 --n 2 --out " + dir.string()).status == 0);
   expect(eval((dir / "loop").string(), (kMeshes / "tri-mix.obj").string()),
-         "has valence 8, which the tables do not cover; generate it with: stencilgen --scheme loop --valence 8");
+         "has valence 8, which the tables do not cover (missing valence 8); generate tables that cover this mesh with: "
+         "stencilgen --scheme loop --valence 3-5,8 --n 1-2 --out");
   // A corrupt table file, and stenciltess leaves no output behind.
   {
     std::string bytes;

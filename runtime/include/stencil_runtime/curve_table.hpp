@@ -2,17 +2,13 @@
 // Loads the compact binary curve tables written by stencilgen (format in
 // docs/table-format.md) and evaluates curves from them. Doubles only.
 #include <cstdint>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "binary_format.hpp"
+#include "error.hpp"
 
 namespace stencil_runtime {
-
-struct LoadError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 struct CurveFunction {
   std::string name;

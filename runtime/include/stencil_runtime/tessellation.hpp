@@ -1,38 +1,68 @@
 #pragma once
-// Watertight adaptive tessellation (the paper's section 4.4): one limit point
-// per grid cell of every face at that face's own rate (the cell centres,
-// exact-stencil evaluated once each), quads between them inside a face, a
-// zipper of triangles (quads where the rows line up) along every mesh edge,
-// and one polygon around every mesh vertex. The result is a closed,
-// consistently oriented 2-manifold for every mix of rates.
+// Watertight adaptive tessellation (the paper's section 4.4), planned once and
+// evaluated every frame. One limit point per grid cell of every prepared face
+// at that face's own rate (quads: the cell centres; triangles: the centres of
+// the small triangles), each from its exact stencil; polygons between them
+// inside a face, a zipper along every mesh edge and a polygon round every mesh
+// vertex. The result is a closed, consistently oriented 2-manifold for every
+// mix of rates.
+//
+// The plan holds everything that does not depend on positions (rates, counts,
+// connectivity); evaluate() fills the positions of one frame.
+#include <array>
+#include <cstddef>
+#include <memory>
 #include <vector>
 
-#include "limit_surface.hpp"
 #include "mesh.hpp"
+#include "surface.hpp"
+#include "surface_topology.hpp"
 
 namespace stencil_runtime {
 
 struct TessellationOptions {
-  int threads = 0;  // 0: all
+  int threads = 0;  // 0: all cores
 };
 
-// `rates[f]` for every face of the *prepared* mesh; each must be in the tables.
-PolygonSoup tessellate(const LimitSurface& surface, const std::vector<int>& rates, const TessellationOptions& options = {});
+class TessellationPlan {
+ public:
+  // `rates`: one per original face (>= 1). A face refined by the preparation
+  // covers prepared faces s times smaller across per step; they get
+  // ceil(rate / s), rounded up to a stored rate (the largest stored rate where
+  // none is large enough: see largest_wanted_rate()). Throws EvaluationError
+  // for a wrong count or a rate outside 1..limits::kMaxRate.
+  TessellationPlan(std::shared_ptr<const SurfaceTopology> topology, const std::vector<int>& rates,
+                   const TessellationOptions& options = {});
+  ~TessellationPlan();
+  TessellationPlan(TessellationPlan&&) noexcept;
+  TessellationPlan& operator=(TessellationPlan&&) noexcept;
 
-// The same into `out`, reusing its storage: repeated tessellations (animation,
-// changing view) then allocate nothing once the arrays are large enough.
-void tessellate_into(const LimitSurface& surface, const std::vector<int>& rates, PolygonSoup& out,
-                     const TessellationOptions& options = {});
+  const SurfaceTopology& topology() const { return *topology_; }
+  // Per prepared face, as used (stored rates).
+  const std::vector<int>& prepared_rates() const;
+  // The largest prepared rate before rounding to a stored one (above the
+  // tables' largest rate when they could not give what was asked for).
+  int largest_wanted_rate() const;
 
-// Rates of the prepared mesh from rates of the original faces: a face refined
-// s times covers 4^s prepared faces of half the size per step, which get
-// ceil(rate / 2^s) (at least 1), rounded up to a rate the tables hold.
-std::vector<int> prepared_rates(const PreparedMesh& prepared, const std::vector<int>& original_rates);
-inline std::vector<int> prepared_rates(const LimitSurface& surface, const std::vector<int>& original_rates) {
-  return prepared_rates(surface.prepared(), original_rates);
-}
+  std::size_t point_count() const;
+  const std::vector<std::array<int, 4>>& quads() const;
+  const std::vector<std::array<int, 3>>& triangles() const;
+  std::size_t triangle_count() const { return triangles().size() + 2 * quads().size(); }
 
-// The smallest of the tables' rates (ascending) that is >= wanted (the largest if none is).
-int table_rate_at_least(const std::vector<int>& table_rates, int wanted);
+  // A soup with the plan's polygons and room for its positions (made once).
+  PolygonSoup make_soup() const;
+  // The positions of one frame into `positions` (point_count() entries, e.g.
+  // make_soup()'s). Throws EvaluationError when the surface has no positions
+  // or another topology.
+  void evaluate(const Surface& surface, std::array<float, 3>* positions) const;
+
+ private:
+  struct Impl;
+  std::shared_ptr<const SurfaceTopology> topology_;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Plan and evaluate in one call.
+PolygonSoup tessellate(const Surface& surface, const std::vector<int>& rates, const TessellationOptions& options = {});
 
 }  // namespace stencil_runtime

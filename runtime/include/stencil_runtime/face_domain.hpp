@@ -1,0 +1,43 @@
+#pragma once
+// What (u, v) means on a face, as OpenSubdiv's Bfr::Parameterization defines it:
+//  - Quad: a quad face of a quad scheme; (0,0) at its first vertex v0, u along
+//    v0->v1, v along v0->v3, (u, v) in [0,1]^2.
+//  - Triangle: a triangle of a triangle scheme; u along v0->v1, v along v0->v2,
+//    u, v >= 0, u + v <= 1.
+//  - QuadSubfaces: an N-gon (N != 4) of a quad scheme, whose surface is that of
+//    the N quads of the scheme's polygon step. Sub-face s (the quad at corner s)
+//    is the tile [s % U, s % U + 1/2] x [s / U, s / U + 1/2], U = u_tiles (2 for
+//    N = 3, 3 for 5 <= N <= 9, 1 + floor(sqrt(N - 1)) above); within it,
+//    (u - s % U, v - s / U) times 2 is the sub-face's own (u, v): 0 at corner s,
+//    u towards the middle of edge s -> s+1, v towards the middle of edge s -> s-1,
+//    (1, 1) at the face's centre.
+#include <cstdint>
+
+#include "exact_parameter.hpp"
+#include "tables.hpp"
+
+namespace stencil_runtime {
+
+struct FaceDomain {
+  enum class Kind { Quad, Triangle, QuadSubfaces };
+  Kind kind = Kind::Quad;
+  int corners = 4;  // the face's size
+  int u_tiles = 1;  // QuadSubfaces: sub-faces per row (Bfr's "uDim")
+
+  // The domain of a face with `corners` corners under a scheme family; throws
+  // MeshError when the family cannot parameterize it (a triangle scheme on a
+  // face that is not a triangle).
+  static FaceDomain of(SchemeFamily family, int corners);
+
+  // Whether (u, v) lies in the domain (tiles include their edges).
+  bool contains(double u, double v) const;
+  bool contains(const ExactParameter& p) const;
+  // QuadSubfaces: the sub-face holding (u, v) (Bfr's rule: points on a tile's
+  // border go to the tile whose lower-left is nearer) and its own coordinates.
+  int subface(double u, double v, double& su, double& sv) const;
+  int subface(const ExactParameter& p, ExactParameter& local) const;
+  // A description for error messages, e.g. "[0,1]^2" or "u, v >= 0, u + v <= 1".
+  const char* describe() const;
+};
+
+}  // namespace stencil_runtime

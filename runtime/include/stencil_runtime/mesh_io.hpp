@@ -1,0 +1,25 @@
+#pragma once
+// Reading control meshes (Wavefront OBJ) and writing tessellations (OBJ or
+// binary PLY).
+#include <string>
+
+#include "mesh.hpp"
+
+namespace stencil_runtime {
+
+// Wavefront OBJ: `v x y z` and `f a b c ...` lines (1-based or negative
+// indices, `a/t/n` forms accepted; other lines ignored). Refuses, with a
+// LoadError naming the file and line: a file that is not a regular file or is
+// larger than limits::kMaxMeshFileBytes, a line longer than
+// limits::kMaxMeshLineBytes, coordinates that are not finite or exceed
+// limits::kMaxCoordinate, bad or out-of-range indices, faces with fewer than
+// three or more than limits::kMaxFaceSize vertices, more than
+// limits::kMaxMeshElements vertices or faces, and a file without faces.
+Mesh read_obj(const std::string& path);
+
+// OBJ (text) or binary little-endian PLY, chosen by the extension (.obj/.ply),
+// with per-vertex normals when the soup has them. Writes a temporary file
+// beside `path` and renames it, so a failure leaves nothing behind.
+void write_polygons(const PolygonSoup& soup, const std::string& path);
+
+}  // namespace stencil_runtime

@@ -1,0 +1,15 @@
+#pragma once
+// The stencil runtime's whole public interface in one include.
+#include "curve_table.hpp"
+#include "error.hpp"
+#include "exact_parameter.hpp"
+#include "face_domain.hpp"
+#include "limits.hpp"
+#include "mesh.hpp"
+#include "mesh_io.hpp"
+#include "stencil_rows.hpp"
+#include "subdivide.hpp"
+#include "surface.hpp"
+#include "surface_topology.hpp"
+#include "tables.hpp"
+#include "tessellation.hpp"

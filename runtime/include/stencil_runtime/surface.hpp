@@ -1,0 +1,59 @@
+#pragma once
+// A surface: a SurfaceTopology plus the control positions of one frame.
+// set_positions() is the per-frame call (no topology work, and no allocation
+// after the first call); evaluation reads the current positions. Several
+// surfaces (e.g. several animated instances) can share one topology. Not safe
+// to evaluate while another thread calls set_positions on the same surface.
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "exact_parameter.hpp"
+#include "mesh.hpp"
+#include "surface_topology.hpp"
+
+namespace stencil_runtime {
+
+// A limit point and how far it may be from the exact one: bound == 0 (and
+// exact) where the parameter is a rational the tables hold, directly or after
+// local subdivision of the patch; otherwise the bound is at most the tolerance asked for.
+struct Evaluation {
+  Point point{0, 0, 0};
+  double bound = 0;
+  bool exact = true;
+};
+
+class Surface {
+ public:
+  explicit Surface(std::shared_ptr<const SurfaceTopology> topology);
+  Surface(std::shared_ptr<const SurfaceTopology> topology, const std::vector<Point>& control);
+
+  const SurfaceTopology& topology() const { return *topology_; }
+  const std::shared_ptr<const SurfaceTopology>& shared_topology() const { return topology_; }
+
+  // New control positions, one per control vertex: applies the refinement
+  // matrix R once. Throws EvaluationError for a wrong count or a coordinate
+  // that is not finite or exceeds limits::kMaxCoordinate (naming the vertex).
+  void set_positions(const std::vector<Point>& control);
+  void set_positions(const Point* control, std::size_t count);
+  bool has_positions() const { return has_positions_; }
+  // R * control: the positions of the prepared mesh's vertices.
+  const std::vector<Point>& prepared_positions() const { return prepared_; }
+  // The prepared mesh itself (its faces are all quads or all triangles): the
+  // same limit surface, described by more control points.
+  Mesh prepared_mesh() const;
+
+  // The limit point at an exact parameter of face `face` (domain(face) says
+  // what (u, v) means). Exact (to double rounding) where a stored rate holds
+  // the parameter; throws EvaluationError naming the face, the parameter and
+  // the stencilgen call that would add the rate otherwise.
+  Point evaluate(std::size_t face, const ExactParameter& at) const;
+
+ private:
+  std::shared_ptr<const SurfaceTopology> topology_;
+  std::vector<Point> prepared_;
+  std::vector<std::vector<Point>> levels_;  // intermediate refinement levels, kept for reuse
+  bool has_positions_ = false;
+};
+
+}  // namespace stencil_runtime

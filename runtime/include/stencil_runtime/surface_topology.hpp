@@ -1,0 +1,80 @@
+#pragma once
+// The topology of a control mesh under a scheme's tables, built once from face
+// sizes and face-vertex indices alone (no positions), like OpenSubdiv's
+// Far::TopologyRefiner and Bfr::SurfaceFactory. It holds everything that does
+// not depend on positions: the polygon step and the isolation steps as a
+// sparse refinement matrix (prepared vertices = R * control vertices), every
+// prepared face's patch, and what each face's (u, v) means. Surfaces
+// (surface.hpp) and tessellation plans (tessellation.hpp) share it; it shares
+// the tables, so nothing it refers to can be freed before it.
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "exact_parameter.hpp"
+#include "face_domain.hpp"
+#include "stencil_rows.hpp"
+#include "tables.hpp"
+
+namespace stencil_runtime {
+
+class Family;  // the scheme family's own topology (below this interface)
+
+// A face and an exact parameter on it.
+struct Sample {
+  std::size_t face = 0;
+  ExactParameter at;
+};
+
+class SurfaceTopology {
+ public:
+  // Checks the faces (sizes 3..limits::kMaxFaceSize, indices below
+  // vertex_count, a closed manifold, consistently oriented, every vertex used),
+  // the valences against the tables, then prepares: the scheme's polygon step
+  // when a quad scheme's mesh has other polygons, and whole-mesh refinement
+  // steps until every face's patch is in the tables' form (at most
+  // limits::kMaxRefinementSteps). Throws MeshError naming the face, edge or
+  // vertex (numbered from 0 in file order; OBJ's are from 1), with the
+  // stencilgen call that adds a missing valence.
+  static std::shared_ptr<const SurfaceTopology> create(std::shared_ptr<const Tables> tables, std::size_t vertex_count,
+                                                       std::vector<int> face_sizes, std::vector<int> face_vertices);
+
+  const Tables& tables() const { return *tables_; }
+  const std::shared_ptr<const Tables>& shared_tables() const { return tables_; }
+  std::size_t vertex_count() const { return vertex_count_; }
+  std::size_t face_count() const { return face_sizes_.size(); }
+  const std::vector<int>& face_sizes() const { return face_sizes_; }
+  const std::vector<int>& face_vertices() const { return face_vertices_; }
+  // Whether another mesh has exactly this connectivity (an animation frame).
+  bool same_connectivity(std::size_t vertex_count, const std::vector<int>& face_sizes,
+                         const std::vector<int>& face_vertices) const;
+
+  FaceDomain domain(std::size_t face) const;  // throws EvaluationError for a face that does not exist
+
+  // The preparation: steps applied ("1 subdivision step", "2 double sqrt(3)
+  // steps", "the polygon step and 1 subdivision step"), and the prepared mesh's size.
+  std::string preparation() const;
+  int refinement_steps() const;
+  std::size_t prepared_face_count() const;
+  std::size_t prepared_vertex_count() const;
+
+  // The limit point at an exact parameter as a sparse row over the control
+  // vertices, when the tables hold that parameter; throws EvaluationError
+  // naming the face or parameter otherwise (see Surface::evaluate).
+  StencilRows stencil(std::size_t face, const ExactParameter& at) const;
+  // One row per sample (rows computed in parallel).
+  StencilRows stencils(const std::vector<Sample>& samples) const;
+
+  const Family& family() const { return *family_; }
+  ~SurfaceTopology();
+
+ private:
+  SurfaceTopology();
+  std::shared_ptr<const Tables> tables_;
+  std::size_t vertex_count_ = 0;
+  std::vector<int> face_sizes_, face_vertices_;
+  std::unique_ptr<const Family> family_;
+};
+
+}  // namespace stencil_runtime

@@ -1,0 +1,35 @@
+#include "stencil_runtime/subdivide.hpp"
+
+#include <algorithm>
+
+#include "quad/quad_refinement.hpp"
+#include "triangle/triangle_refinement.hpp"
+
+namespace stencil_runtime {
+
+Mesh subdivide(const Tables& tables, const Mesh& mesh) {
+  const Connectivity c{mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices};
+  Connectivity next;
+  std::vector<RefinementStep> steps;
+  if (tables.family() == SchemeFamily::Quad) {
+    const bool quads = std::all_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k == 4; });
+    QuadStep step = quads ? subdivide_quads(QuadTopology(c), tables.quad()) : subdivide_polygons(c, link_polygons(c), tables.quad());
+    next = std::move(step.mesh);
+    steps.push_back(std::move(step.step));
+  } else {
+    const TriangleTopology topology(c);
+    TriangleStep step = tables.triangle().refinement() == TriangleRefinement::Loop ? loop_step(topology, tables.triangle())
+                                                                                    : sqrt3_double_step(topology, tables.triangle());
+    next = std::move(step.mesh);
+    steps = std::move(step.steps);
+  }
+  Mesh out{mesh.positions, std::move(next.face_sizes), std::move(next.face_vertices)};
+  for (const RefinementStep& s : steps) {
+    std::vector<Point> refined(s.rows());
+    s.apply(out.positions.data(), refined.data());
+    out.positions = std::move(refined);
+  }
+  return out;
+}
+
+}  // namespace stencil_runtime

@@ -1,0 +1,53 @@
+#include "stencil_runtime/surface.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "exact_stencil.hpp"
+#include "family/family.hpp"
+#include "stencil_runtime/limits.hpp"
+
+namespace stencil_runtime {
+
+Surface::Surface(std::shared_ptr<const SurfaceTopology> topology) : topology_(std::move(topology)) {
+  if (!topology_) throw EvaluationError("a Surface needs a topology");
+}
+
+Surface::Surface(std::shared_ptr<const SurfaceTopology> topology, const std::vector<Point>& control)
+    : Surface(std::move(topology)) {
+  set_positions(control);
+}
+
+void Surface::set_positions(const std::vector<Point>& control) { set_positions(control.data(), control.size()); }
+
+void Surface::set_positions(const Point* control, std::size_t count) {
+  if (count != topology_->vertex_count())
+    throw EvaluationError(std::to_string(count) + " control positions for a mesh of " +
+                          std::to_string(topology_->vertex_count()) + " vertices");
+  for (std::size_t v = 0; v < count; ++v)
+    for (double x : control[v])
+      if (!std::isfinite(x) || std::fabs(x) > limits::kMaxCoordinate)
+        throw EvaluationError("vertex " + std::to_string(v) + " (numbered from 0) has the coordinate " + std::to_string(x) +
+                              "; coordinates must be finite and at most 1e37 in magnitude");
+  topology_->family().refinement().apply(control, levels_, prepared_);
+  has_positions_ = true;
+}
+
+Mesh Surface::prepared_mesh() const {
+  if (!has_positions_) throw EvaluationError("the surface has no control positions yet (set_positions)");
+  const Connectivity& c = topology_->family().prepared();
+  return {prepared_, c.face_sizes, c.face_vertices};
+}
+
+Point Surface::evaluate(std::size_t face, const ExactParameter& at) const {
+  if (!has_positions_) throw EvaluationError("the surface has no control positions yet (set_positions)");
+  const PatchStencil s = exact_stencil(*topology_, face, at);
+  Point out{0, 0, 0};
+  for (std::size_t h = 0; h < s.size; ++h) {
+    const Point& q = prepared_[static_cast<std::size_t>(s.points[h])];
+    for (int k = 0; k < 3; ++k) out[static_cast<std::size_t>(k)] += s.weights[h] * q[static_cast<std::size_t>(k)];
+  }
+  return out;
+}
+
+}  // namespace stencil_runtime

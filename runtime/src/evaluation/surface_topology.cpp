@@ -1,0 +1,146 @@
+#include "stencil_runtime/surface_topology.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <numeric>
+#include <string>
+
+#include "exact_stencil.hpp"
+
+#include "family/family.hpp"
+#include "quad/quad_family.hpp"
+#include "stencil_runtime/limits.hpp"
+#include "triangle/triangle_family.hpp"
+
+namespace stencil_runtime {
+
+namespace {
+
+// Appended to every topology error: the library numbers from 0, OBJ files from 1.
+constexpr const char* kNumbering =
+    " (faces and vertices are numbered from 0 in file order; an OBJ file's vertex k is vertex k-1 here)";
+
+}  // namespace
+
+SurfaceTopology::SurfaceTopology() = default;
+SurfaceTopology::~SurfaceTopology() = default;
+
+std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<const Tables> tables, std::size_t vertex_count,
+                                                               std::vector<int> face_sizes, std::vector<int> face_vertices) {
+  if (!tables) throw EvaluationError("SurfaceTopology::create needs tables");
+  if (face_sizes.empty()) throw MeshError("the mesh has no faces");
+  if (vertex_count > limits::kMaxMeshElements || face_sizes.size() > limits::kMaxMeshElements)
+    throw MeshError("the mesh has " + std::to_string(vertex_count) + " vertices and " + std::to_string(face_sizes.size()) +
+                    " faces; the runtime supports up to " + std::to_string(limits::kMaxMeshElements) + " of each");
+  for (std::size_t f = 0; f < face_sizes.size(); ++f)
+    if (face_sizes[f] < 3 || face_sizes[f] > limits::kMaxFaceSize)
+      throw MeshError("face " + std::to_string(f) + " has " + std::to_string(face_sizes[f]) + " vertices (faces have 3.." +
+                      std::to_string(limits::kMaxFaceSize) + ")" + kNumbering);
+  std::shared_ptr<SurfaceTopology> t(new SurfaceTopology());
+  t->tables_ = std::move(tables);
+  t->vertex_count_ = vertex_count;
+  t->face_sizes_ = std::move(face_sizes);
+  t->face_vertices_ = std::move(face_vertices);
+  const Connectivity mesh{t->vertex_count_, t->face_sizes_, t->face_vertices_};
+  try {
+    if (t->tables_->family() == SchemeFamily::Quad) t->family_ = std::make_unique<QuadFamily>(t->tables_, mesh);
+    else t->family_ = std::make_unique<TriangleFamily>(t->tables_, mesh);
+  } catch (const MeshError& e) {
+    throw MeshError(std::string(e.what()) + kNumbering);
+  }
+  return t;
+}
+
+bool SurfaceTopology::same_connectivity(std::size_t vertex_count, const std::vector<int>& face_sizes,
+                                        const std::vector<int>& face_vertices) const {
+  return vertex_count == vertex_count_ && face_sizes == face_sizes_ && face_vertices == face_vertices_;
+}
+
+FaceDomain SurfaceTopology::domain(std::size_t face) const {
+  if (face >= face_count())
+    throw EvaluationError("face " + std::to_string(face) + " does not exist (the mesh has " + std::to_string(face_count()) +
+                          " faces, numbered from 0)");
+  return family_->domain(face);
+}
+
+std::string SurfaceTopology::preparation() const { return family_->preparation(); }
+int SurfaceTopology::refinement_steps() const { return family_->refinement_steps(); }
+std::size_t SurfaceTopology::prepared_face_count() const { return family_->hierarchy().prepared_faces(); }
+std::size_t SurfaceTopology::prepared_vertex_count() const { return family_->refinement().prepared_vertices(); }
+
+namespace {
+
+// Why the tables do not hold an exact parameter, and what would.
+EvaluationError not_held(const SurfaceTopology& topology, std::size_t face, const ExactParameter& at) {
+  const std::string what = "the parameter " + at.str() + " of face " + std::to_string(face) +
+                           " is on no grid the tables hold (rates " + compact_list(topology.tables().rates(), true) + ")";
+  const std::int64_t g = std::gcd(at.u.den, at.v.den);
+  const std::int64_t l = at.u.den / g;
+  if (l > limits::kMaxRate / at.v.den)
+    return EvaluationError(what + "; its denominators need a rate above " + std::to_string(limits::kMaxRate) +
+                           ", so no table holds it exactly: evaluate it as a decimal within a tolerance");
+  const std::int64_t rate = l * at.v.den;
+  return EvaluationError(what + "; tables with rate " + std::to_string(rate) + " make it exact: stencilgen --scheme " +
+                         topology.tables().scheme() + " --valence <valences> --n " + compact_list(topology.tables().rates(), true) +
+                         "," + std::to_string(rate) + "-" + std::to_string(rate) + " --out <dir>");
+}
+
+// The stencil at an exact parameter, checked, or an EvaluationError that says why not.
+PatchStencil checked_stencil(const SurfaceTopology& topology, std::size_t face, const ExactParameter& at) {
+  const FaceDomain domain = topology.domain(face);
+  if (!domain.contains(at))
+    throw EvaluationError("the parameter " + at.str() + " lies outside face " + std::to_string(face) + " (its domain is " +
+                          domain.describe() + ")");
+  PatchStencil s;
+  if (!topology.family().stencil(face, at, s)) throw not_held(topology, face, at);
+  return s;
+}
+
+}  // namespace
+
+PatchStencil exact_stencil(const SurfaceTopology& topology, std::size_t face, const ExactParameter& at) {
+  return checked_stencil(topology, face, at);
+}
+
+StencilRows SurfaceTopology::stencil(std::size_t face, const ExactParameter& at) const { return stencils({{face, at}}); }
+
+StencilRows SurfaceTopology::stencils(const std::vector<Sample>& samples) const {
+  // Each row: the patch stencil over prepared vertices, folded through R.
+  std::vector<SparseEntries> rows(samples.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.size(), 64), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t k = r.begin(); k != r.end(); ++k) {
+      const PatchStencil s = checked_stencil(*this, samples[k].face, samples[k].at);
+      SparseEntries& row = rows[k];
+      row.reserve(s.size);
+      for (std::size_t h = 0; h < s.size; ++h) row.emplace_back(static_cast<std::uint32_t>(s.points[h]), s.weights[h]);
+      family_->refinement().fold(row);
+    }
+  });
+  StencilRows out;
+  out.columns = vertex_count_;
+  for (const SparseEntries& row : rows) {
+    for (const auto& [c, w] : row) {
+      out.vertices.push_back(c);
+      out.weights.push_back(w);
+    }
+    out.offsets.push_back(out.vertices.size());
+  }
+  return out;
+}
+
+std::vector<Point> StencilRows::apply(const std::vector<Point>& control) const {
+  if (control.size() != columns)
+    throw EvaluationError("the rows are over " + std::to_string(columns) + " control vertices; " +
+                          std::to_string(control.size()) + " positions given");
+  std::vector<Point> out(rows());
+  for (std::size_t r = 0; r < rows(); ++r) {
+    Point p{0, 0, 0};
+    for (std::size_t e = offsets[r]; e != offsets[r + 1]; ++e)
+      for (int k = 0; k < 3; ++k) p[static_cast<std::size_t>(k)] += weights[e] * control[vertices[e]][static_cast<std::size_t>(k)];
+    out[r] = p;
+  }
+  return out;
+}
+
+}  // namespace stencil_runtime

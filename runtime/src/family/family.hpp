@@ -1,0 +1,104 @@
+#pragma once
+// What a scheme family (quad or triangle) provides below the public interface:
+// the prepared mesh of one control mesh (refinement matrix, which prepared
+// faces cover each original face, every prepared face's patch) and the kernels
+// that evaluate it. SurfaceTopology, Surface and TessellationPlan call only this.
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "face_hierarchy.hpp"
+#include "mesh/connectivity.hpp"
+#include "range_runner.hpp"
+#include "refinement.hpp"
+#include "stencil_runtime/exact_parameter.hpp"
+#include "stencil_runtime/face_domain.hpp"
+#include "stencil_runtime/limits.hpp"
+
+namespace stencil_runtime {
+
+// The weights of one limit point over the control points of a prepared patch.
+struct PatchStencil {
+  std::size_t face = 0;             // the prepared face
+  const int* points = nullptr;      // its patch's prepared vertices
+  std::size_t size = 0;
+  const double* weights = nullptr;  // `size` weights: into the tables, or into `storage`
+  std::array<double, 2 * limits::kMaxValence + 8> storage{};
+};
+
+// Points and polygons of a tessellation, planned once: `rates` (one stored
+// rate per prepared face) in, point offsets and polygons out.
+struct TessellationLayout {
+  std::vector<int> rates;
+  std::vector<std::size_t> point_offsets;  // size prepared faces + 1
+  std::vector<std::array<int, 4>> quads;
+  std::vector<std::array<int, 3>> triangles;
+};
+
+class Family {
+ public:
+  virtual ~Family() = default;
+
+  const Refinement& refinement() const { return refinement_; }
+  const FaceHierarchy& hierarchy() const { return hierarchy_; }
+  // The prepared mesh's faces (all quads or all triangles), over the prepared vertices.
+  const Connectivity& prepared() const { return prepared_; }
+  // The steps applied, for messages: e.g. "1 subdivision step".
+  virtual std::string preparation() const = 0;
+  virtual int refinement_steps() const = 0;
+  // What (u, v) means on original face `face`.
+  virtual FaceDomain domain(std::size_t face) const = 0;
+
+  // The weights at an exact parameter (inside domain(face)) of an original
+  // face, over prepared vertices; false when no stored rate holds it.
+  virtual bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const = 0;
+
+  // Fills layout.point_offsets, quads and triangles for layout.rates.
+  virtual void plan(TessellationLayout& layout, const detail::RangeRunner& run) const = 0;
+  // The points of prepared faces [begin, end) of a planned layout, from the
+  // prepared positions, into out[layout.point_offsets[f]...].
+  virtual void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
+                      std::array<float, 3>* out) const = 0;
+
+ protected:
+  Refinement refinement_;
+  FaceHierarchy hierarchy_;
+  Connectivity prepared_;
+};
+
+// The valence check every family makes before preparing, with messages that
+// say what to do: valences below 3 and above limits::kMaxValence are refused as
+// such; the valences the tables lack are all named, with the stencilgen call
+// that writes tables covering them together with every valence and rate the
+// tables already hold.
+class ValenceCheck {
+ public:
+  // `regular`: the valence whose patch is the regular one (4 or 6), which
+  // stencilgen always writes.
+  ValenceCheck(std::vector<int> table_valences, std::vector<int> table_rates, std::string scheme, int regular)
+      : table_valences_(std::move(table_valences)), table_rates_(std::move(table_rates)), scheme_(std::move(scheme)),
+        regular_(regular) {}
+  // One vertex; `who` (e.g. "vertex 12") is used only in a message.
+  void add(int valence, const std::string& who);
+  template <class Who>
+  void add_lazy(int valence, const Who& who) {
+    if (valence < 3 || valence > limits::kMaxValence || !covered(valence)) add(valence, who());
+  }
+  // Throws MeshError when some valence is missing.
+  void finish() const;
+
+ private:
+  bool covered(int valence) const;
+  std::vector<int> table_valences_, table_rates_;
+  std::string scheme_;
+  int regular_;
+  std::vector<int> missing_;
+  std::string first_missing_;
+};
+
+// "3-8,10" from a sorted list; a lone value v is written "v-v" when
+// `always_range` (stencilgen's --n reads a lone N as 1..N).
+std::string compact_list(const std::vector<int>& sorted, bool always_range);
+
+}  // namespace stencil_runtime

@@ -1,0 +1,127 @@
+#pragma once
+// Pieces shared by the quad and the triangle tessellations: the zipper between
+// two rows of limit points along a mesh edge, and the polygons along every edge
+// and round every vertex.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "mesh/uniform_topology.hpp"
+#include "stencil_runtime/limits.hpp"
+
+namespace stencil_runtime::detail {
+
+// The zipper between two rows along one edge, both given in the edge's
+// direction: A (na points) on the left, B (nb points) on the right. Equal rows
+// give na - 1 quads quad(a, b); others na + nb - 2 triangles tri(a, b, advance_a).
+template <class EmitQuad, class EmitTri>
+void zipper(int na, int nb, const EmitQuad& quad, const EmitTri& tri) {
+  if (na == nb) {
+    for (int t = 0; t + 1 < na; ++t) quad(t, t);
+    return;
+  }
+  int a = 0, b = 0;
+  while (a + 1 < na || b + 1 < nb) {
+    // Advance the row whose next point comes first along the edge:
+    // compare (a + 1.5)/na with (b + 1.5)/nb exactly.
+    const bool advance_a = b + 1 >= nb || (a + 1 < na && (2 * a + 3) * nb <= (2 * b + 3) * na);
+    tri(a, b, advance_a);
+    if (advance_a) ++a;
+    else ++b;
+  }
+}
+
+// The polygons the mesh's edges and vertices contribute: the zipper of each
+// edge (owned by its smaller half-edge) and the polygon of the corner points
+// round each vertex (owned by its first outgoing half-edge). `row(k, t, n)` is
+// the index, among a face's points, of point t (in the edge's direction) of
+// the row along the face's edge k (corner k -> k+1) at rate n; row(k, 0, n) is
+// the point at corner k.
+template <int K>
+class SeamPolygons {
+ public:
+  using Topology = UniformTopology<K>;
+  SeamPolygons(const Topology& topo, const std::vector<int>& rates)
+      : topo_(topo), rates_(rates), nh_(K * topo.faces()), nv_(topo.vertices()),
+        quad_offset_(nh_ + nv_ + 1, 0), tri_offset_(nh_ + nv_ + 1, 0), vertex_owner_(nv_, UINT32_MAX) {
+    for (std::uint32_t h = 0; h < nh_; ++h) {
+      const auto v = static_cast<std::size_t>(topo.vertex(Topology::face_of(h), Topology::corner_of(h)));
+      if (vertex_owner_[v] == UINT32_MAX) vertex_owner_[v] = h;
+      std::size_t q = 0, t = 0;
+      const std::uint32_t o = topo.twin(h);
+      if (h < o) {
+        const auto na = static_cast<std::size_t>(rates[Topology::face_of(h)]);
+        const auto nb = static_cast<std::size_t>(rates[Topology::face_of(o)]);
+        if (na == nb) q = na - 1;
+        else t = na + nb - 2;
+      }
+      quad_offset_[h + 1] = quad_offset_[h] + q;
+      tri_offset_[h + 1] = tri_offset_[h] + t;
+    }
+    for (std::size_t v = 0; v < nv_; ++v) {
+      const int k = topo.valence(static_cast<int>(v));
+      quad_offset_[nh_ + v + 1] = quad_offset_[nh_ + v] + (k == 4 ? 1 : 0);
+      tri_offset_[nh_ + v + 1] = tri_offset_[nh_ + v] + (k == 4 ? 0 : static_cast<std::size_t>(k - 2));
+    }
+  }
+  std::size_t half_edges() const { return nh_; }
+  std::size_t quads() const { return quad_offset_.back(); }
+  std::size_t triangles() const { return tri_offset_.back(); }
+
+  // Zippers of the edges owned by half-edges [begin, end), into the slots after `quads` and `tris`.
+  template <class Row>
+  void edges(std::size_t begin, std::size_t end, const std::vector<std::size_t>& point_offset, const Row& row,
+             std::array<int, 4>* quads, std::array<int, 3>* tris) const {
+    for (auto h = static_cast<std::uint32_t>(begin); h != end; ++h) {
+      const std::uint32_t o = topo_.twin(h);
+      if (o < h) continue;
+      const std::size_t f = Topology::face_of(h), g = Topology::face_of(o);
+      const int kf = Topology::corner_of(h), kg = Topology::corner_of(o);
+      const int na = rates_[f], nb = rates_[g];
+      const int fa = static_cast<int>(point_offset[f]), gb = static_cast<int>(point_offset[g]);
+      auto A = [&](int t) { return fa + row(kf, t, na); };
+      auto B = [&](int t) { return gb + row(kg, nb - 1 - t, nb); };  // g's row, in f's direction
+      std::array<int, 4>* q = quads + quad_offset_[h];
+      std::array<int, 3>* t = tris + tri_offset_[h];
+      zipper(
+          na, nb, [&](int a, int b) { *q++ = {B(b), B(b + 1), A(a + 1), A(a)}; },
+          [&](int a, int b, bool advance_a) {
+            if (advance_a) *t++ = {B(b), A(a + 1), A(a)};
+            else *t++ = {B(b), B(b + 1), A(a)};
+          });
+    }
+  }
+
+  // Polygons of vertices [begin, end): a quad at valence 4, a fan of triangles otherwise.
+  template <class Row>
+  void vertices(std::size_t begin, std::size_t end, const std::vector<std::size_t>& point_offset, const Row& row,
+                std::array<int, 4>* quads, std::array<int, 3>* tris) const {
+    int ring[limits::kMaxValence];
+    for (std::size_t v = begin; v != end; ++v) {
+      const std::uint32_t h = vertex_owner_[v];
+      int k = 0;
+      std::uint32_t e = h;
+      do {
+        const std::size_t f = Topology::face_of(e);
+        ring[k++] = static_cast<int>(point_offset[f]) + row(Topology::corner_of(e), 0, rates_[f]);
+        e = topo_.turn_ccw(e);
+      } while (e != h && k < limits::kMaxValence);
+      if (k == 4) {
+        quads[quad_offset_[nh_ + v]] = {ring[0], ring[1], ring[2], ring[3]};
+      } else {
+        std::array<int, 3>* t = tris + tri_offset_[nh_ + v];
+        for (int i = 1; i + 1 < k; ++i) *t++ = {ring[0], ring[i], ring[i + 1]};
+      }
+    }
+  }
+
+ private:
+  const Topology& topo_;
+  const std::vector<int>& rates_;
+  std::size_t nh_, nv_;
+  std::vector<std::size_t> quad_offset_, tri_offset_;  // per half-edge, then per vertex
+  std::vector<std::uint32_t> vertex_owner_;
+};
+
+}  // namespace stencil_runtime::detail

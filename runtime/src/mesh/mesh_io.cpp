@@ -1,0 +1,172 @@
+#include "stencil_runtime/mesh_io.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <string_view>
+
+#include "stencil_runtime/limits.hpp"
+
+namespace stencil_runtime {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The next whitespace-separated token of `line` from `pos` (empty at the end).
+std::string_view token(std::string_view line, std::size_t& pos) {
+  while (pos < line.size() && (line[pos] == ' ' || line[pos] == '\t' || line[pos] == '\r')) ++pos;
+  const std::size_t begin = pos;
+  while (pos < line.size() && line[pos] != ' ' && line[pos] != '\t' && line[pos] != '\r') ++pos;
+  return line.substr(begin, pos - begin);
+}
+
+// One line (without its '\n'); false at the end of the input. Throws via `fail`
+// for a line longer than the limit, before reading it whole.
+template <class Fail>
+bool next_line(std::streambuf& in, std::string& line, const Fail& fail) {
+  line.clear();
+  int c = in.sbumpc();
+  if (c == std::char_traits<char>::eof()) return false;
+  while (c != std::char_traits<char>::eof() && c != '\n') {
+    if (line.size() >= limits::kMaxMeshLineBytes)
+      fail("line longer than " + std::to_string(limits::kMaxMeshLineBytes) + " bytes");
+    line.push_back(static_cast<char>(c));
+    c = in.sbumpc();
+  }
+  return true;
+}
+
+}  // namespace
+
+Mesh read_obj(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) throw LoadError(path + ": cannot open (no such file)");
+  if (!fs::is_regular_file(status)) throw LoadError(path + ": not a regular file");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw LoadError(path + ": cannot read its size: " + ec.message());
+  if (size > limits::kMaxMeshFileBytes)
+    throw LoadError(path + ": " + std::to_string(size) + " bytes; meshes are limited to " +
+                    std::to_string(limits::kMaxMeshFileBytes) + " bytes");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw LoadError(path + ": cannot open");
+  Mesh mesh;
+  std::string line;
+  long number = 0;
+  auto fail = [&](const std::string& what) { throw LoadError(path + ":" + std::to_string(number) + ": " + what); };
+  while (next_line(*in.rdbuf(), line, [&](const std::string& what) { ++number; fail(what); })) {
+    ++number;
+    std::size_t pos = 0;
+    const std::string_view tag = token(line, pos);
+    if (tag == "v") {
+      Point p{};
+      for (int k = 0; k < 3; ++k) {
+        const std::string_view t = token(line, pos);
+        const auto [end, err] = std::from_chars(t.data(), t.data() + t.size(), p[static_cast<std::size_t>(k)]);
+        if (t.empty() || err != std::errc() || end != t.data() + t.size())
+          fail("a vertex needs three numbers, got '" + std::string(t) + "'");
+        if (!std::isfinite(p[static_cast<std::size_t>(k)]) || std::fabs(p[static_cast<std::size_t>(k)]) > limits::kMaxCoordinate)
+          fail("coordinate " + std::string(t) + " is not a finite number of magnitude at most 1e37");
+      }
+      if (mesh.positions.size() >= limits::kMaxMeshElements) fail("more than 2^30 vertices");
+      mesh.positions.push_back(p);
+    } else if (tag == "f") {
+      int count = 0;
+      for (std::string_view item = token(line, pos); !item.empty(); item = token(line, pos)) {
+        long long index = 0;
+        const auto [end, err] = std::from_chars(item.data(), item.data() + item.size(), index);
+        if (err != std::errc() || end == item.data() || (end != item.data() + item.size() && *end != '/'))
+          fail("bad face index '" + std::string(item) + "'");
+        const auto n = static_cast<long long>(mesh.positions.size());
+        if (index < 0) index += n + 1;
+        if (index < 1 || index > n) fail("face index " + std::string(item) + " refers to no vertex defined so far");
+        if (count == limits::kMaxFaceSize) fail("a face has more than " + std::to_string(limits::kMaxFaceSize) + " vertices");
+        mesh.face_vertices.push_back(static_cast<int>(index - 1));
+        ++count;
+      }
+      if (count < 3) fail("a face needs at least three vertices");
+      if (mesh.face_sizes.size() >= limits::kMaxMeshElements) fail("more than 2^30 faces");
+      mesh.face_sizes.push_back(count);
+    }
+  }
+  if (mesh.face_sizes.empty()) throw LoadError(path + ": no faces");
+  return mesh;
+}
+
+namespace {
+
+void write_obj(const PolygonSoup& s, std::FILE* f) {
+  for (const auto& p : s.positions) std::fprintf(f, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]);
+  const bool normals = !s.normals.empty();
+  for (const auto& n : s.normals) std::fprintf(f, "vn %.7g %.7g %.7g\n", n[0], n[1], n[2]);
+  auto corner = [&](int i) { normals ? std::fprintf(f, " %d//%d", i + 1, i + 1) : std::fprintf(f, " %d", i + 1); };
+  for (const auto& q : s.quads) {
+    std::fputc('f', f);
+    for (int i : q) corner(i);
+    std::fputc('\n', f);
+  }
+  for (const auto& t : s.triangles) {
+    std::fputc('f', f);
+    for (int i : t) corner(i);
+    std::fputc('\n', f);
+  }
+}
+
+void write_ply(const PolygonSoup& s, std::FILE* f) {
+  const bool normals = !s.normals.empty();
+  std::fprintf(f,
+               "ply\nformat binary_little_endian 1.0\nelement vertex %zu\nproperty float x\nproperty float y\n"
+               "property float z\n%selement face %zu\nproperty list uchar int vertex_indices\nend_header\n",
+               s.positions.size(), normals ? "property float nx\nproperty float ny\nproperty float nz\n" : "",
+               s.quads.size() + s.triangles.size());
+  if (normals) {
+    for (std::size_t i = 0; i < s.positions.size(); ++i) {
+      std::fwrite(s.positions[i].data(), sizeof(float), 3, f);
+      std::fwrite(s.normals[i].data(), sizeof(float), 3, f);
+    }
+  } else {
+    std::fwrite(s.positions.data(), sizeof(float) * 3, s.positions.size(), f);
+  }
+  for (const auto& q : s.quads) {
+    const unsigned char n = 4;
+    std::fwrite(&n, 1, 1, f);
+    std::fwrite(q.data(), sizeof(int), 4, f);
+  }
+  for (const auto& t : s.triangles) {
+    const unsigned char n = 3;
+    std::fwrite(&n, 1, 1, f);
+    std::fwrite(t.data(), sizeof(int), 3, f);
+  }
+}
+
+}  // namespace
+
+void write_polygons(const PolygonSoup& soup, const std::string& path) {
+  const std::string ext = fs::path(path).extension().string();
+  if (ext != ".obj" && ext != ".ply") throw LoadError(path + ": output must end in .obj or .ply");
+  if (!soup.normals.empty() && soup.normals.size() != soup.positions.size())
+    throw LoadError(path + ": the tessellation has " + std::to_string(soup.normals.size()) + " normals for " +
+                    std::to_string(soup.positions.size()) + " points");
+  const std::string temp = path + ".partial";
+  std::FILE* f = std::fopen(temp.c_str(), "wb");
+  if (!f) throw LoadError(path + ": cannot write");
+  if (ext == ".obj") write_obj(soup, f);
+  else write_ply(soup, f);
+  const bool ok = std::ferror(f) == 0;
+  if (std::fclose(f) != 0 || !ok) {
+    std::remove(temp.c_str());
+    throw LoadError(path + ": write failed");
+  }
+  std::error_code ec;
+  fs::rename(temp, path, ec);
+  if (ec) {
+    std::remove(temp.c_str());
+    throw LoadError(path + ": cannot move the finished file into place: " + ec.message());
+  }
+}
+
+}  // namespace stencil_runtime

@@ -1,0 +1,88 @@
+#include "polygon_links.hpp"
+
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+
+namespace stencil_runtime {
+
+namespace {
+std::string edge_name(int a, int b) { return "(" + std::to_string(a) + ", " + std::to_string(b) + ")"; }
+}  // namespace
+
+PolygonLinks link_polygons(const Connectivity& mesh) {
+  const std::size_t nf = mesh.face_count(), nv = mesh.vertex_count;
+  PolygonLinks l;
+  l.start.assign(nf + 1, 0);
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (mesh.face_sizes[f] < 3) throw MeshError("face " + std::to_string(f) + " has fewer than 3 vertices");
+    l.start[f + 1] = l.start[f] + static_cast<std::size_t>(mesh.face_sizes[f]);
+    if (l.start[f + 1] > mesh.face_vertices.size())
+      throw MeshError("face " + std::to_string(f) + ": the face sizes add up to more than the " +
+                      std::to_string(mesh.face_vertices.size()) + " face-vertex indices given");
+  }
+  if (l.start[nf] != mesh.face_vertices.size())
+    throw MeshError("the face sizes add up to " + std::to_string(l.start[nf]) + " face-vertex indices, but " +
+                    std::to_string(mesh.face_vertices.size()) + " are given");
+  const std::size_t nh = l.start[nf];
+  l.face_of.resize(nh);
+  l.next.resize(nh);
+  for (std::size_t f = 0; f < nf; ++f)
+    for (std::size_t h = l.start[f]; h < l.start[f + 1]; ++h) {
+      const int v = mesh.face_vertices[h];
+      if (v < 0 || static_cast<std::size_t>(v) >= nv)
+        throw MeshError("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + ", which does not exist");
+      for (std::size_t g = l.start[f]; g < h; ++g)
+        if (mesh.face_vertices[g] == v)
+          throw MeshError("face " + std::to_string(f) + " uses vertex " + std::to_string(v) + " twice");
+      l.face_of[h] = f;
+      l.next[h] = h + 1 < l.start[f + 1] ? h + 1 : l.start[f];
+    }
+  auto vert = [&](std::size_t h) { return mesh.face_vertices[h]; };
+  auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
+  std::unordered_map<std::uint64_t, std::size_t> directed;
+  directed.reserve(nh);
+  for (std::size_t h = 0; h < nh; ++h) {
+    const int a = vert(h), b = vert(l.next[h]);
+    const auto [it, fresh] = directed.emplace(key(a, b), h);
+    if (!fresh)
+      throw MeshError("edge " + edge_name(a, b) + " is used twice in the same direction (faces " +
+                      std::to_string(l.face_of[it->second]) + " and " + std::to_string(l.face_of[h]) +
+                      "): the mesh is non-manifold or inconsistently oriented");
+  }
+  l.twin.assign(nh, 0);
+  l.valence.assign(nv, 0);
+  for (std::size_t h = 0; h < nh; ++h) {
+    const int a = vert(h), b = vert(l.next[h]);
+    const auto it = directed.find(key(b, a));
+    if (it == directed.end())
+      throw MeshError("edge " + edge_name(a, b) + " of face " + std::to_string(l.face_of[h]) +
+                      " has no neighbouring face: the mesh has a boundary (only closed meshes are supported)");
+    l.twin[h] = it->second;
+    ++l.valence[static_cast<std::size_t>(a)];
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+    if (l.valence[v] == 0) throw MeshError("vertex " + std::to_string(v) + " belongs to no face");
+  // Each vertex must have a single fan of faces: turning round it from one
+  // outgoing half-edge (to the previous half-edge of the face, then across)
+  // must visit all of its edges.
+  std::vector<char> seen(nv, 0);
+  for (std::size_t h = 0; h < nh; ++h) {
+    const auto v = static_cast<std::size_t>(vert(h));
+    if (seen[v]) continue;
+    seen[v] = 1;
+    int count = 0;
+    std::size_t e = h;
+    do {
+      ++count;
+      const std::size_t f = l.face_of[e];
+      const std::size_t prev = e == l.start[f] ? l.start[f + 1] - 1 : e - 1;
+      e = l.twin[prev];
+    } while (e != h && count <= l.valence[v]);
+    if (count != l.valence[v])
+      throw MeshError("vertex " + std::to_string(v) + " is non-manifold (its faces form more than one fan)");
+  }
+  return l;
+}
+
+}  // namespace stencil_runtime

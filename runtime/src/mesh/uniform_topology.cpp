@@ -1,0 +1,36 @@
+#include "uniform_topology.hpp"
+
+#include <string>
+
+#include "polygon_links.hpp"
+#include "stencil_runtime/limits.hpp"
+
+namespace stencil_runtime {
+
+template <int K>
+UniformTopology<K>::UniformTopology(const Connectivity& mesh) {
+  const std::size_t nf = mesh.face_count();
+  if (nf > limits::kMaxMeshElements / K)
+    throw MeshError("the mesh has " + std::to_string(nf) + " faces; the runtime supports up to " +
+                    std::to_string(limits::kMaxMeshElements / K));
+  for (std::size_t f = 0; f < nf; ++f)
+    if (mesh.face_sizes[f] != K)
+      throw MeshError("face " + std::to_string(f) + " has " + std::to_string(mesh.face_sizes[f]) + " vertices; " +
+                      (K == 4 ? "quad schemes need a mesh of quads here" : "triangle schemes need a mesh of triangles"));
+  const PolygonLinks links = link_polygons(mesh);  // checks indices, pairs the half-edges, counts valences
+  vertex_of_ = mesh.face_vertices;
+  twin_.assign(links.twin.begin(), links.twin.end());
+  valence_ = links.valence;
+}
+
+template <int K>
+int UniformTopology<K>::corner_of_vertex(std::size_t f, int v) const {
+  for (int c = 0; c < K; ++c)
+    if (vertex_of_[K * f + static_cast<std::size_t>(c)] == v) return c;
+  return -1;
+}
+
+template class UniformTopology<3>;
+template class UniformTopology<4>;
+
+}  // namespace stencil_runtime

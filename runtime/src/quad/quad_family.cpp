@@ -1,0 +1,233 @@
+#include "quad_family.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "mesh/polygon_links.hpp"
+#include "quad_refinement.hpp"
+
+namespace stencil_runtime {
+
+struct QuadFamily::Prepared {
+  Refinement refinement;
+  FaceHierarchy hierarchy;
+  std::vector<int> original_sizes;
+  bool polygon_step = false;
+  int steps = 0;
+  Connectivity mesh;  // the prepared mesh
+};
+
+namespace {
+
+bool isolated(const QuadTopology& topo) {
+  for (std::size_t f = 0; f < topo.faces(); ++f) {
+    int extraordinary = 0;
+    for (int c = 0; c < 4; ++c) extraordinary += topo.valence(topo.vertex(f, c)) != 4;
+    if (extraordinary > 1) return false;
+  }
+  return true;
+}
+
+// Child c of a face split into quadrants (subdivide_quads) and the parameter
+// there: c is the quadrant of (u, v), the child's u axis along the parent's
+// edge c -> c+1.
+std::pair<int, ExactParameter> quadrant(const ExactParameter& p) {
+  const Fraction one{1, 1}, half{1, 2};
+  const bool right = compare(p.u, half) > 0, top = compare(p.v, half) > 0;
+  const Fraction x = subtract(multiply(p.u, 2), Fraction{right ? 1 : 0, 1});
+  const Fraction y = subtract(multiply(p.v, 2), Fraction{top ? 1 : 0, 1});
+  const int c = !top ? (right ? 1 : 0) : (right ? 2 : 3);
+  switch (c) {
+    case 0: return {0, {x, y}};
+    case 1: return {1, {y, subtract(one, x)}};
+    case 2: return {2, {subtract(one, x), subtract(one, y)}};
+    default: return {3, {subtract(one, y), x}};
+  }
+}
+
+}  // namespace
+
+QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivity& mesh) {
+  const QuadTables& t = tables.quad();
+  QuadFamily::Prepared out;
+  out.refinement = Refinement(mesh.vertex_count);
+  out.hierarchy.original_faces = mesh.face_count();
+  out.original_sizes = mesh.face_sizes;
+  const PolygonLinks links = link_polygons(mesh);  // a closed manifold (names the face, edge or vertex)
+  ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 4);
+  for (std::size_t v = 0; v < mesh.vertex_count; ++v)
+    valences.add_lazy(links.valence[v], [&] { return "vertex " + std::to_string(v); });
+  const bool all_quads = std::all_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k == 4; });
+  if (!all_quads) {
+    if (!t.has_polygon_rules()) {
+      const auto it = std::find_if(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k != 4; });
+      throw MeshError("face " + std::to_string(it - mesh.face_sizes.begin()) + " has " + std::to_string(*it) +
+                      " vertices; this scheme's tables have no rules for polygons other than quads");
+    }
+    // Each face's centre becomes a vertex whose valence is the face size.
+    for (std::size_t f = 0; f < mesh.face_count(); ++f)
+      if (mesh.face_sizes[f] != 4)
+        valences.add_lazy(mesh.face_sizes[f], [&] {
+          return "face " + std::to_string(f) + " (" + std::to_string(mesh.face_sizes[f]) +
+                 " vertices, so its centre becomes a vertex of that valence)";
+        });
+  }
+  valences.finish();
+  if (all_quads) {
+    out.mesh = mesh;
+  } else {
+    QuadStep step = subdivide_polygons(mesh, links, t);
+    std::vector<std::size_t> offsets(mesh.face_count() + 1, 0);
+    for (std::size_t f = 0; f < mesh.face_count(); ++f) offsets[f + 1] = offsets[f] + static_cast<std::size_t>(mesh.face_sizes[f]);
+    out.hierarchy.add(std::move(offsets), 2);
+    out.refinement.add(std::move(step.step));
+    out.mesh = std::move(step.mesh);
+    out.polygon_step = true;
+  }
+  QuadTopology topo(out.mesh);
+  while (!isolated(topo)) {
+    if (out.steps + (out.polygon_step ? 1 : 0) == limits::kMaxRefinementSteps)
+      throw MeshError("extraordinary vertices still share faces after " + std::to_string(limits::kMaxRefinementSteps) +
+                      " subdivision steps");
+    QuadStep step = subdivide_quads(topo, t);
+    out.hierarchy.add_uniform(4, 2);
+    out.refinement.add(std::move(step.step));
+    out.mesh = std::move(step.mesh);
+    ++out.steps;
+    topo = QuadTopology(out.mesh);
+  }
+  return out;
+}
+
+
+QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh)
+    : QuadFamily(tables, prepare(*tables, mesh)) {}
+
+QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, Prepared prepared)
+    : holder_(std::move(tables)),
+      tables_(holder_->quad()),
+      original_sizes_(std::move(prepared.original_sizes)),
+      polygon_step_(prepared.polygon_step),
+      steps_(prepared.steps),
+      topology_(prepared.mesh) {
+  refinement_ = std::move(prepared.refinement);
+  hierarchy_ = std::move(prepared.hierarchy);
+  prepared_ = std::move(prepared.mesh);
+  patches_.reserve(topology_.faces());
+  for (std::size_t f = 0; f < topology_.faces(); ++f) patches_.push_back(gather_quad_patch(topology_, f));
+  centre_weights_.resize(static_cast<std::size_t>(tables_.rates().back()) + 1);
+  for (int n : tables_.rates()) {
+    auto& w = centre_weights_[static_cast<std::size_t>(n)];
+    w.resize(4 * static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) tables_.regular_weights(n, 2L * i + 1, w.data() + 4 * i);
+  }
+}
+
+std::string QuadFamily::preparation() const {
+  std::string out = polygon_step_ ? "the polygon step" : "";
+  if (steps_ > 0 || out.empty()) {
+    if (!out.empty()) out += " and ";
+    out += std::to_string(steps_) + " subdivision step" + (steps_ == 1 ? "" : "s");
+  }
+  return out;
+}
+
+FaceDomain QuadFamily::domain(std::size_t face) const { return FaceDomain::of(SchemeFamily::Quad, original_sizes_[face]); }
+
+std::pair<std::size_t, ExactParameter> QuadFamily::locate(std::size_t face, const ExactParameter& at) const {
+  ExactParameter p = at;
+  for (std::size_t level = 0; level < hierarchy_.levels.size(); ++level) {
+    const std::size_t first = hierarchy_.levels[level].child_offsets[face];
+    if (level == 0 && polygon_step_ && original_sizes_[face] != 4) {
+      ExactParameter local;
+      face = first + static_cast<std::size_t>(domain(face).subface(p, local));
+      p = local;
+      continue;
+    }
+    const auto [c, child] = quadrant(p);
+    face = first + static_cast<std::size_t>(c);
+    p = child;
+  }
+  return {face, p};
+}
+
+bool QuadFamily::stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const {
+  const auto [prepared, p] = locate(face, at);
+  const QuadPatch& patch = patches_[prepared];
+  const ExactParameter q = patch.to_patch(p);
+  // The smallest stored rate n whose grid 1/(2n) holds both coordinates with
+  // equal parity: a node (both even) or a cell centre (both odd).
+  for (int n : tables_.rates()) {
+    const std::int64_t g = 2 * static_cast<std::int64_t>(n);
+    if (g % q.u.den != 0 || g % q.v.den != 0) continue;
+    const std::int64_t a = q.u.num * (g / q.u.den), b = q.v.num * (g / q.v.den);
+    if (((a ^ b) & 1) != 0) continue;
+    out.face = prepared;
+    out.points = patch.points.data();
+    out.size = patch.points.size();
+    if ((a & 1) == 0) tables_.node_stencil(patch.valence, n, static_cast<int>(a / 2), static_cast<int>(b / 2), out.storage.data());
+    else tables_.centre_stencil(patch.valence, n, static_cast<int>(a / 2), static_cast<int>(b / 2), out.storage.data());
+    out.weights = out.storage.data();
+    return true;
+  }
+  return false;
+}
+
+void QuadFamily::points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
+                        std::array<float, 3>* out_all) const {
+  thread_local std::vector<Point> rows, local, reflected;
+  for (std::size_t f = begin; f != end; ++f) {
+    const QuadPatch& p = patches_[f];
+    const int n = layout.rates[f];
+    std::array<float, 3>* out = out_all + layout.point_offsets[f];
+    if (p.valence == 4) {
+      // Rows first: R[q][i] = sum_c wx(i)[c] P(c, q), then each point sums 4 rows.
+      const double* wx = centre_weights_[static_cast<std::size_t>(n)].data();
+      rows.resize(4 * static_cast<std::size_t>(n));
+      for (int q = 0; q < 4; ++q) {
+        const Point& P0 = pos[p.points[static_cast<std::size_t>(q * 4)]];
+        const Point& P1 = pos[p.points[static_cast<std::size_t>(q * 4 + 1)]];
+        const Point& P2 = pos[p.points[static_cast<std::size_t>(q * 4 + 2)]];
+        const Point& P3 = pos[p.points[static_cast<std::size_t>(q * 4 + 3)]];
+        for (int i = 0; i < n; ++i) {
+          const double* w = wx + 4 * i;
+          rows[static_cast<std::size_t>(q * n + i)] = {w[0] * P0[0] + w[1] * P1[0] + w[2] * P2[0] + w[3] * P3[0],
+                                                       w[0] * P0[1] + w[1] * P1[1] + w[2] * P2[1] + w[3] * P3[1],
+                                                       w[0] * P0[2] + w[1] * P1[2] + w[2] * P2[2] + w[3] * P3[2]};
+        }
+      }
+      for (int j = 0; j < n; ++j) {
+        const double* wy = wx + 4 * j;  // same weights: the grid is square
+        const Point* r0 = rows.data();
+        const Point* r1 = r0 + n;
+        const Point* r2 = r1 + n;
+        const Point* r3 = r2 + n;
+        for (int i = 0; i < n; ++i)
+          out[j * n + i] = {static_cast<float>(wy[0] * r0[i][0] + wy[1] * r1[i][0] + wy[2] * r2[i][0] + wy[3] * r3[i][0]),
+                            static_cast<float>(wy[0] * r0[i][1] + wy[1] * r1[i][1] + wy[2] * r2[i][1] + wy[3] * r3[i][1]),
+                            static_cast<float>(wy[0] * r0[i][2] + wy[1] * r1[i][2] + wy[2] * r2[i][2] + wy[3] * r3[i][2])};
+      }
+      continue;
+    }
+    const std::size_t m = p.points.size();
+    // The control points, contiguous, and in reflected order for mirrored stencils.
+    local.resize(m);
+    reflected.resize(m);
+    const std::uint32_t* reflect = tables_.reflection(p.valence);
+    for (std::size_t h = 0; h < m; ++h) local[h] = pos[p.points[h]];
+    for (std::size_t h = 0; h < m; ++h) reflected[h] = local[reflect[h]];
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        long pa = 0, pb = 0;
+        p.to_patch(2L * i + 1, 2L * j + 1, 2L * n, pa, pb);
+        bool mirrored = false;
+        const double* wt = tables_.centre_weights(p.valence, n, static_cast<int>(pa / 2), static_cast<int>(pb / 2), mirrored);
+        const Point* P = mirrored ? reflected.data() : local.data();
+        double x = 0, y = 0, z = 0;
+        for (std::size_t h = 0; h < m; ++h) x += wt[h] * P[h][0], y += wt[h] * P[h][1], z += wt[h] * P[h][2];
+        out[j * n + i] = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+      }
+  }
+}
+
+}  // namespace stencil_runtime

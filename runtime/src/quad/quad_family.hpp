@@ -1,0 +1,56 @@
+#pragma once
+// A closed mesh under a quad scheme's tables, prepared (docs/runtime.md): the
+// scheme's polygon step where the mesh has other polygons, then whole-mesh
+// steps of the scheme's own rules until no face has two extraordinary corners,
+// and every prepared face's patch gathered; exact evaluation from the tables
+// and the tessellation kernels (quad_tessellation.cpp).
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "family/family.hpp"
+#include "mesh/connectivity.hpp"
+#include "mesh/uniform_topology.hpp"
+#include "quad_patch.hpp"
+#include "stencil_runtime/tables.hpp"
+#include "tables/quad_tables.hpp"
+
+namespace stencil_runtime {
+
+class QuadFamily final : public Family {
+ public:
+  // Throws MeshError naming the face, edge or vertex (see SurfaceTopology::create).
+  QuadFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh);
+
+  std::string preparation() const override;
+  int refinement_steps() const override { return steps_ + (polygon_step_ ? 1 : 0); }
+  FaceDomain domain(std::size_t face) const override;
+  bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const override;
+  void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
+  void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
+              std::array<float, 3>* out) const override;
+
+  // Below the public interface (tests, benchmarks):
+  const QuadTables& tables() const { return tables_; }
+  const QuadTopology& topology() const { return topology_; }  // of the prepared mesh
+  const QuadPatch& patch(std::size_t prepared_face) const { return patches_[prepared_face]; }
+  // Where an exact parameter of an original face lands: a prepared face and its parameter there.
+  std::pair<std::size_t, ExactParameter> locate(std::size_t face, const ExactParameter& at) const;
+
+ private:
+  struct Prepared;
+  static Prepared prepare(const Tables& tables, const Connectivity& mesh);
+  QuadFamily(std::shared_ptr<const Tables> tables, Prepared prepared);
+
+  std::shared_ptr<const Tables> holder_;  // keeps tables_ alive
+  const QuadTables& tables_;
+  std::vector<int> original_sizes_;
+  bool polygon_step_ = false;
+  int steps_ = 0;  // isolation steps (after the polygon step)
+  QuadTopology topology_;
+  std::vector<QuadPatch> patches_;
+  // Per stored rate n (indexed by n): phi at the n cell centres, 4 weights each.
+  std::vector<std::vector<double>> centre_weights_;
+};
+
+}  // namespace stencil_runtime

@@ -1,0 +1,64 @@
+// The quad family's share of the watertight tessellation (tessellation.hpp):
+// n^2 cell centres per prepared face at its rate n, (n-1)^2 quads between
+// them, and the rows of centres along each edge for the shared seams.
+#include <string>
+
+#include "family/seam_polygons.hpp"
+#include "quad_family.hpp"
+
+namespace stencil_runtime {
+
+namespace {
+
+// Grid index of the centre at position t (0..n-1, in the half-edge's direction)
+// of the row of face cells along the face's edge k (corner k -> k+1).
+inline int row_cell(int k, int t, int n) {
+  switch (k & 3) {
+    case 0: return t;                            // j = 0, i = t
+    case 1: return t * n + (n - 1);              // i = n-1, j = t
+    case 2: return (n - 1) * n + (n - 1 - t);    // j = n-1, i = n-1-t
+    default: return (n - 1 - t) * n;             // i = 0, j = n-1-t
+  }
+}
+
+}  // namespace
+
+void QuadFamily::plan(TessellationLayout& layout, const detail::RangeRunner& run) const {
+  const std::size_t nf = topology_.faces();
+  const std::vector<int>& rates = layout.rates;
+  // Counts and offsets (serial, O(faces)): points and interior quads per face,
+  // then the zippers and vertex polygons.
+  std::vector<std::size_t> interior_offset(nf + 1, 0);
+  layout.point_offsets.assign(nf + 1, 0);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto n = static_cast<std::size_t>(rates[f]);
+    layout.point_offsets[f + 1] = layout.point_offsets[f] + n * n;
+    interior_offset[f + 1] = interior_offset[f] + (n - 1) * (n - 1);
+  }
+  if (layout.point_offsets[nf] > limits::kMaxTessellationPoints)
+    throw EvaluationError("the tessellation would have " + std::to_string(layout.point_offsets[nf]) +
+                          " points; the limit is " + std::to_string(limits::kMaxTessellationPoints) + " (lower the rates)");
+  const detail::SeamPolygons<4> seams(topology_, rates);
+  const std::size_t interior_quads = interior_offset[nf];
+  layout.quads.resize(interior_quads + seams.quads());
+  layout.triangles.resize(seams.triangles());
+  run(nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f != end; ++f) {
+      const int n = rates[f];
+      const int base = static_cast<int>(layout.point_offsets[f]);
+      std::array<int, 4>* q = layout.quads.data() + interior_offset[f];
+      for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i)
+          *q++ = {base + j * n + i, base + j * n + i + 1, base + (j + 1) * n + i + 1, base + (j + 1) * n + i};
+    }
+  });
+  // Edges: the zipper between the two faces' rows of centres; vertices: the polygon of the corner centres.
+  run(seams.half_edges(), [&](std::size_t begin, std::size_t end) {
+    seams.edges(begin, end, layout.point_offsets, row_cell, layout.quads.data() + interior_quads, layout.triangles.data());
+  });
+  run(topology_.vertices(), [&](std::size_t begin, std::size_t end) {
+    seams.vertices(begin, end, layout.point_offsets, row_cell, layout.quads.data() + interior_quads, layout.triangles.data());
+  });
+}
+
+}  // namespace stencil_runtime

@@ -1,0 +1,276 @@
+#include "quad_tables.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "binary_reader.hpp"
+#include "stencil_runtime/binary_format.hpp"
+#include "stencil_runtime/limits.hpp"
+
+namespace stencil_runtime {
+
+namespace {
+
+std::vector<double> read_scalars(detail::BinaryReader& r, std::size_t count, std::uint32_t bytes, std::size_t available) {
+  if (count > available / bytes) r.fail("truncated scalar block");
+  std::vector<double> out(count);
+  for (auto& x : out) x = bytes == 8 ? r.get<double>() : static_cast<double>(r.get<float>());
+  return out;
+}
+
+std::size_t half_count(long side) { return static_cast<std::size_t>(side * (side + 1) / 2); }
+
+bool finite(const std::vector<double>& xs) {
+  return std::all_of(xs.begin(), xs.end(), [](double x) { return std::isfinite(x); });
+}
+
+}  // namespace
+
+QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expected_hash) {
+  const std::string bytes = detail::read_binary_file(path);
+  detail::BinaryReader r(bytes, path);
+  detail::check_envelope(bytes, r, format::kSurfaceMagic, "binary surface table");
+  const auto version = r.get<std::uint32_t>();
+  if (version != format::kSurfaceVersion)
+    r.fail("format version " + std::to_string(version) + " is not supported (expected " +
+           std::to_string(format::kSurfaceVersion) + "; regenerate the tables with this stencilgen)");
+  const auto scalar = r.get<std::uint32_t>();
+  if (scalar != 4 && scalar != 8) r.fail("invalid scalar size " + std::to_string(scalar));
+  QuadTables t;
+  t.hash_ = r.get<std::uint64_t>();
+  if (expected_hash != 0 && t.hash_ != expected_hash) r.fail("made from a different scheme (hash mismatch)");
+  auto left = [&] { return bytes.size() - r.position(); };
+  t.face_corner_ = r.get<double>();
+  t.edge_end_ = r.get<double>();
+  t.edge_wing_ = r.get<double>();
+  const auto rule_count = r.get<std::uint32_t>();
+  if (rule_count > left() / 28) r.fail("truncated rule list");
+  for (std::uint32_t k = 0; k < rule_count; ++k) {
+    VertexRule rule;
+    rule.valence = static_cast<int>(r.get<std::uint32_t>());
+    rule.centre = r.get<double>();
+    rule.edge = r.get<double>();
+    rule.face = r.get<double>();
+    t.rules_.push_back(rule);
+  }
+  const auto polygon_flag = r.get<std::uint8_t>();
+  if (polygon_flag > 1) r.fail("invalid polygon-rules flag " + std::to_string(polygon_flag));
+  t.has_polygon_ = polygon_flag != 0;
+  if (t.has_polygon_) {
+    t.polygon_edge_end_ = r.get<double>();
+    t.polygon_edge_face_ = r.get<double>();
+    for (const auto& rule : t.rules_) {
+      VertexRule p{rule.valence, r.get<double>(), r.get<double>(), r.get<double>()};
+      t.polygon_rules_.push_back(p);
+    }
+  }
+  const auto rate_count = r.get<std::uint32_t>();
+  if (rate_count > left() / 4) r.fail("truncated rate list");
+  for (std::uint32_t k = 0; k < rate_count; ++k) {
+    const auto n = r.get<std::uint32_t>();
+    if (n == 0 || n > static_cast<std::uint32_t>(limits::kMaxRate))
+      r.fail("invalid rate " + std::to_string(n) + " (rates are 1.." + std::to_string(limits::kMaxRate) + ")");
+    t.rates_.push_back(static_cast<int>(n));
+  }
+  for (std::uint32_t k = 0; k < rate_count; ++k) {
+    t.regular_first_.push_back(r.get<std::int32_t>());
+    const auto count = r.get<std::uint32_t>();
+    t.regular_.push_back(read_scalars(r, count, scalar, left()));
+  }
+  const auto valence_count = r.get<std::uint32_t>();
+  if (valence_count > left() / 12) r.fail("truncated valence list");
+  for (std::uint32_t k = 0; k < valence_count; ++k) {
+    Valence v;
+    const auto valence = r.get<std::uint32_t>();
+    const auto points = r.get<std::uint32_t>();
+    if (valence < 3 || valence > static_cast<std::uint32_t>(limits::kMaxValence))
+      r.fail("valence " + std::to_string(valence) + " is outside 3.." + std::to_string(limits::kMaxValence) +
+             " (the runtime's limit; regenerate the tables with valences up to " + std::to_string(limits::kMaxValence) + ")");
+    v.valence = static_cast<int>(valence);
+    v.points = static_cast<int>(points);
+    if (v.points != QuadTables::points(v.valence)) r.fail("valence " + std::to_string(valence) + ": invalid point count");
+    const auto stencils = r.get<std::uint32_t>();
+    if (points > left() / 4) r.fail("truncated reflection");
+    for (std::uint32_t h = 0; h < points; ++h) v.reflection.push_back(r.get<std::uint32_t>());
+    v.weights = read_scalars(r, static_cast<std::size_t>(stencils) * points, scalar, left());
+    for (int n : t.rates_) {
+      for (int kind = 0; kind < 2; ++kind) {
+        const std::size_t count = half_count(kind == 0 ? n + 1 : n);
+        if (count > left() / 4) r.fail("truncated index block");
+        std::vector<std::uint32_t> index(count);
+        for (auto& x : index) {
+          x = r.get<std::uint32_t>();
+          if (x >= stencils) r.fail("stencil index out of range");
+        }
+        (kind == 0 ? v.nodes : v.centres).push_back(std::move(index));
+      }
+    }
+    t.valences_.push_back(std::move(v));
+  }
+  if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
+  t.validate(path);
+  return t;
+}
+
+void QuadTables::validate(const std::string& origin) {
+  auto fail = [&](const std::string& what) -> void { throw LoadError(origin + ": " + what); };
+  if (rates_.empty()) fail("holds no rates");
+  for (std::size_t k = 0; k < rates_.size(); ++k) {
+    if (rates_[k] < 1 || rates_[k] > limits::kMaxRate)
+      fail("invalid rate " + std::to_string(rates_[k]) + " (rates are 1.." + std::to_string(limits::kMaxRate) + ")");
+    if (k > 0 && rates_[k] <= rates_[k - 1]) fail("rates are not strictly ascending");
+  }
+  if (regular_.size() != rates_.size() || regular_first_.size() != rates_.size()) fail("regular patch values missing for some rate");
+  for (std::size_t k = 0; k < rates_.size(); ++k) {
+    // phi is supported on [-2, 2]: at most 8n + 1 values on the grid 1/(2n).
+    const std::int64_t g = 2 * static_cast<std::int64_t>(rates_[k]);
+    if (regular_[k].size() > static_cast<std::size_t>(4 * g + 1) || regular_first_[k] < -2 * g || regular_first_[k] > 2 * g)
+      fail("regular patch values of rate " + std::to_string(rates_[k]) + " reach beyond the support [-2, 2]");
+    if (!finite(regular_[k])) fail("a regular patch value is not finite");
+  }
+  auto check_rules = [&](const std::vector<VertexRule>& rules, const char* what) {
+    for (std::size_t k = 0; k < rules.size(); ++k) {
+      const VertexRule& r = rules[k];
+      if (r.valence < 3 || r.valence > limits::kMaxValence)
+        fail(std::string(what) + " for valence " + std::to_string(r.valence) + " is outside 3.." + std::to_string(limits::kMaxValence));
+      if (!std::isfinite(r.centre) || !std::isfinite(r.edge) || !std::isfinite(r.face)) fail(std::string(what) + " weight is not finite");
+      for (std::size_t j = 0; j < k; ++j)
+        if (rules[j].valence == r.valence) fail(std::string(what) + " for valence " + std::to_string(r.valence) + " is repeated");
+    }
+  };
+  check_rules(rules_, "vertex rule");
+  check_rules(polygon_rules_, "polygon vertex rule");
+  if (!vertex_rule(4)) fail("holds no vertex rule for valence 4 (the regular case)");
+  if (!std::isfinite(face_corner_) || !std::isfinite(edge_end_) || !std::isfinite(edge_wing_) ||
+      !std::isfinite(polygon_edge_end_) || !std::isfinite(polygon_edge_face_))
+    fail("a face or edge rule weight is not finite");
+  for (std::size_t k = 0; k < valences_.size(); ++k) {
+    Valence& v = valences_[k];
+    const std::string where = "valence " + std::to_string(v.valence);
+    if (v.valence < 3 || v.valence > limits::kMaxValence || v.valence == 4)
+      fail(where + " is outside 3.." + std::to_string(limits::kMaxValence) + " or is the regular valence 4");
+    for (std::size_t j = 0; j < k; ++j)
+      if (valences_[j].valence == v.valence) fail(where + " is stored twice");
+    if (v.points != points(v.valence)) fail(where + ": " + std::to_string(v.points) + " points, expected " + std::to_string(points(v.valence)));
+    // The reflection must be a permutation of the points.
+    if (v.reflection.size() != static_cast<std::size_t>(v.points)) fail(where + ": the reflection has the wrong length");
+    std::vector<char> hit(v.reflection.size(), 0);
+    for (std::uint32_t x : v.reflection) {
+      if (x >= v.reflection.size() || hit[x]) fail(where + ": the reflection is not a permutation of the points");
+      hit[x] = 1;
+    }
+    if (v.weights.size() % static_cast<std::size_t>(v.points) != 0) fail(where + ": the weights do not fill whole stencils");
+    if (!finite(v.weights)) fail(where + ": a weight is not finite");
+    const std::size_t stencils = v.weights.size() / static_cast<std::size_t>(v.points);
+    if (v.nodes.size() != rates_.size() || v.centres.size() != rates_.size()) fail(where + ": stencil index missing for some rate");
+    for (std::size_t s = 0; s < rates_.size(); ++s) {
+      if (v.nodes[s].size() != half_count(rates_[s] + 1) || v.centres[s].size() != half_count(rates_[s]))
+        fail(where + ": the stencil index of rate " + std::to_string(rates_[s]) + " has the wrong size");
+      for (const auto* index : {&v.nodes[s], &v.centres[s]})
+        for (std::uint32_t x : *index)
+          if (x >= stencils) fail(where + ": stencil index out of range");
+    }
+  }
+  slot_of_rate_.assign(static_cast<std::size_t>(rates_.back()) + 1, -1);
+  for (std::size_t k = 0; k < rates_.size(); ++k) slot_of_rate_[static_cast<std::size_t>(rates_[k])] = static_cast<int>(k);
+}
+
+const QuadTables::VertexRule* QuadTables::vertex_rule(int valence) const {
+  for (const auto& rule : rules_)
+    if (rule.valence == valence) return &rule;
+  return nullptr;
+}
+
+const QuadTables::VertexRule* QuadTables::polygon_vertex_rule(int valence) const {
+  for (const auto& rule : polygon_rules_)
+    if (rule.valence == valence) return &rule;
+  return nullptr;
+}
+
+std::vector<int> QuadTables::valences() const {
+  std::vector<int> out;
+  for (const auto& v : valences_) out.push_back(v.valence);
+  return out;
+}
+
+bool QuadTables::has_valence(int v) const {
+  if (v == 4) return true;
+  for (const auto& x : valences_)
+    if (x.valence == v) return true;
+  return false;
+}
+
+int QuadTables::checked_slot(int n) const {
+  const int slot = rate_slot(n);
+  if (slot < 0) throw EvaluationError("rate " + std::to_string(n) + " is not in the tables");
+  return slot;
+}
+
+const double* QuadTables::stored_weights(const Valence& v, int slot, long i, long j, bool centre) const {
+  const auto& index = centre ? v.centres[static_cast<std::size_t>(slot)] : v.nodes[static_cast<std::size_t>(slot)];
+  return v.weights.data() +
+         static_cast<std::size_t>(index[static_cast<std::size_t>(j * (j + 1) / 2 + i)]) * static_cast<std::size_t>(v.points);
+}
+
+int QuadTables::rate_slot(int n) const {
+  return n >= 0 && static_cast<std::size_t>(n) < slot_of_rate_.size() ? slot_of_rate_[static_cast<std::size_t>(n)] : -1;
+}
+
+const QuadTables::Valence& QuadTables::valence_data(int v) const {
+  for (const auto& x : valences_)
+    if (x.valence == v) return x;
+  throw EvaluationError("valence " + std::to_string(v) + " is not in the tables");
+}
+
+void QuadTables::node_stencil(int valence, int n, int i, int j, double* weights) const {
+  const int slot = checked_slot(n);
+  if (i < 0 || j < 0 || i > n || j > n) throw EvaluationError("node index outside 0..n");
+  stencil(valence, slot, 2L * i, 2L * j, false, weights);
+}
+
+void QuadTables::centre_stencil(int valence, int n, int i, int j, double* weights) const {
+  const int slot = checked_slot(n);
+  if (i < 0 || j < 0 || i >= n || j >= n) throw EvaluationError("cell index outside 0..n-1");
+  stencil(valence, slot, 2L * i + 1, 2L * j + 1, true, weights);
+}
+
+const double* QuadTables::centre_weights(int valence, int n, int i, int j, bool& mirrored) const {
+  const int slot = checked_slot(n);
+  if (i < 0 || j < 0 || i >= n || j >= n) throw EvaluationError("cell index outside 0..n-1");
+  mirrored = i > j;
+  return stored_weights(valence_data(valence), slot, mirrored ? j : i, mirrored ? i : j, true);
+}
+
+void QuadTables::regular_weights_at(int slot, long a, double* w4) const {
+  const auto& phi = regular_[static_cast<std::size_t>(slot)];
+  const std::int64_t first = regular_first_[static_cast<std::size_t>(slot)];
+  for (int p = -1; p <= 2; ++p) {
+    const std::int64_t idx = a - 2L * rates_[static_cast<std::size_t>(slot)] * p - first;
+    w4[p + 1] = idx >= 0 && idx < static_cast<std::int64_t>(phi.size()) ? phi[static_cast<std::size_t>(idx)] : 0.0;
+  }
+}
+
+void QuadTables::regular_weights(int n, long a, double* w4) const {
+  const int slot = checked_slot(n);
+  if (a < 0 || a > 2L * n) throw EvaluationError("regular weight index outside 0..2n");
+  regular_weights_at(slot, a, w4);
+}
+
+void QuadTables::stencil(int valence, int slot, long a, long b, bool centre, double* weights) const {
+  if (valence == 4) {  // regular: phi(x - p) phi(y - q), points row by row
+    double wx[4], wy[4];
+    regular_weights_at(slot, a, wx);
+    regular_weights_at(slot, b, wy);
+    for (int q = 0; q < 4; ++q)
+      for (int p = 0; p < 4; ++p) weights[q * 4 + p] = wx[p] * wy[q];
+    return;
+  }
+  const Valence& v = valence_data(valence);
+  const bool mirrored = a > b;
+  const long lo = mirrored ? b : a, hi = mirrored ? a : b;
+  const double* w = centre ? stored_weights(v, slot, (lo - 1) / 2, (hi - 1) / 2, true) : stored_weights(v, slot, lo / 2, hi / 2, false);
+  for (int h = 0; h < v.points; ++h) weights[mirrored ? v.reflection[static_cast<std::size_t>(h)] : h] = w[h];
+}
+
+}  // namespace stencil_runtime

@@ -1,0 +1,106 @@
+#pragma once
+// A quad scheme's tables (*.sgs, or a directory of its exact JSON tables; format
+// in docs/table-format.md): the stencils of the regular patch and of the patch
+// round an extraordinary vertex, at the grid nodes (i/n, j/n) and cell centres
+// ((2i+1)/(2n), (2j+1)/(2n)) of every stored rate n, and the scheme's
+// subdivision rules. Control point order: docs/table-format.md (regular: 16
+// points row by row; extraordinary: 2v+8 points, EV first). Doubles only.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "stencil_runtime/error.hpp"
+
+namespace stencil_runtime {
+
+class QuadTables {
+ public:
+  // Throws LoadError naming the file (missing, truncated, bad magic, version,
+  // checksum, a count, index, rate or valence outside its limits, or a scheme
+  // hash other than a nonzero `expected_hash`).
+  static QuadTables load_binary(const std::string& path, std::uint64_t expected_hash = 0);
+  // A directory of exact JSON tables as stencilgen writes them (v<V>/n<N>.json,
+  // regular/n<2N>.json); rationals become the nearest double.
+  static QuadTables load_json_directory(const std::string& dir, std::uint64_t expected_hash = 0);
+
+  std::uint64_t scheme_hash() const { return hash_; }
+  const std::string& scheme_name() const { return name_; }  // from the JSON tables; empty for binary files
+
+  // The scheme's subdivision rules, as stored (double).
+  struct VertexRule {
+    int valence = 4;
+    double centre = 0, edge = 0, face = 0;
+  };
+  double face_corner() const { return face_corner_; }
+  double edge_end() const { return edge_end_; }
+  double edge_wing() const { return edge_wing_; }
+  // nullptr when the table has no rule for that valence.
+  const VertexRule* vertex_rule(int valence) const;
+  // Rules for one step on a mesh with arbitrary polygons (scheme-format.md):
+  // face point = centroid; edge point = polygon_edge_end * ends +
+  // polygon_edge_face * the two face points; vertex point = centre * old +
+  // edge * mean edge midpoint + face * mean face point (VertexRule fields).
+  bool has_polygon_rules() const { return has_polygon_; }
+  double polygon_edge_end() const { return polygon_edge_end_; }
+  double polygon_edge_face() const { return polygon_edge_face_; }
+  const VertexRule* polygon_vertex_rule(int valence) const;
+  const std::vector<int>& rates() const { return rates_; }
+  std::vector<int> valences() const;  // extraordinary valences stored (4 is the regular patch)
+  bool has_rate(int n) const { return rate_slot(n) >= 0; }
+  bool has_valence(int v) const;
+  static int points(int valence) { return valence == 4 ? 16 : 2 * valence + 8; }
+
+  // Weights over the patch's control points (16 for the regular patch or
+  // valence 4, 2v+8 otherwise) at node (i/n, j/n), 0 <= i,j <= n, or at the
+  // centre of cell (i,j), 0 <= i,j < n. Throws EvaluationError for a rate,
+  // valence or index that is not in the table.
+  void node_stencil(int valence, int n, int i, int j, double* weights) const;
+  void centre_stencil(int valence, int n, int i, int j, double* weights) const;
+
+  // Direct access for extraordinary patches (valence != 4): the stored weights
+  // at cell centre (i, j) of rate n in patch coordinates. When `mirrored` comes
+  // back true they are the weights at (j, i): apply them to the control points
+  // permuted by reflection(valence), i.e. weight h multiplies point reflection[h].
+  const double* centre_weights(int valence, int n, int i, int j, bool& mirrored) const;
+  const std::uint32_t* reflection(int valence) const { return valence_data(valence).reflection.data(); }
+
+  // The regular patch is a tensor product: its weight for point (p, q) at
+  // (a/(2n), b/(2n)) is w(a)[p+1] * w(b)[q+1], with w(a) the four values
+  // phi(a/(2n) - p), p = -1..2, written here (0 <= a <= 2n).
+  void regular_weights(int n, long a, double* w4) const;
+
+ private:
+  struct Valence {
+    int valence = 0, points = 0;
+    std::vector<std::uint32_t> reflection;
+    std::vector<double> weights;  // stencil_count * points
+    std::vector<std::vector<std::uint32_t>> nodes, centres;  // per rate slot, (i <= j) j-major
+  };
+  int rate_slot(int n) const;
+  int checked_slot(int n) const;  // throws EvaluationError for a rate not stored
+  // Checks everything a reader filled in (rates, valences, reflections,
+  // indices, rules) against the limits and fills slot_of_rate_; LoadError
+  // prefixed with `origin`.
+  void validate(const std::string& origin);
+  // The stored half: stencil (i, j), i <= j, of a node or a centre.
+  const double* stored_weights(const Valence& v, int slot, long i, long j, bool centre) const;
+  void regular_weights_at(int slot, long a, double* w4) const;
+  const Valence& valence_data(int v) const;
+  // Stencil at parameter (a/g, b/g), g = 2n, a and b both even (node) or both odd (centre).
+  void stencil(int valence, int slot, long a, long b, bool centre, double* weights) const;
+
+  std::uint64_t hash_ = 0;
+  std::string name_;
+  double face_corner_ = 0, edge_end_ = 0, edge_wing_ = 0;
+  std::vector<VertexRule> rules_;
+  bool has_polygon_ = false;
+  double polygon_edge_end_ = 0, polygon_edge_face_ = 0;
+  std::vector<VertexRule> polygon_rules_;
+  std::vector<int> rates_;
+  std::vector<int> slot_of_rate_;  // rate -> slot, -1 when absent
+  std::vector<std::vector<double>> regular_;  // per rate slot: phi(k/(2n)) for k = regular_first_ + ...
+  std::vector<std::int64_t> regular_first_;
+  std::vector<Valence> valences_;
+};
+
+}  // namespace stencil_runtime

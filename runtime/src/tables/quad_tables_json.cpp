@@ -1,0 +1,183 @@
+// Loading the exact JSON tables of a quad scheme (a directory written by
+// stencilgen: v<V>/n<N>.json and regular/n<2N>.json) into the same in-memory
+// form as the binary file. Exact rationals become doubles; the binary file is
+// the fast path. Every name, count, index and rational is checked.
+#include <charconv>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "json_reader.hpp"
+#include "quad_tables.hpp"
+#include "stencil_runtime/limits.hpp"
+
+namespace stencil_runtime {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using detail::JsonFile;
+
+namespace {
+
+// The number in a name "<prefix><digits><suffix>", or -1 when the name has
+// another form; `digits` must be a plain decimal within [lo, hi] (else an error).
+long numbered_name(const std::string& name, char prefix, const std::string& suffix, long lo, long hi, const fs::path& where) {
+  if (name.size() <= 1 + suffix.size() || name[0] != prefix || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return -1;
+  const std::string digits = name.substr(1, name.size() - 1 - suffix.size());
+  std::int64_t n = 0;
+  if (digits.find_first_not_of("0123456789") != std::string::npos || !detail::parse_int64(digits, n) || n < lo || n > hi)
+    throw LoadError(where.string() + ": not a table name of the form " + std::string(1, prefix) + "<N>" + suffix +
+                    " with N in " + std::to_string(lo) + ".." + std::to_string(hi));
+  return static_cast<long>(n);
+}
+
+// A vertex rule triple ["centre", "edge", "face"].
+QuadTables::VertexRule read_rule(const JsonFile& f, const std::string& key, const json& r, const std::string& field) {
+  std::int64_t valence = 0;
+  if (!detail::parse_int64(key, valence) || valence < 3 || valence > limits::kMaxValence)
+    f.fail(field, "valence '" + key + "' is not an integer in 3.." + std::to_string(limits::kMaxValence));
+  const json& a = f.array(r, field + "." + key);
+  if (a.size() != 3) f.fail(field + "." + key, "expected three weights");
+  double w[3];
+  for (std::size_t k = 0; k < 3; ++k)
+    w[k] = detail::parse_exact_rational(f.string(a[k], field + "." + key), f, field + "." + key);
+  return {static_cast<int>(valence), w[0], w[1], w[2]};
+}
+
+}  // namespace
+
+QuadTables QuadTables::load_json_directory(const std::string& dir, std::uint64_t expected_hash) {
+  QuadTables t;
+  std::map<int, std::map<int, fs::path>> files;  // valence -> rate -> file
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (!entry.is_directory() || name.size() < 2 || name[0] != 'v' || name[1] < '0' || name[1] > '9') continue;
+    const long v = numbered_name(name, 'v', "", 3, limits::kMaxValence, entry.path());
+    for (const auto& f : fs::directory_iterator(entry.path())) {
+      const std::string fn = f.path().filename().string();
+      if (fn.empty() || fn[0] != 'n' || f.path().extension() != ".json") continue;
+      const long n = numbered_name(fn, 'n', ".json", 1, limits::kMaxRate, f.path());
+      files[static_cast<int>(v)][static_cast<int>(n)] = f.path();
+    }
+  }
+  if (ec) throw LoadError(dir + ": cannot list: " + ec.message());
+  if (files.empty()) throw LoadError(dir + ": no v<V>/n<N>.json surface tables here");
+  for (const auto& [v, by_rate] : files) {
+    std::vector<int> rates;
+    for (const auto& [n, path] : by_rate) rates.push_back(n);
+    if (t.rates_.empty()) t.rates_ = rates;
+    if (rates != t.rates_)
+      throw LoadError(dir + ": valence " + std::to_string(v) + " has a different set of rates than valence " +
+                      std::to_string(files.begin()->first));
+  }
+  bool first = true;
+  for (const auto& [v, by_rate] : files) {
+    Valence val;
+    val.valence = v;
+    val.points = points(v);
+    for (const auto& [n, path] : by_rate) {
+      const JsonFile f(path.string());
+      const json& doc = f.root();
+      if (f.string(f.member(doc, "format", ""), "format") != "stencilgen-surface-table" || f.integer(f.member(doc, "version", ""), "version") != 1)
+        f.fail("format", "not a version 1 stencilgen surface table");
+      if (f.integer(f.member(doc, "valence", ""), "valence") != v || f.integer(f.member(doc, "n", ""), "n") != n ||
+          f.integer(f.member(doc, "points", ""), "points") != val.points)
+        f.fail("valence", "valence, rate or point count does not match the file name");
+      std::uint64_t hash = 0;
+      const std::string hash_text = f.string(f.member(doc, "scheme_hash", ""), "scheme_hash");
+      const auto [end, err] = std::from_chars(hash_text.data(), hash_text.data() + hash_text.size(), hash, 16);
+      if (err != std::errc() || end != hash_text.data() + hash_text.size()) f.fail("scheme_hash", "not a hexadecimal hash");
+      const std::string scheme = f.string(f.member(doc, "scheme", ""), "scheme");
+      const json& rules = f.member(doc, "rules", "");
+      if (first) {
+        t.hash_ = hash;
+        t.name_ = scheme;
+        if (expected_hash != 0 && t.hash_ != expected_hash) f.fail("scheme_hash", "made from a different scheme (hash mismatch)");
+        t.face_corner_ = detail::parse_exact_rational(f.string(f.member(rules, "face_corner", "rules"), "rules.face_corner"), f, "rules.face_corner");
+        t.edge_end_ = detail::parse_exact_rational(f.string(f.member(rules, "edge_end", "rules"), "rules.edge_end"), f, "rules.edge_end");
+        t.edge_wing_ = detail::parse_exact_rational(f.string(f.member(rules, "edge_wing", "rules"), "rules.edge_wing"), f, "rules.edge_wing");
+        first = false;
+      } else if (hash != t.hash_ || scheme != t.name_) {
+        f.fail("scheme_hash", "made from a different scheme than the other tables in " + dir);
+      }
+      if (rules.contains("polygon")) {
+        const json& pg = f.member(rules, "polygon", "rules");
+        t.has_polygon_ = true;
+        t.polygon_edge_end_ = detail::parse_exact_rational(f.string(f.member(pg, "edge_end", "rules.polygon"), "rules.polygon.edge_end"), f, "rules.polygon.edge_end");
+        t.polygon_edge_face_ = detail::parse_exact_rational(f.string(f.member(pg, "edge_face_point", "rules.polygon"), "rules.polygon.edge_face_point"), f, "rules.polygon.edge_face_point");
+        const json& vertex = f.member(pg, "vertex", "rules.polygon");
+        if (!vertex.is_object()) f.fail("rules.polygon.vertex", "expected an object");
+        for (const auto& [key, r] : vertex.items()) {
+          const VertexRule rule = read_rule(f, key, r, "rules.polygon.vertex");
+          if (!t.polygon_vertex_rule(rule.valence)) t.polygon_rules_.push_back(rule);
+        }
+      }
+      const json& vertex = f.member(rules, "vertex", "rules");
+      if (!vertex.is_object()) f.fail("rules.vertex", "expected an object");
+      for (const auto& [key, r] : vertex.items()) {
+        const VertexRule rule = read_rule(f, key, r, "rules.vertex");
+        if (!t.vertex_rule(rule.valence)) t.rules_.push_back(rule);
+      }
+      if (val.reflection.empty()) {
+        const json& reflection = f.array(f.member(doc, "reflection", ""), "reflection");
+        if (reflection.size() != static_cast<std::size_t>(val.points)) f.fail("reflection", "wrong length");
+        for (std::size_t k = 0; k < reflection.size(); ++k) {
+          const std::int64_t x = f.integer(reflection[k], "reflection[" + std::to_string(k) + "]");
+          if (x < 0 || x >= val.points) f.fail("reflection[" + std::to_string(k) + "]", "index out of range");
+          val.reflection.push_back(static_cast<std::uint32_t>(x));
+        }
+      }
+      for (const char* kind : {"nodes", "centres"}) {
+        const json& list = f.array(f.member(doc, kind, ""), kind);
+        const std::size_t side = kind[0] == 'n' ? static_cast<std::size_t>(n + 1) : static_cast<std::size_t>(n);
+        if (list.size() != side * (side + 1) / 2) f.fail(kind, "wrong number of stencils");
+        std::vector<std::uint32_t> index;
+        for (std::size_t e = 0; e < list.size(); ++e) {
+          const std::string field = std::string(kind) + "[" + std::to_string(e) + "]";
+          const std::string den = f.string(f.member(list[e], "denominator", field), field + ".denominator");
+          const json& nums = f.array(f.member(list[e], "numerators", field), field + ".numerators");
+          if (nums.size() != static_cast<std::size_t>(val.points)) f.fail(field + ".numerators", "a stencil has the wrong length");
+          index.push_back(static_cast<std::uint32_t>(val.weights.size() / static_cast<std::size_t>(val.points)));
+          for (std::size_t h = 0; h < nums.size(); ++h)
+            val.weights.push_back(detail::parse_ratio(f.string(nums[h], field + ".numerators"), den, f, field + ".numerators"));
+        }
+        (kind[0] == 'n' ? val.nodes : val.centres).push_back(std::move(index));
+      }
+    }
+    if (v != 4) t.valences_.push_back(std::move(val));
+  }
+  // The regular patch: the curve on the grid 2n, supported on [-2, 2].
+  for (int n : t.rates_) {
+    const fs::path path = fs::path(dir) / "regular" / ("n" + std::to_string(2 * n) + ".json");
+    const JsonFile f(path.string());
+    const json& functions = f.array(f.member(f.root(), "functions", ""), "functions");
+    if (functions.size() != 1) f.fail("functions", "expected one function (the regular curve's scaling function)");
+    const json& values = f.member(functions[0], "values", "functions[0]");
+    if (!values.is_object()) f.fail("functions[0].values", "expected an object");
+    const std::int64_t g = 2 * static_cast<std::int64_t>(n);
+    std::map<std::int64_t, double> grid;
+    for (const auto& [key, value] : values.items()) {
+      const std::string field = "functions[0].values[\"" + key + "\"]";
+      const auto slash = key.find('/');
+      std::int64_t p = 0, q = 1;
+      if (!detail::parse_int64(std::string_view(key).substr(0, slash), p) ||
+          (slash != std::string::npos && !detail::parse_int64(std::string_view(key).substr(slash + 1), q)) || q <= 0)
+        f.fail(field, "the key is not a parameter p/q with q > 0");
+      // p/q on the grid 1/g within [-2, 2]: |p| <= 2q and q | p g.
+      if (p < -2 * q || p > 2 * q || q > g * 1000000 || (p * g) % q != 0)
+        f.fail(field, "the key is not a grid point k/" + std::to_string(g) + " within the support [-2, 2]");
+      grid[p * g / q] = detail::parse_exact_rational(f.string(value, field), f, field);
+    }
+    const std::int64_t lo = grid.empty() ? 0 : grid.begin()->first, hi = grid.empty() ? -1 : grid.rbegin()->first;
+    std::vector<double> dense(static_cast<std::size_t>(hi - lo + 1), 0.0);
+    for (const auto& [k, x] : grid) dense[static_cast<std::size_t>(k - lo)] = x;
+    t.regular_first_.push_back(lo);
+    t.regular_.push_back(std::move(dense));
+  }
+  t.validate(dir);
+  return t;
+}
+
+}  // namespace stencil_runtime

@@ -1,0 +1,173 @@
+#include "triangle_tables.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "binary_reader.hpp"
+#include "stencil_runtime/limits.hpp"
+
+namespace stencil_runtime {
+
+namespace {
+
+// Stencils per rate n: nodes, up centres, down centres.
+std::size_t nodes_of(long n) { return static_cast<std::size_t>((n + 1) * (n + 2) / 2); }
+std::size_t ups_of(long n) { return static_cast<std::size_t>(n * (n + 1) / 2); }
+std::size_t downs_of(long n) { return static_cast<std::size_t>(n * (n - 1) / 2); }
+
+}  // namespace
+
+TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expected_hash) {
+  const std::string bytes = detail::read_binary_file(path);
+  detail::BinaryReader r(bytes, path);
+  detail::check_envelope(bytes, r, format::kTriangleMagic, "binary triangle table");
+  const auto version = r.get<std::uint32_t>();
+  if (version != format::kTriangleVersion)
+    r.fail("format version " + std::to_string(version) + " is not supported (expected " +
+           std::to_string(format::kTriangleVersion) + "; regenerate the tables with this stencilgen)");
+  const auto scalar = r.get<std::uint32_t>();
+  if (scalar != 4 && scalar != 8) r.fail("invalid scalar size " + std::to_string(scalar));
+  TriangleTables t;
+  t.hash_ = r.get<std::uint64_t>();
+  if (expected_hash != 0 && t.hash_ != expected_hash) r.fail("made from a different scheme (hash mismatch)");
+  const auto refinement = r.get<std::uint8_t>();
+  if (refinement > 1) r.fail("unknown refinement " + std::to_string(refinement));
+  t.refinement_ = static_cast<TriangleRefinement>(refinement);
+  t.edge_end_ = r.get<double>();
+  t.edge_opposite_ = r.get<double>();
+  const double neighbour_regular = r.get<double>();
+  auto left = [&] { return bytes.size() - r.position(); };
+  const auto rate_count = r.get<std::uint32_t>();
+  if (rate_count == 0 || rate_count > left() / 4) r.fail("invalid rate list");
+  for (std::uint32_t k = 0; k < rate_count; ++k) {
+    const auto n = r.get<std::uint32_t>();
+    if (n == 0 || n > static_cast<std::uint32_t>(limits::kMaxRate) || (!t.rates_.empty() && static_cast<int>(n) <= t.rates_.back()))
+      r.fail("invalid rate " + std::to_string(n) + " (rates are 1.." + std::to_string(limits::kMaxRate) + ", ascending)");
+    t.rates_.push_back(static_cast<int>(n));
+  }
+  const auto valence_count = r.get<std::uint32_t>();
+  if (valence_count > left() / 32) r.fail("truncated valence list");
+  for (std::uint32_t k = 0; k < valence_count; ++k) {
+    Valence v;
+    const auto valence = r.get<std::uint32_t>();
+    if (valence < 3 || valence > static_cast<std::uint32_t>(limits::kMaxValence))
+      r.fail("valence " + std::to_string(valence) + " is outside 3.." + std::to_string(limits::kMaxValence) +
+             " (the runtime's limit; regenerate the tables with valences up to " + std::to_string(limits::kMaxValence) + ")");
+    v.valence = static_cast<int>(valence);
+    if (t.find(v.valence)) r.fail("valence " + std::to_string(v.valence) + " is stored twice");
+    v.exact = r.get<std::uint8_t>() != 0;
+    v.residual = r.get<double>();
+    v.neighbour = r.get<double>();
+    const auto regions = r.get<std::uint32_t>();
+    if (regions != 1 && regions != 4) r.fail("valence " + std::to_string(v.valence) + ": invalid region count " + std::to_string(regions));
+    for (std::uint32_t g = 0; g < regions; ++g) {
+      Region region;
+      const std::string where = "valence " + std::to_string(v.valence) + (g ? ", band region " + std::to_string(g) : "");
+      const auto points = r.get<std::uint32_t>();
+      if (points == 0 || points > left() / 12) r.fail(where + ": truncated layout");
+      for (std::uint32_t h = 0; h < points; ++h) {
+        ChartPoint p{r.get<std::int32_t>(), r.get<std::int32_t>(), r.get<std::int32_t>()};
+        const bool ev = p.sector == 0 && p.a == 0 && p.b == 0;
+        if (!ev && (p.sector < 0 || p.sector >= v.valence || p.a < 1 || p.a > 64 || p.b < 0 || p.b >= p.a))
+          r.fail(where + ": invalid layout point [" + std::to_string(p.sector) + "," + std::to_string(p.a) + "," +
+                 std::to_string(p.b) + "]");
+        region.layout.push_back(p);
+      }
+      const auto stencils = r.get<std::uint32_t>();
+      if (stencils > left() / scalar / points) r.fail(where + ": truncated weights");
+      region.weights.resize(static_cast<std::size_t>(stencils) * points);
+      for (auto& x : region.weights) {
+        x = scalar == 8 ? r.get<double>() : static_cast<double>(r.get<float>());
+        if (!std::isfinite(x)) r.fail(where + ": a weight is not finite");
+      }
+      for (int n : t.rates_) {
+        const std::size_t count = nodes_of(n) + ups_of(n) + downs_of(n);
+        if (count > left() / 4) r.fail(where + ": truncated index block");
+        std::vector<std::uint32_t> index(count);
+        for (auto& x : index) {
+          x = r.get<std::uint32_t>();
+          if (x >= stencils) r.fail(where + ": stencil index out of range");
+        }
+        region.index.push_back(std::move(index));
+      }
+      v.regions.push_back(std::move(region));
+    }
+    if (v.valence == 6 && regions != 1) r.fail("the regular patch (valence 6) has band regions");
+    t.valences_.push_back(std::move(v));
+  }
+  if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
+  if (!std::isfinite(t.edge_end_) || !std::isfinite(t.edge_opposite_)) r.fail("an edge rule weight is not finite");
+  for (const Valence& v : t.valences_)
+    if (!std::isfinite(v.neighbour) || !std::isfinite(v.residual)) r.fail("valence " + std::to_string(v.valence) + ": the vertex rule is not finite");
+  const Valence* regular = t.find(6);
+  if (!regular) r.fail("holds no valence 6 (the regular patch)");
+  if (regular->neighbour != neighbour_regular) r.fail("inconsistent regular vertex rule");
+  for (std::size_t k = 0; k < t.rates_.size(); ++k) {
+    const auto n = static_cast<std::size_t>(t.rates_[k]);
+    if (t.slot_of_rate_.size() <= n) t.slot_of_rate_.resize(n + 1, -1);
+    t.slot_of_rate_[n] = static_cast<int>(k);
+  }
+  return t;
+}
+
+bool TriangleTables::neighbour_weight(int valence, double& weight) const {
+  const Valence* v = find(valence);
+  if (v) weight = v->neighbour;
+  return v != nullptr;
+}
+
+std::vector<int> TriangleTables::valences() const {
+  std::vector<int> out;
+  for (const auto& v : valences_) out.push_back(v.valence);
+  return out;
+}
+
+const TriangleTables::Valence* TriangleTables::find(int v) const {
+  for (const auto& x : valences_)
+    if (x.valence == v) return &x;
+  return nullptr;
+}
+
+const TriangleTables::Valence& TriangleTables::data(int v) const {
+  if (const Valence* x = find(v)) return *x;
+  throw EvaluationError("valence " + std::to_string(v) + " is not in the triangle table");
+}
+
+int TriangleTables::rate_slot(int n) const {
+  return n >= 0 && static_cast<std::size_t>(n) < slot_of_rate_.size() ? slot_of_rate_[static_cast<std::size_t>(n)] : -1;
+}
+
+const TriangleTables::Region& TriangleTables::region_data(int valence, int region) const {
+  const Valence& v = data(valence);
+  if (region < 0 || static_cast<std::size_t>(region) >= v.regions.size())
+    throw EvaluationError("valence " + std::to_string(valence) + " has no region " + std::to_string(region) +
+                            " in the triangle table");
+  return v.regions[static_cast<std::size_t>(region)];
+}
+
+TriangleTables::Grid TriangleTables::grid(int valence, int n, int region) const {
+  const Region& v = region_data(valence, region);
+  const int slot = rate_slot(n);
+  if (slot < 0) throw EvaluationError("rate " + std::to_string(n) + " is not in the triangle table");
+  Grid g;
+  g.weights_ = v.weights.data();
+  g.points_ = v.layout.size();
+  g.index_ = v.index[static_cast<std::size_t>(slot)].data();
+  g.n_ = n;
+  return g;
+}
+
+const double* TriangleTables::Grid::weights(GridPoint kind, long i, long j) const {
+  // Row j of each kind holds (n + 1 - kind) - j points; rows are j-major.
+  const long k = static_cast<long>(kind), side = n_ + 1 - k;  // points in row 0
+  if (i < 0 || j < 0 || i + j >= side) throw EvaluationError("grid index outside the patch triangle");
+  const std::size_t before = kind == GridPoint::Node ? 0 : kind == GridPoint::Up ? nodes_of(n_) : nodes_of(n_) + ups_of(n_);
+  const std::size_t row = static_cast<std::size_t>(j * side - j * (j - 1) / 2);
+  return weights_ + static_cast<std::size_t>(index_[before + row + static_cast<std::size_t>(i)]) * points_;
+}
+
+const double* TriangleTables::node_weights(int valence, int n, int i, int j) const { return grid(valence, n).weights(GridPoint::Node, i, j); }
+const double* TriangleTables::up_weights(int valence, int n, int i, int j) const { return grid(valence, n).weights(GridPoint::Up, i, j); }
+const double* TriangleTables::down_weights(int valence, int n, int i, int j) const { return grid(valence, n).weights(GridPoint::Down, i, j); }
+
+}  // namespace stencil_runtime

@@ -1,0 +1,107 @@
+#pragma once
+// Loads the compact binary triangle tables (*.sgt) written by stencilgen for a
+// triangle scheme (Loop or sqrt(3); format in docs/table-format.md). For each
+// stored valence (6 is the regular patch) it gives the stencils of the patch
+// triangle (EV, e_0, e_1) at the grid nodes (i/n, j/n), i + j <= n, and at the
+// "up" and "down" centres of the grid's small triangles, for every stored rate
+// n. A stencil's weights go with the valence's layout: control point h is the
+// sector-chart position layout(v)[h] = [sector, a, b] around the EV. Doubles only.
+//
+// sqrt(3) tables hold, for each valence other than 6, three more regions: the
+// "band" triangles of the EV's second ring, where its vertex rule still
+// reaches. In sector 0's frame, corners counter-clockwise: region 1 =
+// (1,0),(2,0),(2,1); 2 = (1,0),(2,1),(1,1); 3 = (1,1),(2,1),(2,2); each has its
+// own layout. Region 0 is the patch (EV, e_0, e_1).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "stencil_runtime/error.hpp"
+
+namespace stencil_runtime {
+
+enum class TriangleRefinement { Loop = 0, Sqrt3 = 1 };
+
+struct ChartPoint {
+  int sector = 0;
+  int a = 0, b = 0;  // a (1,0) + b (1,1) in sector `sector`'s frame; [0,0,0] is the EV
+};
+
+class TriangleTables {
+ public:
+  // Throws LoadError naming the file (missing, truncated, bad magic, version,
+  // checksum, a count, index, rate or valence outside its limits, or a scheme
+  // hash other than a nonzero `expected_hash`).
+  static TriangleTables load(const std::string& path, std::uint64_t expected_hash = 0);
+
+  std::uint64_t scheme_hash() const { return hash_; }
+  TriangleRefinement refinement() const { return refinement_; }
+  // Loop's edge rule (3/8 on the ends, 1/8 on the opposite corners); 0 for sqrt(3).
+  double edge_end() const { return edge_end_; }
+  double edge_opposite() const { return edge_opposite_; }
+  // The vertex rule's weight per neighbour at valence v (the old vertex keeps
+  // 1 - v * weight); false when the table does not hold valence v.
+  bool neighbour_weight(int valence, double& weight) const;
+
+  const std::vector<int>& rates() const { return rates_; }
+  bool has_rate(int n) const { return rate_slot(n) >= 0; }
+  std::vector<int> valences() const;  // 6 included
+  bool has_valence(int v) const { return find(v) != nullptr; }
+  bool exact(int valence) const { return data(valence).exact; }
+  double residual(int valence) const { return data(valence).residual; }
+  // 1, or 4 where the valence has band regions.
+  int regions(int valence) const { return static_cast<int>(data(valence).regions.size()); }
+  const std::vector<ChartPoint>& layout(int valence, int region = 0) const { return region_data(valence, region).layout; }
+
+  // Weights over layout(valence) at node (i/n, j/n), up centre
+  // ((3i+1)/(3n), (3j+1)/(3n)) (i + j <= n-1) or down centre
+  // ((3i+2)/(3n), (3j+2)/(3n)) (i + j <= n-2). Throws EvaluationError for a
+  // valence, rate or index the table does not hold.
+  const double* node_weights(int valence, int n, int i, int j) const;
+  const double* up_weights(int valence, int n, int i, int j) const;
+  const double* down_weights(int valence, int n, int i, int j) const;
+
+  // The same lookups with the valence and rate resolved once (a face's
+  // tessellation asks for n^2 stencils of one grid).
+  enum class GridPoint { Node = 0, Up = 1, Down = 2 };
+  class Grid {
+   public:
+    // Throws EvaluationError for an index outside the patch triangle.
+    const double* weights(GridPoint kind, long i, long j) const;
+
+   private:
+    friend class TriangleTables;
+    const double* weights_ = nullptr;
+    std::size_t points_ = 0;
+    const std::uint32_t* index_ = nullptr;
+    long n_ = 1;
+  };
+  // Throws EvaluationError for a valence, region or rate the table does not hold.
+  Grid grid(int valence, int n, int region = 0) const;
+
+ private:
+  struct Region {
+    std::vector<ChartPoint> layout;
+    std::vector<double> weights;                // stencil_count * layout.size()
+    std::vector<std::vector<std::uint32_t>> index;  // per rate slot: nodes, ups, downs
+  };
+  struct Valence {
+    int valence = 0;
+    bool exact = true;
+    double residual = 0, neighbour = 0;
+    std::vector<Region> regions;
+  };
+  const Valence* find(int v) const;
+  const Valence& data(int v) const;  // throws EvaluationError
+  const Region& region_data(int v, int region) const;  // throws EvaluationError
+  int rate_slot(int n) const;
+
+  std::uint64_t hash_ = 0;
+  TriangleRefinement refinement_ = TriangleRefinement::Loop;
+  double edge_end_ = 0, edge_opposite_ = 0;
+  std::vector<int> rates_;
+  std::vector<int> slot_of_rate_;
+  std::vector<Valence> valences_;
+};
+
+}  // namespace stencil_runtime

@@ -1,0 +1,78 @@
+#include <algorithm>
+#include <string>
+
+#include "family/family.hpp"
+#include "stencil_runtime/limits.hpp"
+#include "stencil_runtime/tessellation.hpp"
+
+namespace stencil_runtime {
+
+struct TessellationPlan::Impl {
+  TessellationLayout layout;
+  int largest_wanted = 0;
+  std::unique_ptr<detail::RangeRunner> run;
+};
+
+TessellationPlan::TessellationPlan(std::shared_ptr<const SurfaceTopology> topology, const std::vector<int>& rates,
+                                   const TessellationOptions& options)
+    : topology_(std::move(topology)), impl_(std::make_unique<Impl>()) {
+  if (!topology_) throw EvaluationError("a TessellationPlan needs a topology");
+  if (rates.size() != topology_->face_count())
+    throw EvaluationError("need one rate per face: got " + std::to_string(rates.size()) + " for " +
+                          std::to_string(topology_->face_count()) + " faces");
+  for (std::size_t f = 0; f < rates.size(); ++f)
+    if (rates[f] < 1 || rates[f] > limits::kMaxRate)
+      throw EvaluationError("face " + std::to_string(f) + ": rate " + std::to_string(rates[f]) + " is outside 1.." +
+                            std::to_string(limits::kMaxRate));
+  if (options.threads < 0) throw EvaluationError("threads must be 0 (all cores) or positive");
+  const Family& family = topology_->family();
+  TessellationLayout& layout = impl_->layout;
+  layout.rates = family.hierarchy().prepared_rates(rates);
+  std::size_t points = 0;
+  for (int& r : layout.rates) {
+    impl_->largest_wanted = std::max(impl_->largest_wanted, r);
+    r = topology_->tables().rate_at_least(r);
+    points += static_cast<std::size_t>(r) * static_cast<std::size_t>(r);
+  }
+  impl_->run = std::make_unique<detail::RangeRunner>(options.threads, points);
+  family.plan(layout, *impl_->run);
+}
+
+TessellationPlan::~TessellationPlan() = default;
+TessellationPlan::TessellationPlan(TessellationPlan&&) noexcept = default;
+TessellationPlan& TessellationPlan::operator=(TessellationPlan&&) noexcept = default;
+
+const std::vector<int>& TessellationPlan::prepared_rates() const { return impl_->layout.rates; }
+int TessellationPlan::largest_wanted_rate() const { return impl_->largest_wanted; }
+std::size_t TessellationPlan::point_count() const { return impl_->layout.point_offsets.back(); }
+const std::vector<std::array<int, 4>>& TessellationPlan::quads() const { return impl_->layout.quads; }
+const std::vector<std::array<int, 3>>& TessellationPlan::triangles() const { return impl_->layout.triangles; }
+
+void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* positions) const {
+  if (&surface.topology() != topology_.get())
+    throw EvaluationError("the surface has another topology than the one this tessellation was planned for");
+  if (!surface.has_positions()) throw EvaluationError("the surface has no control positions yet (set_positions)");
+  const Family& family = topology_->family();
+  const Point* prepared = surface.prepared_positions().data();
+  const TessellationLayout& layout = impl_->layout;
+  (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
+    family.points(layout, begin, end, prepared, positions);
+  });
+}
+
+PolygonSoup TessellationPlan::make_soup() const {
+  PolygonSoup soup;
+  soup.quads = impl_->layout.quads;
+  soup.triangles = impl_->layout.triangles;
+  soup.positions.resize(point_count());
+  return soup;
+}
+
+PolygonSoup tessellate(const Surface& surface, const std::vector<int>& rates, const TessellationOptions& options) {
+  const TessellationPlan plan(surface.shared_topology(), rates, options);
+  PolygonSoup soup = plan.make_soup();
+  plan.evaluate(surface, soup.positions.data());
+  return soup;
+}
+
+}  // namespace stencil_runtime

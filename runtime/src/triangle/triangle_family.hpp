@@ -1,0 +1,61 @@
+#pragma once
+// A closed triangle mesh under a triangle scheme's tables (Loop, sqrt(3)),
+// prepared (docs/runtime.md): whole-mesh Loop steps, or double sqrt(3) steps
+// that split every face in nine, until every face's patch (the regular one,
+// an extraordinary vertex's, or sqrt(3)'s band region) can be gathered by
+// chart walks; exact evaluation from the tables and the tessellation kernels
+// (triangle_tessellation.cpp).
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "family/family.hpp"
+#include "mesh/connectivity.hpp"
+#include "mesh/uniform_topology.hpp"
+#include "stencil_runtime/tables.hpp"
+#include "tables/triangle_tables.hpp"
+#include "triangle_patch.hpp"
+
+namespace stencil_runtime {
+
+class TriangleFamily final : public Family {
+ public:
+  // Throws MeshError naming the face, edge or vertex (see SurfaceTopology::create).
+  TriangleFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh);
+
+  std::string preparation() const override;
+  int refinement_steps() const override { return steps_; }
+  FaceDomain domain(std::size_t face) const override;
+  bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const override;
+  void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
+  void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
+              std::array<float, 3>* out) const override;
+
+  // Below the public interface (tests, benchmarks):
+  const TriangleTables& tables() const { return tables_; }
+  const TriangleTopology& topology() const { return topology_; }  // of the prepared mesh
+  const TrianglePatch& patch(std::size_t prepared_face) const { return patches_[prepared_face]; }
+  bool sqrt3() const { return tables_.refinement() == TriangleRefinement::Sqrt3; }
+  // Where an exact parameter of an original face lands: a prepared face and its parameter there.
+  std::pair<std::size_t, ExactParameter> locate(std::size_t face, const ExactParameter& at) const;
+
+ private:
+  struct Prepared;
+  static Prepared prepare(const Tables& tables, const Connectivity& mesh);
+  TriangleFamily(std::shared_ptr<const Tables> tables, Prepared prepared);
+
+  std::shared_ptr<const Tables> holder_;  // keeps tables_ alive
+  const TriangleTables& tables_;
+  int steps_ = 0;
+  TriangleTopology topology_;
+  std::vector<TrianglePatch> patches_;
+};
+
+// Index of up centre (i, j) and down centre (i, j) among a face's n^2 tessellation
+// points: first the n(n+1)/2 up centres ((3i+1)/(3n), (3j+1)/(3n)), i + j <= n-1,
+// then the n(n-1)/2 down centres ((3i+2)/(3n), (3j+2)/(3n)), i + j <= n-2, each
+// row by row (j-major), in the face's own parameterisation.
+inline int up_centre_index(int i, int j, int n) { return j * n - j * (j - 1) / 2 + i; }
+inline int down_centre_index(int i, int j, int n) { return n * (n + 1) / 2 + j * (n - 1) - j * (j - 1) / 2 + i; }
+
+}  // namespace stencil_runtime

@@ -1,0 +1,113 @@
+// The triangle family's share of the watertight tessellation (tessellation.hpp):
+// n^2 centres of the small triangles of each prepared face at its rate n, two
+// quads (a hexagon) round every interior grid node, a triangle round every
+// boundary node, and the rows of up centres along each edge for the seams.
+#include <string>
+
+#include "family/seam_polygons.hpp"
+#include "triangle_family.hpp"
+
+namespace stencil_runtime {
+
+namespace {
+
+// The row of centres along a face's edge k (corner k -> k+1) at rate n, in the
+// edge's direction: U(t), t = 0..n-1, the up centres of the small triangles
+// on the edge, and D(t), t = 0..n-2, the down centre between U(t) and U(t+1)
+// (its corner is the edge's grid node t+1). Indices among the face's centres.
+inline int row_up(int k, int t, int n) {
+  switch (k) {
+    case 0: return up_centre_index(t, 0, n);
+    case 1: return up_centre_index(n - 1 - t, t, n);
+    default: return up_centre_index(0, n - 1 - t, n);
+  }
+}
+inline int row_down(int k, int t, int n) {
+  switch (k) {
+    case 0: return down_centre_index(t, 0, n);
+    case 1: return down_centre_index(n - 2 - t, t, n);
+    default: return down_centre_index(0, n - 2 - t, n);
+  }
+}
+
+}  // namespace
+
+void TriangleFamily::plan(TessellationLayout& layout, const detail::RangeRunner& run) const {
+  const std::size_t nf = topology_.faces();
+  const std::vector<int>& rates = layout.rates;
+  // Counts and offsets (serial, O(faces)). Per face: n^2 points, two quads per
+  // interior node ((n-1)(n-2)/2 of them), one triangle per boundary node
+  // (3(n-1)); then the zippers and vertex polygons.
+  std::vector<std::size_t> face_quads(nf + 1, 0), face_triangles(nf + 1, 0);
+  layout.point_offsets.assign(nf + 1, 0);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto n = static_cast<std::size_t>(rates[f]);
+    layout.point_offsets[f + 1] = layout.point_offsets[f] + n * n;
+    face_quads[f + 1] = face_quads[f] + (n - 1) * (n >= 2 ? n - 2 : 0);
+    face_triangles[f + 1] = face_triangles[f] + 3 * (n - 1);
+  }
+  if (layout.point_offsets[nf] > limits::kMaxTessellationPoints)
+    throw EvaluationError("the tessellation would have " + std::to_string(layout.point_offsets[nf]) +
+                          " points; the limit is " + std::to_string(limits::kMaxTessellationPoints) + " (lower the rates)");
+  const detail::SeamPolygons<3> seams(topology_, rates);
+  const std::size_t inner_quads = face_quads[nf], inner_triangles = face_triangles[nf];
+  layout.quads.resize(inner_quads + seams.quads());
+  layout.triangles.resize(inner_triangles + seams.triangles());
+  // Faces: the hexagons round interior nodes, the triangles round boundary nodes.
+  run(nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f != end; ++f) {
+      const int n = rates[f];
+      const int base = static_cast<int>(layout.point_offsets[f]);
+      auto up = [&](int i, int j) { return base + up_centre_index(i, j, n); };
+      auto down = [&](int i, int j) { return base + down_centre_index(i, j, n); };
+      std::array<int, 4>* q = layout.quads.data() + face_quads[f];
+      for (int j = 1; j < n; ++j)
+        for (int i = 1; i + j <= n - 1; ++i) {
+          // Counter-clockwise round node (i, j).
+          const int h[6] = {up(i, j), down(i - 1, j), up(i - 1, j), down(i - 1, j - 1), up(i, j - 1), down(i, j - 1)};
+          *q++ = {h[0], h[1], h[2], h[3]};
+          *q++ = {h[3], h[4], h[5], h[0]};
+        }
+      std::array<int, 3>* t = layout.triangles.data() + face_triangles[f];
+      for (int k = 0; k < 3; ++k)
+        for (int s = 0; s + 1 < n; ++s) *t++ = {base + row_up(k, s, n), base + row_up(k, s + 1, n), base + row_down(k, s, n)};
+    }
+  });
+  // Edges: the zipper between the two faces' rows of up centres; vertices: the polygon of the corner centres.
+  run(seams.half_edges(), [&](std::size_t begin, std::size_t end) {
+    seams.edges(begin, end, layout.point_offsets, row_up, layout.quads.data() + inner_quads,
+                layout.triangles.data() + inner_triangles);
+  });
+  run(topology_.vertices(), [&](std::size_t begin, std::size_t end) {
+    seams.vertices(begin, end, layout.point_offsets, row_up, layout.quads.data() + inner_quads,
+                   layout.triangles.data() + inner_triangles);
+  });
+}
+
+void TriangleFamily::points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
+                            std::array<float, 3>* out_all) const {
+  thread_local std::vector<Point> local;
+  for (std::size_t f = begin; f != end; ++f) {
+    const TrianglePatch& p = patches_[f];
+    const long n = layout.rates[f];
+    const std::size_t m = p.points.size();
+    local.resize(m);
+    for (std::size_t h = 0; h < m; ++h) local[h] = pos[p.points[h]];
+    const TriangleTables::Grid grid = tables_.grid(p.valence, static_cast<int>(n), p.region);
+    std::array<float, 3>* out = out_all + layout.point_offsets[f];
+    auto put = [&](long a, long b) {
+      long pa = 0, pb = 0;
+      p.to_patch(a, b, 3 * n, pa, pb);
+      const double* w = grid.weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3);
+      double x = 0, y = 0, z = 0;
+      for (std::size_t h = 0; h < m; ++h) x += w[h] * local[h][0], y += w[h] * local[h][1], z += w[h] * local[h][2];
+      *out++ = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+    };
+    for (long j = 0; j < n; ++j)
+      for (long i = 0; i + j <= n - 1; ++i) put(3 * i + 1, 3 * j + 1);
+    for (long j = 0; j + 1 < n; ++j)
+      for (long i = 0; i + j <= n - 2; ++i) put(3 * i + 2, 3 * j + 2);
+  }
+}
+
+}  // namespace stencil_runtime

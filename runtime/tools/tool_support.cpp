@@ -1,0 +1,130 @@
+#include "tool_support.hpp"
+
+#include <glob.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <new>
+
+namespace stencil_tools {
+
+namespace fs = std::filesystem;
+
+int run_tool(CLI::App& app, int argc, char** argv, const std::function<int()>& body) {
+  const std::string name = app.get_name();
+  try {
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+      std::cerr << name << ": error: " << e.what() << " (see --help)\n";
+      return 1;
+    }
+    return body();
+  } catch (const std::bad_alloc&) {
+    std::cerr << name << ": error: out of memory\n";
+  } catch (const std::exception& e) {
+    std::cerr << name << ": error: " << e.what() << "\n";
+  } catch (...) {
+    std::cerr << name << ": error: unknown failure\n";
+  }
+  return 1;
+}
+
+std::string read_text_file(const std::string& path, std::size_t max_bytes) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) throw std::runtime_error(path + ": cannot open (no such file)");
+  if (!fs::is_regular_file(status)) throw std::runtime_error(path + ": not a regular file");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw std::runtime_error(path + ": cannot read its size: " + ec.message());
+  if (size > max_bytes) throw std::runtime_error(path + ": " + std::to_string(size) + " bytes; the limit is " + std::to_string(max_bytes));
+  std::ifstream in(path, std::ios::binary);
+  std::string text(static_cast<std::size_t>(size), '\0');
+  if (!in.read(text.data(), static_cast<std::streamsize>(size))) throw std::runtime_error(path + ": read failed");
+  return text;
+}
+
+ParameterText parse_parameter(const std::string& text) {
+  ParameterText p;
+  if (text.find_first_of(".eEnN") == std::string::npos) {
+    p.fraction = stencil_runtime::parse_fraction(text);
+    p.value = p.fraction.to_double();
+    return p;
+  }
+  p.exact = false;
+  const char* end = text.data() + text.size();
+  const auto [stop, err] = std::from_chars(text.data(), end, p.value);
+  if (err != std::errc() || stop != end || !std::isfinite(p.value))
+    throw std::runtime_error("parameter '" + text + "' is neither an exact rational such as 1/3 nor a finite decimal such as 0.3");
+  return p;
+}
+
+std::pair<std::string, std::string> split_pair(const std::string& text, const std::string& option) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos)
+    throw std::runtime_error(option + " expects U,V such as 1/3,1/2 or 0.3,0.7; got '" + text + "'");
+  return {text.substr(0, comma), text.substr(comma + 1)};
+}
+
+std::size_t parse_index(const std::string& text, const std::string& what) {
+  std::uint64_t value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, err] = std::from_chars(text.data(), end, value);
+  if (text.empty() || err != std::errc() || stop != end)
+    throw std::runtime_error(what + " '" + text + "' is not a number 0, 1, 2, ... (numbered from 0)");
+  return static_cast<std::size_t>(value);
+}
+
+void check_frame_pattern(const std::string& pattern) {
+  int conversions = 0;
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != '%') continue;
+    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
+      ++i;
+      continue;
+    }
+    std::size_t j = i + 1;
+    if (j < pattern.size() && pattern[j] == '0') ++j;
+    std::size_t digits = 0;
+    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j]))) ++j, ++digits;
+    if (j >= pattern.size() || pattern[j] != 'd' || digits > 2)
+      throw std::runtime_error("output pattern '" + pattern + "': only %d, %0Nd or %Nd (N < 100) and %% are allowed");
+    ++conversions;
+    i = j;
+  }
+  if (conversions != 1)
+    throw std::runtime_error("output pattern '" + pattern + "' needs exactly one frame number such as %04d");
+}
+
+std::string frame_name(const std::string& pattern, std::size_t frame) {
+  check_frame_pattern(pattern);
+  const int size = std::snprintf(nullptr, 0, pattern.c_str(), static_cast<int>(frame));
+  std::string out(static_cast<std::size_t>(size) + 1, '\0');
+  std::snprintf(out.data(), out.size(), pattern.c_str(), static_cast<int>(frame));
+  out.resize(static_cast<std::size_t>(size));
+  return out;
+}
+
+std::vector<std::string> expand_pattern(const std::string& pattern) {
+  glob_t found{};
+  const int status = ::glob(pattern.c_str(), GLOB_ERR, nullptr, &found);
+  std::vector<std::string> out;
+  if (status == 0)
+    for (std::size_t k = 0; k < found.gl_pathc; ++k) out.emplace_back(found.gl_pathv[k]);
+  ::globfree(&found);
+  if (status == GLOB_NOMATCH || out.empty()) throw std::runtime_error("'" + pattern + "' names no file");
+  if (status != 0) throw std::runtime_error("'" + pattern + "': cannot list the files it names");
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace stencil_tools

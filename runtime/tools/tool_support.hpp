@@ -1,0 +1,49 @@
+#pragma once
+// What the runtime's command-line tools share: the error boundary of every
+// main, checked reading of small text inputs, parameter parsing, and the
+// printf-style output-name patterns of animations.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stencil_runtime/exact_parameter.hpp"
+
+namespace stencil_tools {
+
+// Parses the command line and runs `body`, turning every exception into one
+// line "<tool>: error: <message>" on stderr and exit code 1. --help prints
+// the help and exits 0; a command-line error is one line and exit code 1.
+int run_tool(CLI::App& app, int argc, char** argv, const std::function<int()>& body);
+
+// A regular text file of at most `max_bytes`, whole; errors name the path.
+std::string read_text_file(const std::string& path, std::size_t max_bytes = std::size_t{64} << 20);
+
+// A parameter as given on the command line: an exact rational ("1/3", "0",
+// "1") or a decimal ("0.3", "2.5e-3"), which is evaluated within a tolerance.
+struct ParameterText {
+  bool exact = true;
+  stencil_runtime::Fraction fraction;
+  double value = 0;
+};
+ParameterText parse_parameter(const std::string& text);
+
+// Splits "U,V" (exactly one comma); `option` names the option in errors.
+std::pair<std::string, std::string> split_pair(const std::string& text, const std::string& option);
+
+// A non-negative integer such as a face number, strictly parsed (no sign, no
+// trailing characters, fits in 64 bits); `what` names it in errors.
+std::size_t parse_index(const std::string& text, const std::string& what);
+
+// Output names "out/frame%04d.ply": exactly one %d conversion (with an
+// optional zero flag and width), "%%" for a percent sign, nothing else.
+// Throws naming the pattern otherwise.
+void check_frame_pattern(const std::string& pattern);
+std::string frame_name(const std::string& pattern, std::size_t frame);
+
+// The files a shell pattern such as "anim/frame*.obj" names, sorted by name;
+// throws when it names none.
+std::vector<std::string> expand_pattern(const std::string& pattern);
+
+}  // namespace stencil_tools
