@@ -9,6 +9,7 @@
 #include <opensubdiv/far/topologyRefinerFactory.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -58,6 +59,22 @@ class BfrLimit {
     const double uv[2] = {u, v};
     std::array<double, 3> out{};
     surface.Evaluate(uv, patch.data(), 3, out.data());
+    return out;
+  }
+
+  // The limit point's weights over the mesh's control vertices (Bfr's
+  // EvaluateStencil over the surface's control points, gathered by vertex).
+  std::map<int, double> stencil(int face, double u, double v) {
+    osd::Bfr::Surface<double> surface;
+    if (!factory_->InitVertexSurface(face, &surface) || !surface.IsValid())
+      throw std::runtime_error("Bfr has no surface for face " + std::to_string(face));
+    std::vector<int> indices(static_cast<std::size_t>(surface.GetNumControlPoints()));
+    surface.GetControlPointIndices(indices.data());
+    std::vector<double> weights(indices.size());
+    const double uv[2] = {u, v};
+    surface.EvaluateStencil(uv, weights.data());
+    std::map<int, double> out;
+    for (std::size_t k = 0; k < indices.size(); ++k) out[indices[k]] += weights[k];
     return out;
   }
 

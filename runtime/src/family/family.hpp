@@ -97,7 +97,7 @@ class ValenceCheck {
   std::string first_missing_;
 };
 
-// "3-8,10" from a sorted list; a lone value v is written "v-v" when
+// "3-8,10" from a sorted list; a list of one value v is written "v-v" when
 // `always_range` (stencilgen's --n reads a lone N as 1..N).
 std::string compact_list(const std::vector<int>& sorted, bool always_range);
 

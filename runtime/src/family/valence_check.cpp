@@ -11,9 +11,11 @@ std::string compact_list(const std::vector<int>& sorted, bool always_range) {
     while (end + 1 < sorted.size() && sorted[end + 1] == sorted[end] + 1) ++end;
     if (!out.empty()) out += ",";
     out += std::to_string(sorted[k]);
-    if (end > k || always_range) out += "-" + std::to_string(sorted[end]);
+    if (end > k) out += "-" + std::to_string(sorted[end]);
     k = end + 1;
   }
+  // stencilgen reads a lone N as 1..N, a list or range as written.
+  if (always_range && sorted.size() == 1) out += "-" + out;
   return out;
 }
 

@@ -1,0 +1,114 @@
+// Limit points as sparse rows over the original control vertices (the
+// refinement matrix of the preparation folded in): rows times the control
+// positions equal the evaluated points on every bundled mesh, every row sums
+// to 1, and for Catmull-Clark and Loop every row equals OpenSubdiv Bfr's limit
+// stencil over the same control vertices.
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+#include "bfr_reference.hpp"
+#include "cli.hpp"
+#include "runtime_api.hpp"
+#include "runtime_checks.hpp"
+
+using namespace stencil_runtime;
+using namespace test_runtime;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
+
+Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
+
+// Grid samples of every face (every `step`-th face), in each face's domain.
+std::vector<Sample> samples_of(const SurfaceTopology& topology, std::size_t step) {
+  std::vector<Sample> out;
+  const std::vector<long> rates = topology.tables().has_rate(4) ? std::vector<long>{1, 3, 4} : std::vector<long>{1, 3, 9};
+  for (std::size_t f = 0; f < topology.face_count(); f += step) {
+    const FaceDomain d = topology.domain(f);
+    for (long n : rates)
+      for (long j = 0; j <= n; ++j)
+        for (long i = 0; i <= n; ++i) {
+          if (d.kind == FaceDomain::Kind::Triangle && i + j > n) continue;
+          if (d.kind == FaceDomain::Kind::QuadSubfaces)  // the first sub-face's tile
+            out.push_back({f, {Fraction::make(i, 2 * n), Fraction::make(j, 2 * n)}});
+          else
+            out.push_back({f, grid(i, j, n)});
+        }
+  }
+  return out;
+}
+
+// rows * control == evaluate, and every row sums to 1.
+void check_rows_evaluate(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, std::size_t step) {
+  const Surface surface = surface_of(tables, mesh);
+  const std::vector<Sample> samples = samples_of(surface.topology(), step);
+  const StencilRows rows = surface.topology().stencils(samples);
+  REQUIRE(rows.rows() == samples.size());
+  REQUIRE(rows.columns == mesh.vertex_count());
+  const std::vector<Point> points = rows.apply(mesh.positions);
+  const double size = extent(mesh);
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    INFO(tables->scheme() << " face " << samples[k].face << " at " << samples[k].at.str());
+    REQUIRE(distance(points[k], surface.evaluate(samples[k].face, samples[k].at)) / size < 1e-13);
+    double sum = 0;
+    for (std::size_t e = rows.offsets[k]; e < rows.offsets[k + 1]; ++e) {
+      REQUIRE(rows.vertices[e] < mesh.vertex_count());
+      if (e > rows.offsets[k]) REQUIRE(rows.vertices[e - 1] < rows.vertices[e]);
+      sum += rows.weights[e];
+    }
+    REQUIRE(sum == Approx(1.0).margin(1e-13));
+  }
+}
+
+// Each row equals Bfr's stencil over the control vertices.
+void check_rows_bfr(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, OpenSubdiv::Sdc::SchemeType scheme,
+                    std::size_t step) {
+  const auto topology = topology_of(tables, mesh);
+  const std::vector<Sample> samples = samples_of(*topology, step);
+  const StencilRows rows = topology->stencils(samples);
+  bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices, scheme);
+  double worst = 0;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    std::map<int, double> theirs =
+        reference.stencil(static_cast<int>(samples[k].face), samples[k].at.u.to_double(), samples[k].at.v.to_double());
+    for (std::size_t e = rows.offsets[k]; e < rows.offsets[k + 1]; ++e) theirs[static_cast<int>(rows.vertices[e])] -= rows.weights[e];
+    for (const auto& [vertex, difference] : theirs) {
+      worst = std::max(worst, std::abs(difference));
+      INFO(tables->scheme() << " face " << samples[k].face << " at " << samples[k].at.str() << ", vertex " << vertex);
+      REQUIRE(std::abs(difference) < 1e-12);
+    }
+  }
+  INFO("largest weight difference " << worst);
+  SUCCEED();
+}
+
+// A closed triangular prism: two triangles and three quads (the polygon step).
+Mesh prism() {
+  Mesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0.3, 0.9, 0}, {0, 0, 1.2}, {1, 0, 1.1}, {0.4, 1, 1.3}};
+  m.face_sizes = {3, 3, 4, 4, 4};
+  m.face_vertices = {0, 2, 1, 3, 4, 5, 0, 1, 4, 3, 1, 2, 5, 4, 2, 0, 3, 5};
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("stencil rows over the control vertices reproduce the evaluated points", "[runtime][stencils]") {
+  const auto nonpoly = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 24", "sgs").string());
+  const auto sqrt3 = Tables::load(generated_table("sqrt3", "--valence 3-8 --n 1,3,9,27", "sgt").string());
+  for (const char* name : {"cube", "torus-3-5", "chess-piece", "bumpy-sphere"}) check_rows_evaluate(nonpoly, bundled(name), 3);
+  check_rows_evaluate(nonpoly, prism(), 1);
+  for (const char* name : {"icosahedron", "tri-torus", "tri-mix"}) check_rows_evaluate(sqrt3, bundled(name), 3);
+}
+
+TEST_CASE("Catmull-Clark and Loop stencil rows equal OpenSubdiv's over the same control vertices", "[runtime][stencils][opensubdiv]") {
+  const auto cc = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 24", "sgs").string());
+  const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 24", "sgt").string());
+  for (const char* name : {"cube", "torus-3-5", "chess-piece", "bumpy-sphere"})
+    check_rows_bfr(cc, bundled(name), OpenSubdiv::Sdc::SCHEME_CATMARK, 5);
+  check_rows_bfr(cc, prism(), OpenSubdiv::Sdc::SCHEME_CATMARK, 1);
+  for (const char* name : {"icosahedron", "tri-torus", "tri-mix"})
+    check_rows_bfr(loop, bundled(name), OpenSubdiv::Sdc::SCHEME_LOOP, 2);
+}
