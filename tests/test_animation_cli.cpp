@@ -1,0 +1,111 @@
+// stenciltess's animation mode: topology and plan made once from the rest
+// mesh, every frame's output byte-identical to a run on that frame alone; a
+// frame with other connectivity is named and nothing is written.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "cli.hpp"
+#include "runtime_api.hpp"
+#include "runtime_checks.hpp"
+
+using namespace stencil_runtime;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
+
+void write_obj(const Mesh& m, const fs::path& path) {
+  std::ofstream out(path);
+  out.precision(17);
+  for (const auto& p : m.positions) out << "v " << p[0] << " " << p[1] << " " << p[2] << "\n";
+  std::size_t k = 0;
+  for (int size : m.face_sizes) {
+    out << "f";
+    for (int c = 0; c < size; ++c) out << " " << m.face_vertices[k++] + 1;
+    out << "\n";
+  }
+}
+
+std::string bytes_of(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// Frames frame_<k>.obj of the mesh with its vertices moved randomly.
+std::vector<fs::path> make_frames(const Mesh& rest, const fs::path& dir, int count) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> offset(-0.05, 0.05);
+  std::vector<fs::path> frames;
+  for (int k = 0; k < count; ++k) {
+    Mesh m = rest;
+    for (auto& p : m.positions)
+      for (double& x : p) x += offset(rng);
+    frames.push_back(dir / ("frame_" + std::to_string(k) + ".obj"));
+    write_obj(m, frames.back());
+  }
+  return frames;
+}
+
+void check_animation(const std::string& tables, const std::string& mesh_name, const std::string& rates) {
+  const fs::path dir = scratch_dir("animation-" + mesh_name);
+  const fs::path rest = kMeshes / (mesh_name + ".obj");
+  const std::vector<fs::path> frames = make_frames(read_obj(rest.string()), dir, 3);
+  fs::create_directories(dir / "out");
+  const CliResult r = run_stenciltess("--tables " + tables + " --mesh " + rest.string() + " --frames '" +
+                                      (dir / "frame_*.obj").string() + "' " + rates + " --out '" + (dir / "out" / "f%02d.ply").string() + "'");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  REQUIRE(r.output.find("frame 3/3") != std::string::npos);  // progress
+  for (int k = 0; k < 3; ++k) {
+    const fs::path single = dir / ("single_" + std::to_string(k) + ".ply");
+    const CliResult s = run_stenciltess("--tables " + tables + " --mesh " + frames[static_cast<std::size_t>(k)].string() + " " + rates +
+                                        " --out " + single.string());
+    REQUIRE(s.status == 0);
+    const fs::path animated = dir / "out" / ("f0" + std::to_string(k) + ".ply");
+    REQUIRE(fs::exists(animated));
+    INFO("frame " << k);
+    REQUIRE(bytes_of(animated) == bytes_of(single));
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+
+TEST_CASE("stenciltess --frames writes every frame as a single run on it would", "[runtime][tools][frames]") {
+  const std::string nonpoly = generated_table("nonpoly", "--valence 3-8 --n 24", "sgs").parent_path().string();
+  const std::string loop = generated_table("loop", "--valence 3-8 --n 24", "sgt").parent_path().string();
+  check_animation(nonpoly, "torus-3-5", "--rate 6");
+  check_animation(loop, "tri-mix", "--rate 5");
+}
+
+TEST_CASE("stenciltess --frames refuses a frame with other connectivity, and writes nothing", "[runtime][tools][frames][errors]") {
+  const std::string nonpoly = generated_table("nonpoly", "--valence 3-8 --n 24", "sgs").parent_path().string();
+  const fs::path dir = scratch_dir("animation-errors");
+  const fs::path rest = kMeshes / "cube.obj";
+  Mesh cube = read_obj(rest.string());
+  make_frames(cube, dir, 2);
+  std::swap(cube.face_vertices[0], cube.face_vertices[1]);  // another face order: other connectivity
+  write_obj(cube, dir / "frame_2.obj");
+  fs::create_directories(dir / "out");
+  const std::string frames = " --frames '" + (dir / "frame_*.obj").string() + "'";
+  CliResult r = run_stenciltess("--tables " + nonpoly + " --mesh " + rest.string() + frames + " --rate 3 --out '" +
+                                (dir / "out" / "f%d.obj").string() + "'");
+  CHECK(r.status == 1);
+  CHECK(r.output.find("frame_2.obj: frame 2 has another connectivity than") != std::string::npos);
+  CHECK(fs::is_empty(dir / "out"));
+  r = run_stenciltess("--tables " + nonpoly + " --mesh " + rest.string() + frames + " --rate 3 --out " + (dir / "out" / "f.obj").string());
+  CHECK(r.status == 1);
+  CHECK(r.output.find("needs exactly one frame number such as %04d") != std::string::npos);
+  r = run_stenciltess("--tables " + nonpoly + " --mesh " + rest.string() + frames + " --rate 3 --out '" + (dir / "out" / "%s.obj").string() + "'");
+  CHECK(r.status == 1);
+  CHECK(r.output.find("only %d") != std::string::npos);
+  r = run_stenciltess("--tables " + nonpoly + " --mesh " + rest.string() + " --frames '" + (dir / "none_*.obj").string() +
+                      "' --rate 3 --out '" + (dir / "out" / "f%d.obj").string() + "'");
+  CHECK(r.status == 1);
+  CHECK(r.output.find("names no file") != std::string::npos);
+  CHECK(fs::is_empty(dir / "out"));
+  fs::remove_all(dir);
+}
