@@ -1,8 +1,9 @@
 #include "polygon_links.hpp"
 
+#include "stencil_runtime/limits.hpp"
+
 #include <cstdint>
 #include <string>
-#include <unordered_map>
 
 namespace stencil_runtime {
 
@@ -39,27 +40,35 @@ PolygonLinks link_polygons(const Connectivity& mesh) {
       l.next[h] = h + 1 < l.start[f + 1] ? h + 1 : l.start[f];
     }
   auto vert = [&](std::size_t h) { return mesh.face_vertices[h]; };
-  auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
-  std::unordered_map<std::uint64_t, std::size_t> directed;
-  directed.reserve(nh);
-  for (std::size_t h = 0; h < nh; ++h) {
-    const int a = vert(h), b = vert(l.next[h]);
-    const auto [it, fresh] = directed.emplace(key(a, b), h);
-    if (!fresh)
-      throw MeshError("edge " + edge_name(a, b) + " is used twice in the same direction (faces " +
-                      std::to_string(l.face_of[it->second]) + " and " + std::to_string(l.face_of[h]) +
-                      "): the mesh is non-manifold or inconsistently oriented");
-  }
-  l.twin.assign(nh, 0);
+  // Outgoing half-edges by vertex (CSR): twins are found among the few
+  // half-edges leaving the next vertex, in linear time and without hashing.
   l.valence.assign(nv, 0);
+  for (std::size_t h = 0; h < nh; ++h) ++l.valence[static_cast<std::size_t>(vert(h))];
+  for (std::size_t v = 0; v < nv; ++v)
+    if (l.valence[v] > limits::kMaxValence)
+      throw MeshError("vertex " + std::to_string(v) + " has valence " + std::to_string(l.valence[v]) +
+                      "; the runtime supports valences up to " + std::to_string(limits::kMaxValence) + " (split the faces round it)");
+  std::vector<std::size_t> first(nv + 1, 0);
+  for (std::size_t v = 0; v < nv; ++v) first[v + 1] = first[v] + static_cast<std::size_t>(l.valence[v]);
+  std::vector<std::size_t> outgoing(nh), fill(first.begin(), first.end() - 1);
+  for (std::size_t h = 0; h < nh; ++h) outgoing[fill[static_cast<std::size_t>(vert(h))]++] = h;
+  for (std::size_t v = 0; v < nv; ++v)  // an edge used twice in the same direction
+    for (std::size_t a = first[v]; a < first[v + 1]; ++a)
+      for (std::size_t b = first[v]; b < a; ++b)
+        if (vert(l.next[outgoing[a]]) == vert(l.next[outgoing[b]]))
+          throw MeshError("edge " + edge_name(static_cast<int>(v), vert(l.next[outgoing[a]])) +
+                          " is used twice in the same direction (faces " + std::to_string(l.face_of[outgoing[b]]) + " and " +
+                          std::to_string(l.face_of[outgoing[a]]) + "): the mesh is non-manifold or inconsistently oriented");
+  l.twin.assign(nh, 0);
   for (std::size_t h = 0; h < nh; ++h) {
     const int a = vert(h), b = vert(l.next[h]);
-    const auto it = directed.find(key(b, a));
-    if (it == directed.end())
+    std::size_t found = nh;
+    for (std::size_t k = first[static_cast<std::size_t>(b)]; k < first[static_cast<std::size_t>(b) + 1]; ++k)
+      if (vert(l.next[outgoing[k]]) == a) found = outgoing[k];
+    if (found == nh)
       throw MeshError("edge " + edge_name(a, b) + " of face " + std::to_string(l.face_of[h]) +
                       " has no neighbouring face: the mesh has a boundary (only closed meshes are supported)");
-    l.twin[h] = it->second;
-    ++l.valence[static_cast<std::size_t>(a)];
+    l.twin[h] = found;
   }
   for (std::size_t v = 0; v < nv; ++v)
     if (l.valence[v] == 0) throw MeshError("vertex " + std::to_string(v) + " belongs to no face");

@@ -7,8 +7,11 @@
 
 namespace stencil_runtime {
 
+namespace {
+
+// The mesh, once its faces are all K-gons (checked before linking, for the clearer message).
 template <int K>
-UniformTopology<K>::UniformTopology(const Connectivity& mesh) {
+const Connectivity& k_gons(const Connectivity& mesh) {
   const std::size_t nf = mesh.face_count();
   if (nf > limits::kMaxMeshElements / K)
     throw MeshError("the mesh has " + std::to_string(nf) + " faces; the runtime supports up to " +
@@ -17,7 +20,17 @@ UniformTopology<K>::UniformTopology(const Connectivity& mesh) {
     if (mesh.face_sizes[f] != K)
       throw MeshError("face " + std::to_string(f) + " has " + std::to_string(mesh.face_sizes[f]) + " vertices; " +
                       (K == 4 ? "quad schemes need a mesh of quads here" : "triangle schemes need a mesh of triangles"));
-  const PolygonLinks links = link_polygons(mesh);  // checks indices, pairs the half-edges, counts valences
+  return mesh;
+}
+
+}  // namespace
+
+template <int K>
+UniformTopology<K>::UniformTopology(const Connectivity& mesh) : UniformTopology(mesh, link_polygons(k_gons<K>(mesh))) {}
+
+template <int K>
+UniformTopology<K>::UniformTopology(const Connectivity& mesh, const PolygonLinks& links) {
+  k_gons<K>(mesh);
   vertex_of_ = mesh.face_vertices;
   twin_.assign(links.twin.begin(), links.twin.end());
   valence_ = links.valence;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "connectivity.hpp"
+#include "polygon_links.hpp"
 #include "stencil_runtime/error.hpp"
 
 namespace stencil_runtime {
@@ -17,6 +18,8 @@ class UniformTopology {
   // Throws MeshError naming the face, edge or vertex when the mesh is not a
   // closed manifold made of K-gons (see link_polygons).
   explicit UniformTopology(const Connectivity& mesh);
+  // The same from the mesh's half-edges, already linked.
+  UniformTopology(const Connectivity& mesh, const PolygonLinks& links);
 
   std::size_t faces() const { return vertex_of_.size() / K; }
   std::size_t vertices() const { return valence_.size(); }

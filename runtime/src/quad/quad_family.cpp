@@ -84,7 +84,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     out.mesh = std::move(step.mesh);
     out.polygon_step = true;
   }
-  QuadTopology topo(out.mesh);
+  QuadTopology topo = all_quads ? QuadTopology(out.mesh, links) : QuadTopology(out.mesh);
   while (!isolated(topo)) {
     if (out.steps + (out.polygon_step ? 1 : 0) == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices still share faces after " + std::to_string(limits::kMaxRefinementSteps) +
