@@ -67,6 +67,8 @@ Mesh read_obj(const std::string& path) {
       for (int k = 0; k < 3; ++k) {
         const std::string_view t = token(line, pos);
         const auto [end, err] = std::from_chars(t.data(), t.data() + t.size(), p[static_cast<std::size_t>(k)]);
+        if (err == std::errc::result_out_of_range)
+          fail("coordinate " + std::string(t) + " is not a finite number of magnitude at most 1e37");
         if (t.empty() || err != std::errc() || end != t.data() + t.size())
           fail("a vertex needs three numbers, got '" + std::string(t) + "'");
         if (!std::isfinite(p[static_cast<std::size_t>(k)]) || std::fabs(p[static_cast<std::size_t>(k)]) > limits::kMaxCoordinate)

@@ -120,14 +120,17 @@ QuadTables QuadTables::load_json_directory(const std::string& dir, std::uint64_t
         const VertexRule rule = read_rule(f, key, r, "rules.vertex");
         if (!t.vertex_rule(rule.valence)) t.rules_.push_back(rule);
       }
-      if (val.reflection.empty()) {
+      {  // the same reflection in every file of the valence
         const json& reflection = f.array(f.member(doc, "reflection", ""), "reflection");
         if (reflection.size() != static_cast<std::size_t>(val.points)) f.fail("reflection", "wrong length");
+        std::vector<std::uint32_t> read;
         for (std::size_t k = 0; k < reflection.size(); ++k) {
           const std::int64_t x = f.integer(reflection[k], "reflection[" + std::to_string(k) + "]");
           if (x < 0 || x >= val.points) f.fail("reflection[" + std::to_string(k) + "]", "index out of range");
-          val.reflection.push_back(static_cast<std::uint32_t>(x));
+          read.push_back(static_cast<std::uint32_t>(x));
         }
+        if (val.reflection.empty()) val.reflection = read;
+        else if (read != val.reflection) f.fail("reflection", "differs from the other tables of valence " + std::to_string(v));
       }
       for (const char* kind : {"nodes", "centres"}) {
         const json& list = f.array(f.member(doc, kind, ""), kind);

@@ -1,0 +1,210 @@
+// The runtime and its tools against hostile input (issue: robustness): every
+// table reader checks every count, index, rate and key before use; meshes,
+// parameters and options outside their limits get one clear line and exit
+// code 1, and nothing is written. One regression test per class found.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli.hpp"
+#include "runtime_api.hpp"
+#include "stencil_runtime/binary_format.hpp"
+
+using namespace stencil_runtime;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
+
+std::string nonpoly_dir() { return generated_table("nonpoly", "--valence 3-8 --n 24", "sgs").parent_path().string(); }
+
+void expect_error(const CliResult& r, const std::string& text) {
+  INFO(r.output);
+  CHECK(r.status == 1);
+  CHECK(r.output.find(text) != std::string::npos);
+  CHECK(r.output.find("terminate") == std::string::npos);
+  // One line: the error boundary prints nothing else.
+  CHECK(std::count(r.output.begin(), r.output.end(), '\n') <= 1);
+}
+
+void write_file(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+
+// Appends the FNV-1a checksum the binary formats end with.
+std::string with_checksum(std::string bytes) {
+  const std::uint64_t h = format::fnv1a64(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+  for (int k = 0; k < 8; ++k) bytes.push_back(static_cast<char>((h >> (8 * k)) & 0xff));
+  return bytes;
+}
+
+template <class T>
+void put(std::string& s, T v) {
+  s.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+
+}  // namespace
+
+TEST_CASE("binary tables with zero rates, or rates, valences and indices out of range, are refused", "[runtime][robustness]") {
+  const fs::path dir = scratch_dir("robust-binary");
+  // A complete, checksummed .sgs with no rates: refused at load, not at use.
+  std::string sgs(format::kSurfaceMagic, 8);
+  put<std::uint32_t>(sgs, format::kSurfaceVersion);
+  put<std::uint32_t>(sgs, 8);
+  put<std::uint64_t>(sgs, 0x1234);
+  for (double w : {0.25, 0.375, 0.0625}) put(sgs, w);
+  put<std::uint32_t>(sgs, 1);  // one vertex rule, valence 4
+  put<std::uint32_t>(sgs, 4);
+  for (double w : {0.5625, 0.09375, 0.015625}) put(sgs, w);
+  put<std::uint8_t>(sgs, 0);   // no polygon rules
+  put<std::uint32_t>(sgs, 0);  // no rates
+  put<std::uint32_t>(sgs, 0);  // no valences
+  write_file(dir / "zero.sgs", with_checksum(sgs));
+  CHECK_THROWS_WITH(Tables::load((dir / "zero.sgs").string()), Catch::Contains("zero.sgs: holds no rates"));
+  const CliResult r = run_stenciltess("--tables " + (dir / "zero.sgs").string() + " --mesh " + (kMeshes / "cube.obj").string() +
+                                      " --rate 4 --out " + (dir / "out.ply").string());
+  expect_error(r, "holds no rates");
+  CHECK_FALSE(fs::exists(dir / "out.ply"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("exact JSON tables are read strictly: names, reflections, grid keys, nesting", "[runtime][robustness]") {
+  const fs::path dir = scratch_dir("robust-json");
+  REQUIRE(run_stencilgen("--scheme nonpoly --valence 3 --n 1-2 --out " + dir.string() + " -q").status == 0);
+  const fs::path tables = dir / "nonpoly";
+  fs::remove(tables / "nonpoly.sgs");
+  REQUIRE(Tables::load(tables.string())->rates() == std::vector<int>{1, 2});
+  auto edit = [&](const fs::path& file, const std::function<void(nlohmann::json&)>& change) {
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream(file));
+    change(doc);
+    std::ofstream(file) << doc.dump();
+  };
+  const fs::path table = tables / "v3" / "n2.json";
+  const std::string original = [&] { std::ifstream in(table); return std::string(std::istreambuf_iterator<char>(in), {}); }();
+  auto restore = [&] { write_file(table, original); };
+  // An out-of-range reflection entry used to write past a stack buffer.
+  edit(table, [](nlohmann::json& d) { d["reflection"][0] = 1000; });
+  CHECK_THROWS_WITH(Tables::load(tables.string()), Catch::Contains("n2.json: reflection[0]: index out of range"));
+  restore();
+  edit(table, [](nlohmann::json& d) { d["reflection"][0] = d["reflection"][1]; });
+  CHECK_THROWS_WITH(Tables::load(tables.string()), Catch::Contains("n2.json: reflection: differs from the other tables"));
+  const fs::path first = tables / "v3" / "n1.json";
+  const std::string first_text = [&] { std::ifstream in(first); return std::string(std::istreambuf_iterator<char>(in), {}); }();
+  edit(first, [](nlohmann::json& d) { d["reflection"][0] = d["reflection"][1]; });
+  CHECK_THROWS_WITH(Tables::load(tables.string()), Catch::Contains("the reflection is not a permutation"));
+  write_file(first, first_text);
+  restore();
+  // A rate taken from a file name with atoi used to become a huge index.
+  fs::copy_file(table, tables / "v3" / "n-1.json");
+  CHECK_THROWS_WITH(Tables::load(tables.string()), Catch::Contains("n-1.json: not a table name of the form n<N>.json"));
+  fs::remove(tables / "v3" / "n-1.json");
+  // Grid keys "1/0" (division by zero) and "4e12" (a 256 TB vector).
+  const fs::path regular = tables / "regular" / "n4.json";
+  const std::string regular_text = [&] { std::ifstream in(regular); return std::string(std::istreambuf_iterator<char>(in), {}); }();
+  for (const char* key : {"1/0", "4e12", "9/4", "1/3"}) {
+    edit(regular, [&](nlohmann::json& d) { d["functions"][0]["values"][key] = "1/2"; });
+    INFO(key);
+    CHECK_THROWS_WITH(Tables::load(tables.string()), Catch::Contains("values[\"" + std::string(key) + "\"]"));
+    write_file(regular, regular_text);
+  }
+  // A missing field and a wrong kind are named.
+  edit(table, [](nlohmann::json& d) { d.erase("nodes"); });
+  CHECK_THROWS_WITH(Tables::load(tables.string()), Catch::Contains("n2.json: nodes: missing"));
+  restore();
+  edit(table, [](nlohmann::json& d) { d["centres"][0]["denominator"] = 7; });
+  CHECK_THROWS_WITH(Tables::load(tables.string()), Catch::Contains("centres[0].denominator: expected a string"));
+  restore();
+  edit(table, [](nlohmann::json& d) { d["centres"][0]["denominator"] = "0"; });
+  CHECK_THROWS_WITH(Tables::load(tables.string()), Catch::Contains("zero denominator"));
+  restore();
+  // Deep nesting is refused before it is built.
+  write_file(table, std::string(100000, '[') + std::string(100000, ']'));
+  CHECK_THROWS_WITH(Tables::load(tables.string()), Catch::Contains("nested deeper than"));
+  restore();
+  REQUIRE(Tables::load(tables.string())->rates() == std::vector<int>{1, 2});
+  fs::remove_all(dir);
+}
+
+TEST_CASE("meshes outside the runtime's limits get a clear error naming the line or vertex", "[runtime][robustness]") {
+  const fs::path dir = scratch_dir("robust-mesh");
+  const std::string tables = nonpoly_dir();
+  auto eval = [&](const std::string& mesh, const std::string& extra = "--face 0 --uv 1/2,1/2") {
+    return run_stencileval("--tables " + tables + " --mesh " + mesh + " " + extra);
+  };
+  expect_error(eval("/dev/zero"), "/dev/zero: not a regular file");
+  expect_error(eval(dir.string()), "not a regular file");
+  write_file(dir / "huge.obj", "v 1.8e308 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n");
+  expect_error(eval((dir / "huge.obj").string()), "huge.obj:1: coordinate 1.8e308 is not a finite number");
+  write_file(dir / "nan.obj", "v nan 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n");
+  expect_error(eval((dir / "nan.obj").string()), "nan.obj:1: coordinate nan");
+  write_file(dir / "long.obj", "v 0 0 0\n# " + std::string(2 << 20, 'x') + "\n");
+  expect_error(eval((dir / "long.obj").string()), "long.obj:2: line longer than");
+  write_file(dir / "index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999\n");
+  expect_error(eval((dir / "index.obj").string()), "index.obj:4: bad face index");
+  // Valence 2 (a pillow of two quads) and valence 70 (a bipyramid's apex).
+  write_file(dir / "pillow.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 4 3 2 1\n");
+  expect_error(eval((dir / "pillow.obj").string()), "vertex 0 has valence 2; subdivision surfaces need every vertex in at least 3 faces");
+  {
+    std::ofstream out(dir / "spike.obj");
+    const int k = 70;
+    out << "v 0 0 1\nv 0 0 -1\n";
+    for (int i = 0; i < k; ++i) out << "v " << std::cos(2 * M_PI * i / k) << " " << std::sin(2 * M_PI * i / k) << " 0\n";
+    for (int i = 0; i < k; ++i) {
+      const int a = 3 + i, b = 3 + (i + 1) % k;
+      out << "f 1 " << a << " " << b << "\nf 2 " << b << " " << a << "\n";
+    }
+  }
+  const std::string loop = generated_table("loop", "--valence 3-8 --n 24", "sgt").parent_path().string();
+  expect_error(run_stencileval("--tables " + loop + " --mesh " + (dir / "spike.obj").string() + " --face 0 --uv 0,0"),
+               "vertex 0 has valence 70; the runtime supports valences up to 64");
+  // Numbering: the library counts from 0 and says so.
+  expect_error(eval((dir / "pillow.obj").string()), "numbered from 0");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("tool options and parameters outside their limits are refused, not wrapped or clamped silently", "[runtime][robustness]") {
+  const fs::path dir = scratch_dir("robust-options");
+  const std::string tables = nonpoly_dir(), cube = (kMeshes / "cube.obj").string();
+  auto eval = [&](const std::string& extra) { return run_stencileval("--tables " + tables + " --mesh " + cube + " " + extra); };
+  auto tess = [&](const std::string& extra) {
+    return run_stenciltess("--tables " + tables + " --mesh " + cube + " --out " + (dir / "t.ply").string() + " " + extra);
+  };
+  // A denominator whose lcm used to wrap to the point at (0, 1/2).
+  expect_error(eval("--face 0 --uv 1/9223372036854775807,1/2"), "no table holds it exactly");
+  expect_error(eval("--face 0 --uv 1/99999999999999999999,1/2"), "is not an exact rational");
+  expect_error(eval("--face -1 --uv 1/2,1/2"), "--face '-1' is not a number");
+  expect_error(eval("--face 0 --uv 1/2"), "--uv expects U,V");
+  expect_error(eval("--face 0"), "give --face and --uv, or --batch");
+  write_file(dir / "q.txt", "0 1/2 1/2\nx 1/2 1/2\n");
+  expect_error(eval("--batch " + (dir / "q.txt").string()), "q.txt:2: face 'x' is not a number");
+  write_file(dir / "q.txt", "0 1/2 1/2\n9 0 0\n");
+  expect_error(eval("--batch " + (dir / "q.txt").string()), "q.txt:2: face 9 does not exist");
+  expect_error(eval("--batch " + dir.string()), "not a regular file");
+  expect_error(tess("--rate 2147483647"), "--rate must be 1..4096");
+  expect_error(tess("--rate 0"), "--rate must be 1..4096");
+  expect_error(tess("--rate 4 --threads 2147483647"), "--threads must be 1..256");
+  expect_error(tess("--tolerance 0"), "--tolerance must be a positive number");
+  expect_error(tess("--camera 0,0,5,0,0,0 --pixels 0"), "--pixels must be a positive number");
+  expect_error(tess("--camera 0,0,5,0,0 --pixels 4"), "--camera expects");
+  expect_error(tess("--rate nope"), "--rate");
+  CHECK_FALSE(fs::exists(dir / "t.ply"));
+  // Tiny tolerances and pixel sizes ask for the largest rate, with a warning, instead of wrapping to rate 1.
+  for (const std::string& mode : {std::string("--tolerance 1e-300"), std::string("--camera 0,0,5,0,0,0 --pixels 1e-300")}) {
+    const CliResult r = tess(mode);
+    INFO(r.output);
+    CHECK(r.status == 0);
+    CHECK(r.output.find("were asked for; the tables stop at 24") != std::string::npos);
+    CHECK(r.output.find("rates 24..24") != std::string::npos);
+  }
+  // --tolerance takes polygon meshes, as --rate does.
+  {
+    std::ofstream prism(dir / "prism.obj");
+    prism << "v 0 0 0\nv 1 0 0\nv 0.3 0.9 0\nv 0 0 1.2\nv 1 0 1.1\nv 0.4 1 1.3\n"
+             "f 1 3 2\nf 4 5 6\nf 1 2 5 4\nf 2 3 6 5\nf 3 1 4 6\n";
+  }
+  const CliResult r = run_stenciltess("--tables " + tables + " --mesh " + (dir / "prism.obj").string() + " --tolerance 0.01 --out " +
+                                      (dir / "p.ply").string());
+  INFO(r.output);
+  CHECK(r.status == 0);
+  fs::remove_all(dir);
+}
