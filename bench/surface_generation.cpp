@@ -11,9 +11,9 @@
 #include <thread>
 #include <vector>
 
-#include "generate_surface.hpp"
-#include "quad_scheme_loader.hpp"
-#include "surface_table_json.hpp"
+#include "quad/generate_surface.hpp"
+#include "quad/quad_scheme_loader.hpp"
+#include "quad/surface_table_json.hpp"
 
 namespace {
 using Clock = std::chrono::steady_clock;

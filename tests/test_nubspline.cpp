@@ -4,10 +4,10 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "eigen_solver.hpp"
+#include "curve/eigen_solver.hpp"
+#include "curve/residue_solver.hpp"
+#include "curve/scheme_loader.hpp"
 #include "independent.hpp"
-#include "residue_solver.hpp"
-#include "scheme_loader.hpp"
 
 using independent::Q;
 

@@ -2,11 +2,11 @@
 // give identical rationals, and every table must pass exact verification.
 #include <catch2/catch.hpp>
 
-#include "curve_table.hpp"
-#include "eigen_solver.hpp"
-#include "residue_solver.hpp"
-#include "scheme_loader.hpp"
-#include "verify.hpp"
+#include "curve/curve_table.hpp"
+#include "curve/eigen_solver.hpp"
+#include "curve/residue_solver.hpp"
+#include "curve/scheme_loader.hpp"
+#include "curve/verify.hpp"
 
 TEST_CASE("both solvers give identical rationals for every shipped scheme, n = 1..24, and tables verify") {
   const auto names = sg::available_schemes(sg::default_schemes_dir(), sg::SchemeFamily::Curve);

@@ -6,13 +6,13 @@
 #include <fstream>
 
 #include "cli.hpp"
-#include "direct_patch_solver.hpp"
-#include "ev_patch_solver.hpp"
+#include "curve/residue_solver.hpp"
 #include "independent.hpp"
-#include "patch_layout.hpp"
-#include "quad_scheme_loader.hpp"
-#include "residue_solver.hpp"
-#include "smoothness_analysis.hpp"
+#include "quad/direct_patch_solver.hpp"
+#include "quad/ev_patch_solver.hpp"
+#include "quad/patch_layout.hpp"
+#include "quad/quad_scheme_loader.hpp"
+#include "quad/smoothness_analysis.hpp"
 #include "stencil_runtime/surface_table.hpp"
 
 using independent::Q;
