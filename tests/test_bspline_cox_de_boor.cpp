@@ -1,8 +1,8 @@
 // Uniform B-spline tables against an independent Cox-de Boor evaluation.
 #include <catch2/catch.hpp>
 
+#include "curve/curve_scheme_loader.hpp"
 #include "curve/residue_solver.hpp"
-#include "curve/scheme_loader.hpp"
 #include "independent.hpp"
 
 using independent::Q;

@@ -4,9 +4,9 @@
 #include <fstream>
 #include <unistd.h>
 
+#include "curve/curve_scheme_loader.hpp"
 #include "curve/eigen_solver.hpp"
 #include "curve/residue_solver.hpp"
-#include "curve/scheme_loader.hpp"
 #include "independent.hpp"
 
 using independent::Q;

@@ -2,8 +2,8 @@
 // (interpolatory schemes), or j steps followed by the limit stencil (approximating).
 #include <catch2/catch.hpp>
 
+#include "curve/curve_scheme_loader.hpp"
 #include "curve/residue_solver.hpp"
-#include "curve/scheme_loader.hpp"
 #include "independent.hpp"
 
 using independent::Q;

@@ -5,11 +5,11 @@
 #include <unistd.h>
 
 #include "cli.hpp"
+#include "curve/curve_scheme_loader.hpp"
 #include "curve/curve_table.hpp"
+#include "curve/curve_table_binary.hpp"
+#include "curve/curve_table_json.hpp"
 #include "curve/residue_solver.hpp"
-#include "curve/scheme_loader.hpp"
-#include "curve/table_binary.hpp"
-#include "curve/table_json.hpp"
 #include "stencil_runtime/curve_table.hpp"
 
 namespace fs = std::filesystem;

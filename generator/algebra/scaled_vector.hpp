@@ -1,6 +1,6 @@
 #pragma once
 // A rational vector stored as integer numerators over one common denominator,
-// the form in which the surface solver multiplies stencils by exact matrices
+// the form in which the quad patch solver multiplies stencils by exact matrices
 // (integer products, no per-entry gcd) and the form the tables record.
 #include <utility>
 #include <vector>

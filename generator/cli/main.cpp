@@ -9,16 +9,16 @@
 #include "common/atomic_output.hpp"
 #include "common/rate_spec.hpp"
 #include "common/read_file.hpp"
-#include "curve/generate.hpp"
+#include "curve/curve_scheme_loader.hpp"
+#include "curve/curve_table_json.hpp"
+#include "curve/curve_table_verify.hpp"
+#include "curve/generate_curve.hpp"
 #include "curve/plot_svg.hpp"
 #include "curve/residue_solver.hpp"
-#include "curve/scheme_loader.hpp"
-#include "curve/table_json.hpp"
-#include "curve/verify.hpp"
-#include "quad/generate_surface.hpp"
+#include "quad/generate_quad.hpp"
+#include "quad/quad_analysis.hpp"
 #include "quad/quad_scheme_loader.hpp"
-#include "quad/smoothness_analysis.hpp"
-#include "quad/surface_table_json.hpp"
+#include "quad/quad_table_json.hpp"
 #include "triangle/generate_triangle.hpp"
 #include "triangle/triangle_analysis.hpp"
 #include "triangle/triangle_scheme_loader.hpp"
@@ -56,7 +56,7 @@ std::vector<int> parse_valences(const std::string& spec) {
   return valences;
 }
 
-int run_generate_surface(const std::string& scheme_spec, const std::string& rates_spec, const std::string& valence_spec,
+int run_generate_quad(const std::string& scheme_spec, const std::string& rates_spec, const std::string& valence_spec,
                          const std::string& out, const std::vector<std::string>& params, const std::string& precision,
                          bool quiet) {
   const auto rates = sg::parse_rate_spec(rates_spec);
@@ -65,7 +65,7 @@ int run_generate_surface(const std::string& scheme_spec, const std::string& rate
   const auto start = std::chrono::steady_clock::now();
   for (int v : valences) {
     scheme.vertex_rule(v);
-    const sg::SmoothnessReport report = sg::analyse_valence(scheme, v, 16);
+    const sg::SmoothnessReport report = sg::analyse_quad_valence(scheme, v, 16);
     if (!report.ok())
       std::cerr << "stencilgen: warning: '" << scheme.name << "' fails the smoothness analysis at valence " << v
                 << " (tables are still exact; see `stencilgen analyze`):\n"
@@ -74,8 +74,8 @@ int run_generate_surface(const std::string& scheme_spec, const std::string& rate
   auto progress = [&](const std::string& line) {
     if (!quiet) std::cerr << line << "\n";
   };
-  const auto set = sg::generate_surface_tables(scheme, valences, rates, progress);
-  const std::size_t bytes = sg::write_surface_tables(
+  const auto set = sg::generate_quad_tables(scheme, valences, rates, progress);
+  const std::size_t bytes = sg::write_quad_tables(
       scheme, set, out, precision == "single" ? sg::BinaryPrecision::Single : sg::BinaryPrecision::Double);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "wrote exact surface tables for '" << scheme.name << "' (valences " << valence_spec << ", rates "
@@ -136,7 +136,7 @@ int run_analyze(const std::string& scheme_spec, const std::string& valence_spec,
   std::cout << "smoothness analysis of '" << scheme.name << "' (" << scheme.source << ")\n";
   for (int v : parse_valences(valence_spec)) {
     scheme.vertex_rule(v);
-    const sg::SmoothnessReport r = sg::analyse_valence(scheme, v, samples);
+    const sg::SmoothnessReport r = sg::analyse_quad_valence(scheme, v, samples);
     if (!r.ok()) ++failed;
     std::cout << sg::format_report(r);
   }
@@ -170,14 +170,14 @@ int run_verify(const std::vector<std::string>& files, const std::string& scheme_
       }
       continue;
     }
-    if (sg::table_format(text) == sg::kSurfaceTableFormat) {
+    if (sg::table_format(text) == sg::kQuadTableFormat) {
       const std::string name = nlohmann::json::parse(text).value("scheme", "");
       std::vector<std::string> overrides = params;
       if (overrides.empty())
         for (const auto& [k, v] : nlohmann::json::parse(text).at("parameters").items())
           overrides.push_back(k + "=" + v.get<std::string>());
       const sg::QuadScheme scheme = sg::load_quad_scheme(scheme_spec.empty() ? name : scheme_spec, overrides);
-      const auto failures = sg::verify_surface_json(text, file, scheme);
+      const auto failures = sg::verify_quad_table_json(text, file, scheme);
       if (failures.empty())
         std::cout << file << ": OK (" << scheme.name << " surface; every stencil equals the re-solved one exactly)\n";
       else
@@ -190,7 +190,7 @@ int run_verify(const std::vector<std::string>& files, const std::string& scheme_
     if (overrides.empty())
       for (const auto& [k, v] : table.parameters) overrides.push_back(k + "=" + sg::to_string(v));
     const sg::CurveScheme scheme = sg::load_curve_scheme(scheme_spec.empty() ? table.scheme : scheme_spec, overrides);
-    const auto failures = sg::verify_table(table, scheme);
+    const auto failures = sg::verify_curve_table(table, scheme);
     if (failures.empty()) {
       std::size_t values = 0;
       for (const auto& f : table.functions) values += f.values.size();
@@ -302,7 +302,7 @@ int main(int argc, char** argv) {
     }
     const std::string type = sg::scheme_type(scheme);
     if (type == "quad")
-      return run_generate_surface(scheme, rates, valences.empty() ? "3-8" : valences, out, params, precision, quiet);
+      return run_generate_quad(scheme, rates, valences.empty() ? "3-8" : valences, out, params, precision, quiet);
     if (type == "triangle")
       return run_generate_triangle(scheme, rates, valences.empty() ? "3-8" : valences, out, params, precision, quiet);
     if (!valences.empty()) throw sg::Error("--valence applies to surface schemes; '" + scheme + "' is a curve scheme");

@@ -3,7 +3,7 @@
 #include "common/hash.hpp"
 #include "common/parameters_json.hpp"
 #include "common/read_file.hpp"
-#include "curve/scheme_loader.hpp"
+#include "curve/curve_scheme_loader.hpp"
 
 namespace sg {
 namespace fs = std::filesystem;

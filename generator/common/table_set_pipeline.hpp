@@ -1,6 +1,6 @@
 #pragma once
 // Pieces shared by the quad and the triangle surface pipelines
-// (generate_surface, generate_triangle): the order in which the (valence,
+// (generate_quad, generate_triangle): the order in which the (valence,
 // rate) jobs run, and the parallel serialisation of the per-table JSON files.
 #include <algorithm>
 #include <string>

@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "algebra/rational.hpp"
-#include "curve/scheme.hpp"
+#include "curve/curve_scheme.hpp"
 
 namespace sg {
 

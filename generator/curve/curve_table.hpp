@@ -1,13 +1,13 @@
 #pragma once
 // One scheme at one rate n: the exact values of every scaling function on (1/n)Z,
 // with the identity of the scheme that produced them. Serialised as exact JSON
-// (table_json) and compact binary (table_binary); see docs/table-format.md.
+// (curve_table_json) and compact binary (curve_table_binary); see docs/table-format.md.
 #include <map>
 #include <string>
 #include <vector>
 
+#include "curve/curve_scheme.hpp"
 #include "curve/curve_solution.hpp"
-#include "curve/scheme.hpp"
 
 namespace sg {
 

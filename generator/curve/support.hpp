@@ -1,5 +1,5 @@
 #pragma once
-#include "curve/scheme.hpp"
+#include "curve/curve_scheme.hpp"
 
 namespace sg {
 

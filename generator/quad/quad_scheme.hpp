@@ -8,7 +8,7 @@
 #include <string>
 
 #include "algebra/rational.hpp"
-#include "curve/scheme.hpp"
+#include "curve/curve_scheme.hpp"
 
 namespace sg {
 

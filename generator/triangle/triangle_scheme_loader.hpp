@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "curve/scheme_loader.hpp"
+#include "curve/curve_scheme_loader.hpp"
 #include "triangle/triangle_scheme.hpp"
 
 namespace sg {

@@ -2,7 +2,7 @@
 #include <string>
 #include <vector>
 
-#include "quad/surface_table_binary.hpp"
+#include "quad/quad_table_binary.hpp"
 #include "triangle/triangle_table.hpp"
 
 namespace sg {

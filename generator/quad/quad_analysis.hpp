@@ -32,7 +32,7 @@ struct SmoothnessReport {
 void classify_spectrum(SmoothnessReport& r, std::vector<std::complex<double>> eigenvalues);
 
 // `samples`: the characteristic map is sampled on the grid (1/samples) of every sector.
-SmoothnessReport analyse_valence(const QuadScheme& scheme, int valence, long samples = 32);
+SmoothnessReport analyse_quad_valence(const QuadScheme& scheme, int valence, long samples = 32);
 
 std::string format_report(const SmoothnessReport& r);
 

@@ -4,16 +4,16 @@
 
 #include "curve/curve_solution.hpp"
 #include "quad/quad_scheme.hpp"
-#include "quad/surface_table.hpp"
+#include "quad/quad_table.hpp"
 
 namespace sg {
 
 // Everything `stencilgen --scheme Q --valence ... --n ...` produced.
-struct SurfaceTableSet {
+struct QuadTableSet {
   std::vector<long> rates;
   std::vector<CurveSolution> regular;             // per rate n: the curve on the grid 2n
   std::vector<int> valences;
-  std::vector<std::vector<SurfaceTable>> tables;  // [valence][rate]
+  std::vector<std::vector<QuadTable>> tables;  // [valence][rate]
 };
 
 enum class BinaryPrecision { Double = 8, Single = 4 };
@@ -26,6 +26,6 @@ std::pair<long, long> reduced_fraction(long p, long q);
 
 // One .sgs file: the scheme's subdivision rules (double), regular curve values and, per valence, the stencils of all
 // rates, each distinct parameter point stored once (docs/table-format.md).
-std::string surface_tables_to_binary(const QuadScheme& scheme, const SurfaceTableSet& set, BinaryPrecision precision);
+std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& set, BinaryPrecision precision);
 
 }  // namespace sg

@@ -1,4 +1,4 @@
-#include "quad/surface_table_binary.hpp"
+#include "quad/quad_table_binary.hpp"
 
 #include <map>
 #include <numeric>
@@ -22,7 +22,7 @@ std::pair<long, long> reduced_fraction(long p, long q) {
   return {p / g, q / g};
 }
 
-std::string surface_tables_to_binary(const QuadScheme& scheme, const SurfaceTableSet& set, BinaryPrecision precision) {
+std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& set, BinaryPrecision precision) {
   std::string out(fmt::kSurfaceMagic, sizeof fmt::kSurfaceMagic);
   put<std::uint32_t>(out, fmt::kSurfaceVersion);
   put<std::uint32_t>(out, static_cast<std::uint32_t>(precision));
@@ -74,14 +74,14 @@ std::string surface_tables_to_binary(const QuadScheme& scheme, const SurfaceTabl
     std::map<Key, std::uint32_t> slot;
     std::vector<const ScaledVector*> stencils;
     std::vector<std::vector<std::uint32_t>> node_index(tables.size()), centre_index(tables.size());
-    auto intern = [&](const SurfaceTable::Entry& e, long num_i, long num_j, long den) {
+    auto intern = [&](const QuadTable::Entry& e, long num_i, long num_j, long den) {
       const Key key{reduced_fraction(num_i, den), reduced_fraction(num_j, den)};
       auto [it, fresh] = slot.emplace(key, static_cast<std::uint32_t>(stencils.size()));
       if (fresh) stencils.push_back(&e.weights);
       return it->second;
     };
     for (std::size_t r = 0; r < tables.size(); ++r) {
-      const SurfaceTable& t = tables[r];
+      const QuadTable& t = tables[r];
       for (const auto& e : t.nodes) node_index[r].push_back(intern(e, e.i, e.j, t.n));
       for (const auto& e : t.centres) centre_index[r].push_back(intern(e, 2 * e.i + 1, 2 * e.j + 1, 2 * t.n));
     }

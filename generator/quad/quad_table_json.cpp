@@ -1,4 +1,4 @@
-#include "quad/surface_table_json.hpp"
+#include "quad/quad_table_json.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -19,7 +19,7 @@ ojson exact_entry_json(const ScaledVector& w, const Rational& x, const Rational&
 
 namespace {
 
-void append_entries(std::string& out, const char* key, const std::vector<SurfaceTable::Entry>& entries, long denom,
+void append_entries(std::string& out, const char* key, const std::vector<QuadTable::Entry>& entries, long denom,
                     long offset, bool last) {
   out += std::string(" \"") + key + "\": [\n";
   for (std::size_t k = 0; k < entries.size(); ++k) {
@@ -32,10 +32,10 @@ void append_entries(std::string& out, const char* key, const std::vector<Surface
 
 }  // namespace
 
-std::string surface_table_to_json(const SurfaceTable& t) {
+std::string quad_table_to_json(const QuadTable& t) {
   ojson head;
-  head["format"] = kSurfaceTableFormat;
-  head["version"] = kSurfaceTableVersion;
+  head["format"] = kQuadTableFormat;
+  head["version"] = kQuadTableVersion;
   head["scheme"] = t.scheme;
   head["scheme_hash"] = t.scheme_hash;
   head["parameters"] = parameters_json<ojson>(t.parameters);
@@ -95,14 +95,14 @@ std::string table_format(const std::string& text) {
   }
 }
 
-std::vector<std::string> verify_surface_json(const std::string& text, const std::string& origin,
+std::vector<std::string> verify_quad_table_json(const std::string& text, const std::string& origin,
                                              const QuadScheme& scheme) {
   std::vector<std::string> failures;
   ojson doc;
   try {
     doc = ojson::parse(text);
-    if (doc.at("format") != kSurfaceTableFormat || doc.at("version") != kSurfaceTableVersion)
-      throw Error("not a version " + std::to_string(kSurfaceTableVersion) + " surface table");
+    if (doc.at("format") != kQuadTableFormat || doc.at("version") != kQuadTableVersion)
+      throw Error("not a version " + std::to_string(kQuadTableVersion) + " surface table");
     if (doc.at("scheme_hash") != hex64(scheme.hash))
       failures.push_back("scheme hash " + doc.at("scheme_hash").get<std::string>() + " is not that of '" +
                          scheme.name + "' (" + hex64(scheme.hash) + ")");

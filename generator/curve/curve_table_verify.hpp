@@ -11,6 +11,6 @@ namespace sg {
 // and around each support, partition of unity at every residue and near the
 // special point, and the mirror symmetry of a symmetric uniform mask.
 // Returns one line per failure; empty means the table is correct.
-std::vector<std::string> verify_table(const CurveTable& table, const CurveScheme& scheme);
+std::vector<std::string> verify_curve_table(const CurveTable& table, const CurveScheme& scheme);
 
 }  // namespace sg

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "curve/scheme.hpp"
+#include "curve/curve_scheme.hpp"
 
 namespace sg {
 

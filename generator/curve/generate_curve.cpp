@@ -1,15 +1,15 @@
-#include "curve/generate.hpp"
+#include "curve/generate_curve.hpp"
 
 #include <mutex>
 #include <tbb/parallel_for.h>
 
 #include "base/error.hpp"
 #include "common/atomic_output.hpp"
+#include "curve/curve_table_binary.hpp"
+#include "curve/curve_table_json.hpp"
+#include "curve/curve_table_verify.hpp"
 #include "curve/eigen_solver.hpp"
 #include "curve/residue_solver.hpp"
-#include "curve/table_binary.hpp"
-#include "curve/table_json.hpp"
-#include "curve/verify.hpp"
 
 namespace sg {
 
@@ -28,7 +28,7 @@ std::vector<CurveTable> generate_curve_tables(const CurveScheme& scheme, const s
       throw Error("scheme '" + scheme.name + "', n = " + std::to_string(n) +
                   ": the residue-class route and the eigenvector route disagree (a generator bug; please report)");
     tables[i] = make_table(scheme, sol);
-    const auto failures = verify_table(tables[i], scheme);
+    const auto failures = verify_curve_table(tables[i], scheme);
     if (!failures.empty())
       throw Error("scheme '" + scheme.name + "', n = " + std::to_string(n) + ": verification failed: " + failures.front());
     if (progress) {

@@ -1,4 +1,4 @@
-#include "curve/table_binary.hpp"
+#include "curve/curve_table_binary.hpp"
 
 #include "common/byte_writer.hpp"
 #include "stencil_runtime/binary_format.hpp"

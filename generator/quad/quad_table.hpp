@@ -3,9 +3,9 @@
 // extraordinary patch at the grid nodes (i/n, j/n) and the cell centres
 // ((2i+1)/(2n), (2j+1)/(2n)) that the watertight tessellation samples. Only
 // i <= j is stored; the reflection (x,y) -> (y,x) gives the rest (see
-// PatchLayout::reflection). Serialised as exact JSON (surface_table_json) and,
+// PatchLayout::reflection). Serialised as exact JSON (quad_table_json) and,
 // all valences and rates of a scheme together, as compact binary
-// (surface_table_binary); see docs/table-format.md.
+// (quad_table_binary); see docs/table-format.md.
 #include <map>
 #include <string>
 #include <vector>
@@ -16,7 +16,7 @@
 
 namespace sg {
 
-struct SurfaceTable {
+struct QuadTable {
   struct Entry {
     long i = 0, j = 0;  // i <= j
     ScaledVector weights;
@@ -41,11 +41,11 @@ struct SurfaceTable {
 };
 
 // `patch` must be solved on the grid 2n.
-SurfaceTable make_surface_table(const QuadScheme& scheme, const PatchGrid& patch);
+QuadTable make_quad_table(const QuadScheme& scheme, const PatchGrid& patch);
 
 // Exact re-checks of a table: partition of unity at every stored point and
 // agreement of the reflection with the stored half at the diagonal. Returns
 // failure descriptions (empty when all hold).
-std::vector<std::string> check_surface_table(const SurfaceTable& table);
+std::vector<std::string> check_quad_table(const QuadTable& table);
 
 }  // namespace sg

@@ -11,8 +11,8 @@
 #include "quad/direct_patch_solver.hpp"
 #include "quad/ev_patch_solver.hpp"
 #include "quad/patch_layout.hpp"
+#include "quad/quad_analysis.hpp"
 #include "quad/quad_scheme_loader.hpp"
-#include "quad/smoothness_analysis.hpp"
 #include "stencil_runtime/surface_table.hpp"
 
 using independent::Q;
@@ -100,7 +100,7 @@ TEST_CASE("the shipped extraordinary rules pass the smoothness analysis at valen
   for (const char* name : {"nonpoly", "catmull-clark"}) {
     const sg::QuadScheme s = sg::load_quad_scheme(name);
     for (int v = 3; v <= 16; ++v) {
-      const sg::SmoothnessReport r = sg::analyse_valence(s, v, 16);
+      const sg::SmoothnessReport r = sg::analyse_quad_valence(s, v, 16);
       INFO(sg::format_report(r));
       REQUIRE(r.ok());
       REQUIRE(r.eigenvalues.size() == static_cast<std::size_t>(6 * v + 1));
@@ -108,13 +108,13 @@ TEST_CASE("the shipped extraordinary rules pass the smoothness analysis at valen
   }
   // Known Catmull-Clark subdominant eigenvalues (Reif; Peters-Reif): valence 3 and 5.
   const sg::QuadScheme cc = sg::load_quad_scheme("catmull-clark");
-  REQUIRE(sg::analyse_valence(cc, 3, 4).subdominant == Approx(0.410097).margin(1e-6));
-  REQUIRE(sg::analyse_valence(cc, 5, 4).subdominant == Approx(0.549988).margin(1e-6));
+  REQUIRE(sg::analyse_quad_valence(cc, 3, 4).subdominant == Approx(0.410097).margin(1e-6));
+  REQUIRE(sg::analyse_quad_valence(cc, 5, 4).subdominant == Approx(0.549988).margin(1e-6));
   // nonpoly: the first Fourier block has trace 7/12 + cos(2 pi/v)/6 and determinant 1/24.
   const sg::QuadScheme np = sg::load_quad_scheme("nonpoly");
   for (int v = 3; v <= 16; ++v) {
     const double t = 7.0 / 12 + std::cos(2 * M_PI / v) / 6;
-    REQUIRE(sg::analyse_valence(np, v, 4).subdominant == Approx((t + std::sqrt(t * t - 1.0 / 6)) / 2).margin(1e-9));
+    REQUIRE(sg::analyse_quad_valence(np, v, 4).subdominant == Approx((t + std::sqrt(t * t - 1.0 / 6)) / 2).margin(1e-9));
   }
 }
 

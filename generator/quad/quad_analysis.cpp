@@ -1,4 +1,4 @@
-#include "quad/smoothness_analysis.hpp"
+#include "quad/quad_analysis.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -77,7 +77,7 @@ void classify_spectrum(SmoothnessReport& r, std::vector<std::complex<double>> ei
   r.subdominant_dominates = r.subdominant_real_double && std::abs(e[1]) > r.next_modulus + kTol;
 }
 
-SmoothnessReport analyse_valence(const QuadScheme& scheme, int v, long samples) {
+SmoothnessReport analyse_quad_valence(const QuadScheme& scheme, int v, long samples) {
   SmoothnessReport r;
   r.valence = v;
   const TwoRing ring(v);

@@ -1,4 +1,4 @@
-#include "curve/table_json.hpp"
+#include "curve/curve_table_json.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,4 +1,4 @@
-#include "curve/verify.hpp"
+#include "curve/curve_table_verify.hpp"
 
 #include "base/error.hpp"
 #include "common/hash.hpp"
@@ -6,7 +6,7 @@
 
 namespace sg {
 
-std::vector<std::string> verify_table(const CurveTable& table, const CurveScheme& scheme) {
+std::vector<std::string> verify_curve_table(const CurveTable& table, const CurveScheme& scheme) {
   std::vector<std::string> failures;
   if (table.scheme != scheme.name) failures.push_back("table is for scheme '" + table.scheme + "', not '" + scheme.name + "'");
   if (table.scheme_hash != hex64(scheme.hash))

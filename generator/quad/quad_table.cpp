@@ -1,4 +1,4 @@
-#include "quad/surface_table.hpp"
+#include "quad/quad_table.hpp"
 
 #include "base/error.hpp"
 #include "common/hash.hpp"
@@ -6,9 +6,9 @@
 
 namespace sg {
 
-SurfaceTable make_surface_table(const QuadScheme& scheme, const PatchGrid& patch) {
+QuadTable make_quad_table(const QuadScheme& scheme, const PatchGrid& patch) {
   if (patch.grid % 2 != 0) throw Error("internal: surface tables need the patch solved on the grid 2n");
-  SurfaceTable t;
+  QuadTable t;
   t.scheme = scheme.name;
   t.scheme_hash = hex64(scheme.hash);
   t.parameters = scheme.parameters;
@@ -35,9 +35,9 @@ SurfaceTable make_surface_table(const QuadScheme& scheme, const PatchGrid& patch
   return t;
 }
 
-std::vector<std::string> check_surface_table(const SurfaceTable& t) {
+std::vector<std::string> check_quad_table(const QuadTable& t) {
   std::vector<std::string> failures;
-  auto check = [&](const SurfaceTable::Entry& e, const char* kind) {
+  auto check = [&](const QuadTable::Entry& e, const char* kind) {
     Integer sum = 0;
     for (const auto& x : e.weights.num) sum += x;
     if (e.weights.num.size() != t.points || sum != e.weights.den)

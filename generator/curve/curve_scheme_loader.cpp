@@ -1,4 +1,4 @@
-#include "curve/scheme_loader.hpp"
+#include "curve/curve_scheme_loader.hpp"
 
 #include <algorithm>
 #include <cstdlib>
