@@ -13,9 +13,9 @@
 #include <thread>
 #include <vector>
 
-#include "eigen_solver.hpp"
-#include "residue_solver.hpp"
-#include "scheme_loader.hpp"
+#include "curve/curve_scheme_loader.hpp"
+#include "curve/eigen_solver.hpp"
+#include "curve/residue_solver.hpp"
 
 namespace {
 using Clock = std::chrono::steady_clock;

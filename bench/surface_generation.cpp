@@ -11,9 +11,9 @@
 #include <thread>
 #include <vector>
 
-#include "generate_surface.hpp"
-#include "quad_scheme_loader.hpp"
-#include "surface_table_json.hpp"
+#include "quad/generate_quad.hpp"
+#include "quad/quad_scheme_loader.hpp"
+#include "quad/quad_table_json.hpp"
 
 namespace {
 using Clock = std::chrono::steady_clock;
@@ -28,16 +28,16 @@ Measured run(const sg::QuadScheme& s, const std::vector<int>& valences, long n_m
   std::vector<long> rates;
   for (long n = 1; n <= n_max; ++n) rates.push_back(n);
   const auto t0 = Clock::now();
-  const sg::SurfaceTableSet set = sg::generate_surface_tables(s, valences, rates);
-  std::vector<const sg::SurfaceTable*> all;
+  const sg::QuadTableSet set = sg::generate_quad_tables(s, valences, rates);
+  std::vector<const sg::QuadTable*> all;
   for (const auto& by_rate : set.tables)
     for (const auto& t : by_rate) all.push_back(&t);
   std::vector<std::size_t> json_sizes(all.size());
-  tbb::parallel_for(std::size_t(0), all.size(), [&](std::size_t k) { json_sizes[k] = sg::surface_table_to_json(*all[k]).size(); });
+  tbb::parallel_for(std::size_t(0), all.size(), [&](std::size_t k) { json_sizes[k] = sg::quad_table_to_json(*all[k]).size(); });
   Measured m;
-  m.binary_double = sg::surface_tables_to_binary(s, set, sg::BinaryPrecision::Double).size();
+  m.binary_double = sg::quad_tables_to_binary(s, set, sg::BinaryPrecision::Double).size();
   m.seconds = seconds_since(t0);
-  m.binary_single = sg::surface_tables_to_binary(s, set, sg::BinaryPrecision::Single).size();
+  m.binary_single = sg::quad_tables_to_binary(s, set, sg::BinaryPrecision::Single).size();
   for (std::size_t b : json_sizes) m.json += b;
   return m;
 }

@@ -11,8 +11,8 @@
 #include <thread>
 #include <vector>
 
-#include "generate_triangle.hpp"
-#include "triangle_scheme_loader.hpp"
+#include "triangle/generate_triangle.hpp"
+#include "triangle/triangle_scheme_loader.hpp"
 
 namespace {
 using Clock = std::chrono::steady_clock;

@@ -6,7 +6,7 @@
 #include <map>
 #include <vector>
 
-#include "sector_chart.hpp"
+#include "triangle/sector_chart.hpp"
 
 // v triangular sectors of side K around the EV. Sector s holds (a, b),
 // 0 <= b <= a <= K, with (a, 0) on the ray of e_s and (a, a) on the ray of

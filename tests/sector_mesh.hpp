@@ -25,7 +25,7 @@
 #include <utility>
 #include <vector>
 
-#include "patch_layout.hpp"
+#include "quad/patch_layout.hpp"
 
 namespace sector_mesh {
 

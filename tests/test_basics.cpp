@@ -1,10 +1,10 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "error.hpp"
-#include "expression.hpp"
-#include "rate_spec.hpp"
-#include "rational.hpp"
+#include "algebra/expression.hpp"
+#include "algebra/rational.hpp"
+#include "base/error.hpp"
+#include "common/rate_spec.hpp"
 
 using sg::Rational;
 

@@ -4,8 +4,8 @@
 #include <catch2/catch.hpp>
 #include <map>
 
-#include "bivariate_solver.hpp"
-#include "triangle_masks.hpp"
+#include "triangle/bivariate_solver.hpp"
+#include "triangle/triangle_masks.hpp"
 
 using sg::Rational;
 using Field = std::map<sg::LatticeIndex, Rational>;
@@ -119,8 +119,8 @@ TEST_CASE("at n = 2^j (Loop) and 3^j (sqrt(3)) values equal subdivision of a del
   }
 }
 
-#include "error.hpp"
-#include "expression.hpp"
+#include "algebra/expression.hpp"
+#include "base/error.hpp"
 
 TEST_CASE("cos2pi is exact where it is rational and refused where it is not", "[triangle]") {
   const sg::Bindings v6{{"v", Rational(6)}}, v3{{"v", Rational(3)}}, v5{{"v", Rational(5)}};

@@ -1,9 +1,9 @@
 // Uniform B-spline tables against an independent Cox-de Boor evaluation.
 #include <catch2/catch.hpp>
 
+#include "curve/curve_scheme_loader.hpp"
+#include "curve/residue_solver.hpp"
 #include "independent.hpp"
-#include "residue_solver.hpp"
-#include "scheme_loader.hpp"
 
 using independent::Q;
 

@@ -4,10 +4,10 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "eigen_solver.hpp"
+#include "curve/curve_scheme_loader.hpp"
+#include "curve/eigen_solver.hpp"
+#include "curve/residue_solver.hpp"
 #include "independent.hpp"
-#include "residue_solver.hpp"
-#include "scheme_loader.hpp"
 
 using independent::Q;
 

@@ -40,9 +40,9 @@
 #include <vector>
 
 #include "bfr_reference.hpp"
-#include "ev_patch_solver.hpp"
-#include "patch_layout.hpp"
-#include "quad_scheme_loader.hpp"
+#include "quad/ev_patch_solver.hpp"
+#include "quad/patch_layout.hpp"
+#include "quad/quad_scheme_loader.hpp"
 #include "sector_mesh.hpp"
 
 namespace {

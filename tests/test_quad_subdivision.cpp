@@ -36,10 +36,10 @@
 #include <utility>
 #include <vector>
 
-#include "ev_patch_solver.hpp"
-#include "patch_layout.hpp"
-#include "quad_scheme_loader.hpp"
-#include "rational.hpp"
+#include "algebra/rational.hpp"
+#include "quad/ev_patch_solver.hpp"
+#include "quad/patch_layout.hpp"
+#include "quad/quad_scheme_loader.hpp"
 #include "sector_mesh.hpp"
 
 namespace {

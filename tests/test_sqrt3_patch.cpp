@@ -14,8 +14,8 @@
 #include <tuple>
 
 #include "fan_mesh.hpp"
-#include "triangle_patch.hpp"
-#include "triangle_scheme_loader.hpp"
+#include "triangle/triangle_patch.hpp"
+#include "triangle/triangle_scheme_loader.hpp"
 
 namespace {
 

@@ -2,9 +2,9 @@
 // (interpolatory schemes), or j steps followed by the limit stencil (approximating).
 #include <catch2/catch.hpp>
 
+#include "curve/curve_scheme_loader.hpp"
+#include "curve/residue_solver.hpp"
 #include "independent.hpp"
-#include "residue_solver.hpp"
-#include "scheme_loader.hpp"
 
 using independent::Q;
 

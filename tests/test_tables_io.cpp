@@ -5,12 +5,12 @@
 #include <unistd.h>
 
 #include "cli.hpp"
-#include "curve_table.hpp"
-#include "residue_solver.hpp"
-#include "scheme_loader.hpp"
+#include "curve/curve_scheme_loader.hpp"
+#include "curve/curve_table.hpp"
+#include "curve/curve_table_binary.hpp"
+#include "curve/curve_table_json.hpp"
+#include "curve/residue_solver.hpp"
 #include "stencil_runtime/curve_table.hpp"
-#include "table_binary.hpp"
-#include "table_json.hpp"
 
 namespace fs = std::filesystem;
 

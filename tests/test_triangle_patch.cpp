@@ -12,10 +12,10 @@
 #include <map>
 #include <random>
 
-#include "error.hpp"
-#include "triangle_patch.hpp"
-#include "triangle_scheme_loader.hpp"
+#include "base/error.hpp"
 #include "fan_mesh.hpp"
+#include "triangle/triangle_patch.hpp"
+#include "triangle/triangle_scheme_loader.hpp"
 
 namespace {
 

@@ -10,10 +10,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "algebra/rational.hpp"
 #include "cli.hpp"
-#include "rational.hpp"
-#include "triangle_analysis.hpp"
-#include "triangle_scheme_loader.hpp"
+#include "triangle/triangle_analysis.hpp"
+#include "triangle/triangle_scheme_loader.hpp"
 
 using nlohmann::json;
 using sg::Rational;

@@ -1,0 +1,71 @@
+#include "algebra/rational.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <limits>
+
+#include "base/error.hpp"
+
+namespace sg {
+
+namespace {
+bool all_digits(std::string_view s) {
+  if (s.empty()) return false;
+  for (char c : s)
+    if (!std::isdigit(static_cast<unsigned char>(c))) return false;
+  return true;
+}
+}  // namespace
+
+Rational parse_rational(std::string_view text) {
+  std::string_view body = text;
+  bool negative = false;
+  if (!body.empty() && (body.front() == '-' || body.front() == '+')) {
+    negative = body.front() == '-';
+    body.remove_prefix(1);
+  }
+  const auto slash = body.find('/');
+  const std::string_view num = body.substr(0, slash);
+  const std::string_view den = slash == std::string_view::npos ? std::string_view("1") : body.substr(slash + 1);
+  if (!all_digits(num) || !all_digits(den))
+    throw Error("'" + std::string(text) + "' is not an exact rational (expected p or p/q with integers p, q)");
+  const Integer n{std::string(num)}, d{std::string(den)};
+  if (d == 0) throw Error("'" + std::string(text) + "' has a zero denominator");
+  Rational r(n, d);
+  return negative ? Rational(-r) : r;
+}
+
+std::string to_string(const Rational& value) {
+  if (denominator(value) == 1) return numerator(value).str();
+  return numerator(value).str() + "/" + denominator(value).str();
+}
+
+long floor_to_long(const Rational& value) {
+  Integer q = numerator(value) / denominator(value);  // truncates toward zero
+  if (value < 0 && q * denominator(value) != numerator(value)) q -= 1;
+  if (q > std::numeric_limits<long>::max() || q < std::numeric_limits<long>::min())
+    throw Error("integer part of " + to_string(value) + " is too large");
+  return q.convert_to<long>();
+}
+
+long ceil_to_long(const Rational& value) { return -floor_to_long(-value); }
+
+double to_double(const Rational& value) {
+  // Round-to-nearest-even by hand: mpz's own conversion truncates.
+  if (value == 0) return 0.0;
+  Integer n = abs(numerator(value)), d = denominator(value);
+  // Scale so that the integer quotient has at least 64 bits.
+  const long shift = static_cast<long>(msb(n)) - static_cast<long>(msb(d)) - 66;
+  if (shift > 0) d <<= shift; else n <<= -shift;
+  Integer q, rem;
+  divide_qr(n, d, q, rem);
+  const long drop = static_cast<long>(msb(q)) - 52;  // bits below the 53 we keep
+  Integer keep = q >> drop;
+  const Integer rest = q - (keep << drop);
+  const Integer half = Integer(1) << (drop - 1);
+  if (rest > half || (rest == half && (rem != 0 || (keep & 1) != 0))) keep += 1;
+  const double result = std::ldexp(keep.convert_to<double>(), static_cast<int>(shift + drop));
+  return value < 0 ? -result : result;
+}
+
+}  // namespace sg

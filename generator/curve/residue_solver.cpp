@@ -1,0 +1,305 @@
+#include "curve/residue_solver.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "algebra/exact_linear_system.hpp"
+#include "algebra/integer_division.hpp"
+#include "base/error.hpp"
+#include "curve/partition_of_unity.hpp"
+
+namespace sg {
+namespace {
+
+// Unknowns of one residue class r: values phi_h(j + r/n) for invariant types h.
+struct ResidueLayout {
+  struct Block { std::size_t type; long jmin, jmax; std::size_t base; };
+  std::vector<Block> blocks;
+  std::size_t size = 0;
+  long slot(std::size_t type, long j) const {
+    for (const Block& b : blocks)
+      if (b.type == type) return (j >= b.jmin && j <= b.jmax) ? static_cast<long>(b.base + (j - b.jmin)) : -1;
+    return -1;
+  }
+};
+
+// Integer transfer matrix: D * (v_r in terms of v_{a r mod n}), as sparse rows.
+using SparseRow = std::vector<std::pair<std::size_t, Integer>>;
+using DenseMatrix = std::vector<std::vector<Integer>>;
+
+class InvariantPart {
+ public:
+  InvariantPart(const CurveScheme& s, long n, CurveSolution& sol) : s_(s), n_(n), a_(s.arity), sol_(sol) {
+    for (std::size_t h = 0; h < s.types.size(); ++h)
+      if (s.types[h].translation_invariant()) inv_.push_back(h);
+    for (std::size_t h : inv_)
+      for (const Term& t : s.types[h].terms) {
+        if (!s.types[t.type].translation_invariant())
+          throw Error(s.source + ": uniform type '" + s.types[h].name + "' refers to special type '" +
+                      s.types[t.type].name + "'");
+        scale_ = lcm(scale_, denominator(t.coeff));
+      }
+    layouts_.resize(n);
+    for (long r = 0; r < n; ++r) {
+      ResidueLayout& L = layouts_[r];
+      for (std::size_t h : inv_) {
+        const GridRange& g = sol.types[h].range;
+        const long jmin = ceil_div(g.first - r, n), jmax = floor_div(g.last - r, n);
+        if (jmax < jmin) continue;
+        L.blocks.push_back({h, jmin, jmax, L.size});
+        L.size += static_cast<std::size_t>(jmax - jmin + 1);
+      }
+    }
+    transfer_.resize(n);
+    for (long r = 0; r < n; ++r) transfer_[r] = build_transfer(r);
+  }
+
+  void solve() {
+    const long n = n_;
+    std::vector<int> color(n, 0);  // 0 new, 1 on stack, 2 done
+    std::vector<char> solved(n, 0);
+    values_.resize(n);
+    // Cycles of r -> a r mod n.
+    for (long start = 0; start < n; ++start) {
+      std::vector<long> path;
+      long r = start;
+      while (color[r] == 0) {
+        color[r] = 1;
+        path.push_back(r);
+        r = next(r);
+      }
+      if (color[r] == 1) {
+        const auto it = std::find(path.begin(), path.end(), r);
+        std::vector<long> cycle(it, path.end());
+        std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end()), cycle.end());
+        solve_cycle(cycle);
+        for (long c : cycle) solved[c] = 1;
+      }
+      for (long p : path) color[p] = 2;
+    }
+    // Trees: substitute toward the cycles.
+    for (long start = 0; start < n; ++start) {
+      std::vector<long> chain;
+      for (long r = start; !solved[r]; r = next(r)) chain.push_back(r);
+      for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+        values_[*it] = apply(*it, values_[next(*it)]);
+        solved[*it] = 1;
+      }
+    }
+    for (long r = 0; r < n; ++r)
+      for (const auto& b : layouts_[r].blocks)
+        for (long j = b.jmin; j <= b.jmax; ++j) {
+          TypeValues& tv = sol_.types[b.type];
+          tv.values[j * n + r - tv.range.first] = values_[r][b.base + (j - b.jmin)];
+        }
+  }
+
+ private:
+  long next(long r) const { return pos_mod(a_ * r, n_); }
+
+  std::vector<SparseRow> build_transfer(long r) const {
+    const ResidueLayout& from = layouts_[r];
+    const ResidueLayout& to = layouts_[next(r)];
+    const long q = floor_div(a_ * r, n_);
+    std::vector<SparseRow> rows(from.size);
+    for (const auto& b : from.blocks)
+      for (long j = b.jmin; j <= b.jmax; ++j) {
+        SparseRow& row = rows[b.base + (j - b.jmin)];
+        for (const Term& t : s_.types[b.type].terms) {
+          const long slot = to.slot(t.type, a_ * j - t.shift + q);
+          if (slot < 0) continue;  // outside the support: zero
+          row.emplace_back(static_cast<std::size_t>(slot), Integer(numerator(t.coeff) * (scale_ / denominator(t.coeff))));
+        }
+      }
+    return rows;
+  }
+
+  std::vector<Rational> apply(long r, const std::vector<Rational>& v) const {
+    std::vector<Rational> out(layouts_[r].size, 0);
+    for (std::size_t i = 0; i < out.size(); ++i)
+      for (const auto& [c, x] : transfer_[r][i]) out[i] += Rational(x) * v[c];
+    for (auto& x : out) x /= Rational(scale_);
+    return out;
+  }
+
+  // Row vector of the partition-of-unity functional of `group` at residue r.
+  std::vector<Integer> pou_row(long r, const std::vector<std::size_t>& group) const {
+    std::vector<Integer> row(layouts_[r].size, 0);
+    for (const auto& b : layouts_[r].blocks)
+      if (std::find(group.begin(), group.end(), b.type) != group.end())
+        for (long j = b.jmin; j <= b.jmax; ++j) row[b.base + (j - b.jmin)] = 1;
+    return row;
+  }
+  std::vector<Integer> row_times(const std::vector<Integer>& w, long r) const {
+    std::vector<Integer> out(layouts_[next(r)].size, 0);
+    for (std::size_t i = 0; i < w.size(); ++i)
+      if (w[i] != 0)
+        for (const auto& [c, x] : transfer_[r][i]) out[c] += w[i] * x;
+    return out;
+  }
+
+  void solve_cycle(const std::vector<long>& cycle) {
+    const long r0 = cycle.front();
+    const std::size_t m = layouts_[r0].size;
+    const std::size_t L = cycle.size();
+    // M = T_{r0} T_{r1} ... T_{r_{L-1}}, each scaled by D: M = D^L * P, built right to left.
+    DenseMatrix M(m, std::vector<Integer>(m, 0));
+    for (std::size_t i = 0; i < m; ++i) M[i][i] = 1;
+    for (std::size_t step = L; step-- > 0;) {
+      const long r = cycle[step];
+      DenseMatrix next_m(layouts_[r].size, std::vector<Integer>(m, 0));
+      for (std::size_t i = 0; i < next_m.size(); ++i)
+        for (const auto& [c, x] : transfer_[r][i])
+          for (std::size_t k = 0; k < m; ++k)
+            if (M[c][k] != 0) next_m[i][k] += x * M[c][k];
+      M.swap(next_m);
+    }
+    Integer DL = 1;
+    for (std::size_t i = 0; i < L; ++i) DL *= scale_;
+
+    const auto groups = pou_groups(s_, inv_);
+    auto attempt = [&](bool all_residues) {
+      ExactLinearSystem sys(m);
+      for (std::size_t i = 0; i < m; ++i) {
+        std::vector<std::pair<std::size_t, Rational>> eq;
+        for (std::size_t k = 0; k < m; ++k) {
+          Integer v = M[i][k] - (i == k ? DL : Integer(0));
+          if (v != 0) eq.emplace_back(k, Rational(v));
+        }
+        sys.add_equation(eq, 0);
+      }
+      for (const auto& g : groups) {
+        for (std::size_t step = 0; step < (all_residues ? L : 1); ++step) {
+          // PoU at cycle[step], pulled back to r0 through T_{r_step} ... T_{r_{L-1}}.
+          std::vector<Integer> w = pou_row(cycle[step], g);
+          Integer rhs = 1;
+          for (std::size_t t = step; t < L && step > 0; ++t) {
+            w = row_times(w, cycle[t]);
+            rhs *= scale_;
+          }
+          std::vector<std::pair<std::size_t, Rational>> eq;
+          for (std::size_t k = 0; k < m; ++k)
+            if (w[k] != 0) eq.emplace_back(k, Rational(w[k]));
+          sys.add_equation(eq, Rational(rhs));
+        }
+      }
+      return sys.solve();
+    };
+    LinearSolution result = attempt(false);
+    if (result.status == LinearSolution::Status::Underdetermined && L > 1) result = attempt(true);
+    if (result.status != LinearSolution::Status::Unique) {
+      std::string where;
+      for (long c : cycle) where += (where.empty() ? "" : ", ") + std::to_string(c) + "/" + std::to_string(n_);
+      throw Error("scheme '" + s_.name + "', n = " + std::to_string(n_) +
+                  ": the scaling relations with partition of unity on the residue cycle {" + where + "} have " +
+                  result.describe() + (m == 0 ? " (the support holds no grid point)" : ""));
+    }
+    values_[r0] = result.values;
+    for (std::size_t step = L; step-- > 1;) values_[cycle[step]] = apply(cycle[step], values_[next(cycle[step])]);
+  }
+
+  const CurveScheme& s_;
+  long n_, a_;
+  CurveSolution& sol_;
+  std::vector<std::size_t> inv_;
+  Integer scale_ = 1;
+  std::vector<ResidueLayout> layouts_;
+  std::vector<std::vector<SparseRow>> transfer_;
+  std::vector<std::vector<Rational>> values_;
+};
+
+// Special (single-column) types in global coordinates X = K/n: W_h(K) = phi_h(K/n - p_h).
+void solve_special_types(const CurveScheme& s, long n, CurveSolution& sol) {
+  const long a = s.arity;
+  std::vector<std::size_t> special;
+  for (std::size_t h = 0; h < s.types.size(); ++h)
+    if (!s.types[h].translation_invariant()) special.push_back(h);
+  if (special.empty()) return;
+  auto global_value = [&](std::size_t h, long K) -> Rational {
+    return sol.types[h].at(K - n * s.types[h].position);
+  };
+  auto set_global_value = [&](std::size_t h, long K, const Rational& v) {
+    TypeValues& tv = sol.types[h];
+    tv.values[K - n * s.types[h].position - tv.range.first] = v;
+  };
+  // Right side of the relation of special h at X = K/n, split into special unknowns at aK and known values.
+  auto relation = [&](std::size_t h, long K, std::vector<std::pair<std::size_t, Rational>>& unknown_terms) {
+    const ScalingType& t = s.types[h];
+    Rational known = 0;
+    for (const Term& term : t.terms) {
+      const ScalingType& g = s.types[term.type];
+      if (g.translation_invariant()) {
+        known += term.coeff * sol.types[term.type].at(a * K - n * (a * t.position + term.shift));
+      } else {
+        if (term.shift != g.position - a * t.position)
+          throw Error(s.source + ": special column " + t.name + " is not stationary around 0");
+        unknown_terms.emplace_back(term.type, term.coeff);
+      }
+    }
+    return known;
+  };
+  long kmax = 0;
+  for (std::size_t h : special) {
+    const GridRange& g = sol.types[h].range;
+    const long p = s.types[h].position;
+    kmax = std::max({kmax, std::labs(g.first + n * p), std::labs(g.last + n * p)});
+  }
+  // Orbits K -> aK grow in modulus, so descending |K| meets every dependency first.
+  for (long mag = kmax; mag >= 1; --mag)
+    for (long K : {mag, -mag})
+      for (std::size_t h : special) {
+        const TypeValues& tv = sol.types[h];
+        if (!tv.range.contains(K - n * s.types[h].position)) continue;
+        std::vector<std::pair<std::size_t, Rational>> terms;
+        Rational v = relation(h, K, terms);
+        for (const auto& [g, c] : terms) v += c * global_value(g, a * K);
+        set_global_value(h, K, v);
+      }
+  // K = 0: W(0) = A W(0) + b with partition of unity.
+  std::vector<std::size_t> at_zero;
+  for (std::size_t h : special)
+    if (sol.types[h].range.contains(-n * s.types[h].position)) at_zero.push_back(h);
+  if (at_zero.empty()) return;
+  auto index_of = [&](std::size_t h) {
+    return static_cast<std::size_t>(std::find(at_zero.begin(), at_zero.end(), h) - at_zero.begin());
+  };
+  ExactLinearSystem sys(at_zero.size());
+  for (std::size_t h : at_zero) {
+    std::vector<std::pair<std::size_t, Rational>> terms, eq{{index_of(h), Rational(1)}};
+    const Rational known = relation(h, 0, terms);
+    for (const auto& [g, c] : terms)
+      if (index_of(g) < at_zero.size()) eq.emplace_back(index_of(g), -c);
+    sys.add_equation(eq, known);
+  }
+  std::vector<std::pair<std::size_t, Rational>> pou;
+  for (std::size_t h : at_zero) pou.emplace_back(index_of(h), 1);
+  sys.add_equation(pou, 1 - invariant_sum_at(s, sol, 0));
+  const LinearSolution result = sys.solve();
+  if (result.status != LinearSolution::Status::Unique)
+    throw Error("scheme '" + s.name + "', n = " + std::to_string(n) +
+                ": the scaling relations of the special columns at x = 0 with partition of unity have " +
+                result.describe());
+  for (std::size_t h : at_zero) set_global_value(h, 0, result.values[index_of(h)]);
+}
+
+}  // namespace
+
+CurveSolution solve_by_residues(const CurveScheme& s, long n) {
+  if (n < 1) throw Error("rate n must be at least 1, got " + std::to_string(n));
+  CurveSolution sol;
+  sol.n = n;
+  for (const ScalingType& t : s.types) {
+    TypeValues tv;
+    tv.range = open_support_grid(t, n);
+    tv.values.assign(static_cast<std::size_t>(std::max(0L, tv.range.size())), Rational(0));
+    sol.types.push_back(std::move(tv));
+  }
+  InvariantPart(s, n, sol).solve();
+  solve_special_types(s, n, sol);
+  if (const auto failure = check_partition_of_unity(s, sol))
+    throw Error("scheme '" + s.name + "', n = " + std::to_string(n) + ": " + *failure +
+                "; the scaling relations have no solution with partition of unity");
+  return sol;
+}
+
+}  // namespace sg

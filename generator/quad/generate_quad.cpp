@@ -1,0 +1,67 @@
+#include "quad/generate_quad.hpp"
+
+#include <algorithm>
+#include <mutex>
+#include <tbb/parallel_for.h>
+
+#include "base/error.hpp"
+#include "common/atomic_output.hpp"
+#include "common/table_set_pipeline.hpp"
+#include "curve/curve_table.hpp"
+#include "curve/curve_table_json.hpp"
+#include "curve/residue_solver.hpp"
+#include "quad/ev_patch_solver.hpp"
+#include "quad/quad_table_json.hpp"
+
+namespace sg {
+
+QuadTableSet generate_quad_tables(const QuadScheme& scheme, const std::vector<int>& valences,
+                                        const std::vector<long>& rates,
+                                        const std::function<void(const std::string&)>& progress) {
+  if (valences.empty() || rates.empty()) throw Error("nothing to generate: no valences or no rates");
+  for (int v : valences) scheme.vertex_rule(v);  // range check with the scheme's own message
+  QuadTableSet set;
+  set.rates = rates;
+  set.valences = valences;
+  set.regular.resize(rates.size());
+  tbb::parallel_for(std::size_t(0), rates.size(),
+                    [&](std::size_t r) { set.regular[r] = solve_by_residues(scheme.curve, 2 * rates[r]); });
+
+  set.tables.assign(valences.size(), std::vector<QuadTable>(rates.size()));
+  const auto jobs = valence_rate_jobs(valences, rates);
+  std::mutex report;
+  std::vector<std::size_t> done(valences.size(), 0);
+  tbb::parallel_for(std::size_t(0), jobs.size(), [&](std::size_t k) {
+    const auto [v, r] = jobs[k];
+    const PatchGrid patch = solve_ev_patch(scheme, valences[v], 2 * rates[r], set.regular[r]);
+    QuadTable table = make_quad_table(scheme, patch);
+    const auto failures = check_quad_table(table);
+    if (!failures.empty())
+      throw Error("scheme '" + scheme.name + "', valence " + std::to_string(valences[v]) + ", n = " +
+                  std::to_string(rates[r]) + ": check failed: " + failures.front());
+    set.tables[v][r] = std::move(table);
+    if (progress) {
+      std::lock_guard lock(report);
+      if (++done[v] == rates.size())
+        progress(scheme.name + ": valence " + std::to_string(valences[v]) + " solved and checked for " +
+                 std::to_string(rates.size()) + " rates");
+    }
+  });
+  return set;
+}
+
+std::size_t write_quad_tables(const QuadScheme& scheme, const QuadTableSet& set,
+                                 const std::filesystem::path& out_dir, BinaryPrecision precision) {
+  OutputTransaction tx(out_dir / scheme.name);
+  for (std::size_t r = 0; r < set.rates.size(); ++r)
+    tx.add("regular/n" + std::to_string(2 * set.rates[r]) + ".json",
+           curve_table_to_json(make_table(scheme.curve, set.regular[r])));
+  add_table_files(tx, set.tables, quad_table_to_json);
+  std::string binary = quad_tables_to_binary(scheme, set, precision);
+  const std::size_t size = binary.size();
+  tx.add(scheme.name + ".sgs", std::move(binary));
+  tx.commit();
+  return size;
+}
+
+}  // namespace sg

@@ -1,0 +1,21 @@
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "curve/curve_scheme_loader.hpp"
+#include "quad/quad_scheme.hpp"
+
+namespace sg {
+
+// Loads a scheme file of type "quad" (docs/scheme-format.md). The regular curve
+// scheme it names is loaded from the same directory. Checks that the valence-4
+// rules are exactly the tensor product of the curve scheme. Errors name the
+// file and field.
+QuadScheme load_quad_scheme(const std::string& spec, const std::vector<std::string>& overrides = {},
+                            const std::filesystem::path& dir = default_schemes_dir());
+
+// The "type" field of a scheme file ("curve-uniform", "quad", ...), for dispatch.
+std::string scheme_type(const std::string& spec, const std::filesystem::path& dir = default_schemes_dir());
+
+}  // namespace sg

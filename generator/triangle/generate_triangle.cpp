@@ -1,0 +1,60 @@
+#include "triangle/generate_triangle.hpp"
+
+#include <algorithm>
+#include <mutex>
+#include <tbb/parallel_for.h>
+
+#include "base/error.hpp"
+#include "common/table_set_pipeline.hpp"
+
+namespace sg {
+
+TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const std::vector<int>& valences,
+                                          const std::vector<long>& rates,
+                                          const std::function<void(const std::string&)>& progress) {
+  if (valences.empty() || rates.empty()) throw Error("nothing to generate: no valences or no rates");
+  for (int v : valences) scheme.real_neighbour_weight(v);  // range check with the scheme's own message
+  TriangleTableSet set;
+  set.rates = rates;
+  set.valences = valences;
+  std::vector<BivariateSolution> regular(rates.size());
+  tbb::parallel_for(std::size_t(0), rates.size(), [&](std::size_t r) { regular[r] = solve_regular(scheme, 3 * rates[r]); });
+
+  set.tables.assign(valences.size(), std::vector<TriangleTable>(rates.size()));
+  const auto jobs = valence_rate_jobs(valences, rates);
+  std::mutex report;
+  std::vector<std::size_t> done(valences.size(), 0);
+  std::vector<Real> worst(valences.size(), Real(0));
+  tbb::parallel_for(std::size_t(0), jobs.size(), [&](std::size_t k) {
+    const auto [vi, r] = jobs[k];
+    const int v = valences[vi];
+    const long n = rates[r];
+    TriangleTable table = solve_triangle_table(scheme, v, n, regular[r]);
+    if (!table.exact && !(table.residual < Real("1e-60")))
+      throw Error("scheme '" + scheme.name + "', valence " + std::to_string(v) + ", n = " + std::to_string(n) +
+                  ": the high-precision residual " + to_string(table.residual, 3) + " is too large");
+    std::lock_guard lock(report);
+    worst[vi] = std::max(worst[vi], table.residual);
+    set.tables[vi][r] = std::move(table);
+    if (progress && ++done[vi] == rates.size())
+      progress(scheme.name + ": valence " + std::to_string(v) + " solved for " + std::to_string(rates.size()) +
+               " rates, " +
+               (set.tables[vi][r].exact ? std::string("exact")
+                                                 : "high precision (" + std::to_string(kRealDigits) +
+                                                       " digits), largest residual " + to_string(worst[vi], 3)));
+  });
+  return set;
+}
+
+std::size_t write_triangle_tables(const TriangleScheme& scheme, const TriangleTableSet& set,
+                                  const std::filesystem::path& out_dir, BinaryPrecision precision) {
+  OutputTransaction tx(out_dir / scheme.name);
+  add_table_files(tx, set.tables, triangle_table_to_json);
+  std::string binary = triangle_tables_to_binary(scheme, set, precision);
+  const std::size_t size = binary.size();
+  tx.add(scheme.name + ".sgt", std::move(binary));
+  tx.commit();
+  return size;
+}
+
+}  // namespace sg

@@ -1,0 +1,18 @@
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "curve/curve_scheme_loader.hpp"
+#include "triangle/triangle_scheme.hpp"
+
+namespace sg {
+
+// Loads a scheme file of type "triangle" (docs/scheme-format.md). Checks that
+// the weights are affine, that valence 6 gives rational regular weights (the
+// regular scaling function is solved exactly), and that every valence in range
+// evaluates. Errors name the file and field.
+TriangleScheme load_triangle_scheme(const std::string& spec, const std::vector<std::string>& overrides = {},
+                                    const std::filesystem::path& dir = default_schemes_dir());
+
+}  // namespace sg

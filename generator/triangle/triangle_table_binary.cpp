@@ -1,0 +1,97 @@
+#include "triangle/triangle_table_binary.hpp"
+
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "base/error.hpp"
+#include "common/byte_writer.hpp"
+#include "stencil_runtime/binary_format.hpp"
+
+namespace sg {
+namespace fmt = stencil_runtime::format;
+
+namespace {
+
+// The stencil's weights over the region's layout (the union of the rates' layouts).
+std::vector<double> weights_over(const TriangleTable& t, const TriangleTable::Region& region, const TriangleTable::Entry& e,
+                                 const std::map<std::tuple<int, long, long>, std::size_t>& position, std::size_t size) {
+  std::vector<double> w(size, 0.0);
+  for (std::size_t h = 0; h < region.layout.size(); ++h) {
+    const SectorPoint& p = region.layout[h];
+    const std::size_t at = position.at({p.sector, p.a, p.b});
+    w[at] = t.exact ? to_double(Rational(e.exact.num[h], e.exact.den)) : to_double(e.approx[h]);
+  }
+  return w;
+}
+
+}  // namespace
+
+std::string triangle_tables_to_binary(const TriangleScheme& scheme, const TriangleTableSet& set, BinaryPrecision precision) {
+  std::string out(fmt::kTriangleMagic, sizeof fmt::kTriangleMagic);
+  put<std::uint32_t>(out, fmt::kTriangleVersion);
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(precision));
+  put<std::uint64_t>(out, scheme.hash);
+  put<std::uint8_t>(out, scheme.refinement == TriangleRefinement::Loop ? 0 : 1);
+  put<double>(out, to_double(scheme.edge_end));
+  put<double>(out, to_double(scheme.edge_opposite));
+  put<double>(out, to_double(*scheme.exact_neighbour_weight(6)));
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(set.rates.size()));
+  for (long n : set.rates) put<std::uint32_t>(out, static_cast<std::uint32_t>(n));
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(set.valences.size()));
+  for (std::size_t vi = 0; vi < set.valences.size(); ++vi) {
+    const auto& tables = set.tables[vi];
+    const int v = set.valences[vi];
+    bool exact = true;
+    Real residual = 0;
+    for (const TriangleTable& t : tables) exact = exact && t.exact, residual = std::max(residual, t.residual);
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(v));
+    put<std::uint8_t>(out, exact ? 1 : 0);
+    put<double>(out, to_double(residual));
+    put<double>(out, to_double(scheme.real_neighbour_weight(v)));
+    const std::size_t regions = tables.front().regions.size();
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(regions));
+    for (std::size_t g = 0; g < regions; ++g) {
+      // The union of the rates' layouts, in chart order (ring a, then sector, then b).
+      std::set<std::tuple<long, int, long>> chart_order;
+      for (const TriangleTable& t : tables)
+        for (const SectorPoint& p : t.regions.at(g).layout) chart_order.emplace(p.a, p.sector, p.b);
+      std::map<std::tuple<int, long, long>, std::size_t> position;
+      for (const auto& [a, s, b] : chart_order) position.emplace(std::tuple{s, a, b}, position.size());
+      put<std::uint32_t>(out, static_cast<std::uint32_t>(position.size()));
+      std::vector<std::tuple<int, long, long>> ordered(position.size());
+      for (const auto& [p, at] : position) ordered[at] = p;
+      for (const auto& [s, a, b] : ordered) {
+        put<std::int32_t>(out, s);
+        put<std::int32_t>(out, static_cast<std::int32_t>(a));
+        put<std::int32_t>(out, static_cast<std::int32_t>(b));
+      }
+      using Key = std::pair<std::pair<long, long>, std::pair<long, long>>;
+      std::map<Key, std::uint32_t> slot;
+      std::vector<std::vector<double>> stencils;
+      std::vector<std::vector<std::uint32_t>> index(tables.size());
+      for (std::size_t r = 0; r < tables.size(); ++r) {
+        const TriangleTable& t = tables[r];
+        const TriangleTable::Region& region = t.regions[g];
+        auto intern = [&](const TriangleTable::Entry& e, long offset) {
+          const Key key{reduced_fraction(3 * e.i + offset, 3 * t.n), reduced_fraction(3 * e.j + offset, 3 * t.n)};
+          auto [it, fresh] = slot.emplace(key, static_cast<std::uint32_t>(stencils.size()));
+          if (fresh) stencils.push_back(weights_over(t, region, e, position, position.size()));
+          index[r].push_back(it->second);
+        };
+        for (const auto& e : region.nodes) intern(e, 0);
+        for (const auto& e : region.up) intern(e, 1);
+        for (const auto& e : region.down) intern(e, 2);
+      }
+      put<std::uint32_t>(out, static_cast<std::uint32_t>(stencils.size()));
+      for (const auto& w : stencils)
+        for (double x : w) put_scalar(out, x, precision);
+      for (const auto& rate : index)
+        for (std::uint32_t k : rate) put<std::uint32_t>(out, k);
+    }
+  }
+  put<std::uint64_t>(out, fmt::fnv1a64(reinterpret_cast<const unsigned char*>(out.data()), out.size()));
+  return out;
+}
+
+}  // namespace sg

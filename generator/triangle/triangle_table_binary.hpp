@@ -1,0 +1,22 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "quad/quad_table_binary.hpp"
+#include "triangle/triangle_table.hpp"
+
+namespace sg {
+
+// Everything `stencilgen --scheme loop|sqrt3 --valence ... --n ...` produced.
+struct TriangleTableSet {
+  std::vector<long> rates;
+  std::vector<int> valences;
+  std::vector<std::vector<TriangleTable>> tables;  // [valence][rate]
+};
+
+// One .sgt file: the scheme's rules, and per valence (6 included: regular
+// triangles use it) the layout and the stencils of all rates, each distinct
+// parameter point stored once (docs/table-format.md).
+std::string triangle_tables_to_binary(const TriangleScheme& scheme, const TriangleTableSet& set, BinaryPrecision precision);
+
+}  // namespace sg
