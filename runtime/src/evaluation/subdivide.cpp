@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "quad/quad_refinement.hpp"
-#include "triangle/triangle_refinement.hpp"
+#include "triangle/triangle_steps.hpp"
 
 namespace stencil_runtime {
 

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "triangle_refinement.hpp"
+#include "triangle_steps.hpp"
 
 namespace stencil_runtime {
 

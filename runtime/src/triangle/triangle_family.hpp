@@ -14,7 +14,7 @@
 #include "mesh/uniform_topology.hpp"
 #include "stencil_runtime/tables.hpp"
 #include "tables/triangle_tables.hpp"
-#include "triangle_patch.hpp"
+#include "chart_patch.hpp"
 
 namespace stencil_runtime {
 

@@ -1,4 +1,4 @@
-#include "triangle_refinement.hpp"
+#include "triangle_steps.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -1,4 +1,4 @@
-#include "triangle_patch.hpp"
+#include "chart_patch.hpp"
 
 #include <array>
 
