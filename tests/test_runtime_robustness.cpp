@@ -52,11 +52,18 @@ TEST_CASE("binary tables with zero rates, or rates, valences and indices out of 
   put<std::uint32_t>(sgs, format::kSurfaceVersion);
   put<std::uint32_t>(sgs, 8);
   put<std::uint64_t>(sgs, 0x1234);
+  put<std::uint32_t>(sgs, 4);
+  sgs += "test";
   for (double w : {0.25, 0.375, 0.0625}) put(sgs, w);
   put<std::uint32_t>(sgs, 1);  // one vertex rule, valence 4
   put<std::uint32_t>(sgs, 4);
   for (double w : {0.5625, 0.09375, 0.015625}) put(sgs, w);
   put<std::uint8_t>(sgs, 0);   // no polygon rules
+  put<std::int32_t>(sgs, -2);  // the cubic B-spline's mask, non-negative, no polynomial pieces
+  put<std::uint32_t>(sgs, 5);
+  for (double a : {0.125, 0.5, 0.75, 0.5, 0.125}) put(sgs, a);
+  put<std::uint8_t>(sgs, 3);
+  put<std::uint32_t>(sgs, 0);
   put<std::uint32_t>(sgs, 0);  // no rates
   put<std::uint32_t>(sgs, 0);  // no valences
   write_file(dir / "zero.sgs", with_checksum(sgs));

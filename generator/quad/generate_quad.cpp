@@ -11,6 +11,7 @@
 #include "curve/curve_table_json.hpp"
 #include "curve/residue_solver.hpp"
 #include "quad/ev_patch_solver.hpp"
+#include "quad/quad_descent.hpp"
 #include "quad/quad_table_json.hpp"
 
 namespace sg {
@@ -21,6 +22,7 @@ QuadTableSet generate_quad_tables(const QuadScheme& scheme, const std::vector<in
   if (valences.empty() || rates.empty()) throw Error("nothing to generate: no valences or no rates");
   for (int v : valences) scheme.vertex_rule(v);  // range check with the scheme's own message
   QuadTableSet set;
+  set.descent = std::make_shared<const QuadDescent>(quad_descent(scheme, valences));
   set.rates = rates;
   set.valences = valences;
   set.regular.resize(rates.size());

@@ -1,10 +1,12 @@
 #include "quad/quad_table_binary.hpp"
 
+#include <algorithm>
 #include <map>
 #include <numeric>
 
 #include "base/error.hpp"
 #include "common/byte_writer.hpp"
+#include "quad/quad_descent.hpp"
 #include "stencil_runtime/binary_format.hpp"
 
 namespace sg {
@@ -22,11 +24,46 @@ std::pair<long, long> reduced_fraction(long p, long q) {
   return {p / g, q / g};
 }
 
+namespace {
+
+// Sparse rows: per row its entry count, then (column, weight) pairs.
+void put_rows(std::string& out, const std::vector<SparseRow>& rows) {
+  for (const SparseRow& row : rows) {
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(row.size()));
+    for (const auto& [column, weight] : row) {
+      put<std::uint32_t>(out, static_cast<std::uint32_t>(column));
+      put<double>(out, to_double(weight));
+    }
+  }
+}
+
+// The regular curve's mask, the sign flags and the polynomial pieces (version 4).
+void put_regular_descent(std::string& out, const QuadDescent& d) {
+  put<std::int32_t>(out, static_cast<std::int32_t>(d.mask_first));
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(d.mask.size()));
+  for (const Rational& a : d.mask) put<double>(out, to_double(a));
+  put<std::uint8_t>(out, static_cast<std::uint8_t>((d.mask_nonnegative ? 1 : 0) | (d.derivative_nonnegative ? 2 : 0)));
+  put<std::uint32_t>(out, d.pieces ? static_cast<std::uint32_t>(d.pieces->degree) : 0);
+  if (d.pieces) {
+    // The basis of point p = -1..2 on [0, 1]: phi(t - p), the piece m = -p.
+    for (int p = -1; p <= 2; ++p)
+      for (int e = 0; e <= d.pieces->degree; ++e) {
+        const long m = -p;
+        const bool inside = m >= d.pieces->first && m < d.pieces->first + static_cast<long>(d.pieces->pieces.size());
+        put<double>(out, inside ? to_double(d.pieces->pieces[static_cast<std::size_t>(m - d.pieces->first)][static_cast<std::size_t>(e)]) : 0.0);
+      }
+  }
+}
+
+}  // namespace
+
 std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& set, BinaryPrecision precision) {
   std::string out(fmt::kSurfaceMagic, sizeof fmt::kSurfaceMagic);
   put<std::uint32_t>(out, fmt::kSurfaceVersion);
   put<std::uint32_t>(out, static_cast<std::uint32_t>(precision));
   put<std::uint64_t>(out, scheme.hash);
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(scheme.name.size()));
+  out += scheme.name;
   // The subdivision rules, so that the runtime can refine a mesh with the
   // scheme's own step (isolating extraordinary vertices) without the scheme file.
   put<double>(out, to_double(scheme.face_corner));
@@ -55,6 +92,7 @@ std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& 
       put<double>(out, to_double(r.face));
     }
   }
+  put_regular_descent(out, *set.descent);
   put<std::uint32_t>(out, static_cast<std::uint32_t>(set.rates.size()));
   for (long n : set.rates) put<std::uint32_t>(out, static_cast<std::uint32_t>(n));
   for (const CurveSolution& c : set.regular) {
@@ -96,6 +134,12 @@ std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& 
       for (std::uint32_t k : node_index[r]) put<std::uint32_t>(out, k);
       for (std::uint32_t k : centre_index[r]) put<std::uint32_t>(out, k);
     }
+    // The patch's one-step subdivision: A0 (2V+8 rows), then the three regular children (16 rows each).
+    const auto& descent = *std::find_if(set.descent->valences.begin(), set.descent->valences.end(),
+                                        [&](const QuadDescent::Valence& d) { return d.valence == set.valences[vi]; });
+    put<std::uint8_t>(out, descent.nonnegative ? 1 : 0);
+    put_rows(out, descent.subdivision.extraordinary_child);
+    for (const auto& child : descent.subdivision.regular_children) put_rows(out, child);
   }
   put<std::uint64_t>(out, fmt::fnv1a64(reinterpret_cast<const unsigned char*>(out.data()), out.size()));
   return out;

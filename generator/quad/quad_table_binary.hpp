@@ -1,4 +1,5 @@
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -8,8 +9,13 @@
 
 namespace sg {
 
+struct QuadDescent;
+
 // Everything `stencilgen --scheme Q --valence ... --n ...` produced.
 struct QuadTableSet {
+  // The scheme's own subdivision of a patch, for evaluation at any parameter
+  // (shared, so that this header need not see the patch matrices' types).
+  std::shared_ptr<const QuadDescent> descent;
   std::vector<long> rates;
   std::vector<CurveSolution> regular;             // per rate n: the curve on the grid 2n
   std::vector<int> valences;

@@ -49,6 +49,18 @@ class Surface {
   // the stencilgen call that would add the rate otherwise.
   Point evaluate(std::size_t face, const ExactParameter& at) const;
 
+  // The limit point at any parameter, exact where the tables hold it, directly
+  // or after the scheme's own subdivision of the patch (every double is an
+  // exact binary fraction, so for binary schemes most doubles are reached);
+  // otherwise the descent stops once the reported bound is at most
+  // `tolerance` (absolute; 0: as deep as doubles allow). Catmull-Clark's and
+  // Loop's regular patches are polynomial: there the value at any parameter is
+  // exact up to rounding. Throws EvaluationError for a face or parameter
+  // outside the surface, a tolerance that is negative or not finite, or a
+  // scheme whose tables give no rigorous bound there (docs/runtime.md).
+  Evaluation evaluate(std::size_t face, const ExactParameter& at, double tolerance) const;
+  Evaluation evaluate(std::size_t face, double u, double v, double tolerance) const;
+
  private:
   std::shared_ptr<const SurfaceTopology> topology_;
   std::vector<Point> prepared_;

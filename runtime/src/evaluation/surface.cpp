@@ -51,3 +51,41 @@ Point Surface::evaluate(std::size_t face, const ExactParameter& at) const {
 }
 
 }  // namespace stencil_runtime
+
+namespace stencil_runtime {
+
+namespace {
+
+void check_request(const Surface& s, double tolerance) {
+  if (!s.has_positions()) throw EvaluationError("the surface has no control positions yet (set_positions)");
+  if (!(tolerance >= 0) || !std::isfinite(tolerance))
+    throw EvaluationError("the tolerance must be a finite number >= 0, got " + std::to_string(tolerance));
+}
+
+Evaluation checked(const Approximation& a) {
+  for (double x : a.point)
+    if (!std::isfinite(x)) throw EvaluationError("the limit point is not finite (coordinates too large)");
+  return {a.point, a.bound, a.exact};
+}
+
+}  // namespace
+
+Evaluation Surface::evaluate(std::size_t face, const ExactParameter& at, double tolerance) const {
+  check_request(*this, tolerance);
+  const FaceDomain domain = topology_->domain(face);
+  if (!domain.contains(at))
+    throw EvaluationError("the parameter " + at.str() + " lies outside face " + std::to_string(face) + " (its domain is " +
+                          domain.describe() + ")");
+  return checked(topology_->family().evaluate(face, at, tolerance, prepared_.data()));
+}
+
+Evaluation Surface::evaluate(std::size_t face, double u, double v, double tolerance) const {
+  check_request(*this, tolerance);
+  const FaceDomain domain = topology_->domain(face);
+  if (!domain.contains(u, v))
+    throw EvaluationError("the parameter (" + std::to_string(u) + ", " + std::to_string(v) + ") lies outside face " +
+                          std::to_string(face) + " (its domain is " + domain.describe() + ")");
+  return checked(topology_->family().evaluate(face, u, v, tolerance, prepared_.data()));
+}
+
+}  // namespace stencil_runtime

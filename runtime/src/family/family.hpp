@@ -27,6 +27,13 @@ struct PatchStencil {
   std::array<double, 2 * limits::kMaxValence + 8> storage{};
 };
 
+// A limit point and how far it may be from the exact one (surface.hpp's Evaluation).
+struct Approximation {
+  Point point{0, 0, 0};
+  double bound = 0;
+  bool exact = true;
+};
+
 // Points and polygons of a tessellation, planned once: `rates` (one stored
 // rate per prepared face) in, point offsets and polygons out.
 struct TessellationLayout {
@@ -53,6 +60,14 @@ class Family {
   // The weights at an exact parameter (inside domain(face)) of an original
   // face, over prepared vertices; false when no stored rate holds it.
   virtual bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const = 0;
+
+  // The limit point at any parameter (inside domain(face)) from the prepared
+  // positions: exact where the tables hold the parameter, directly or after
+  // the scheme's own subdivision of the patch; otherwise within `tolerance`
+  // (absolute, > 0), with the bound reported. Throws EvaluationError where the
+  // scheme's tables give no rigorous bound.
+  virtual Approximation evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const = 0;
+  virtual Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const = 0;
 
   // Fills layout.point_offsets, quads and triangles for layout.rates.
   virtual void plan(TessellationLayout& layout, const detail::RangeRunner& run) const = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "family/parameter_ops.hpp"
 #include "mesh/polygon_links.hpp"
 #include "quad_refinement.hpp"
 
@@ -30,20 +31,28 @@ bool isolated(const QuadTopology& topo) {
 
 // Child c of a face split into quadrants (subdivide_quads) and the parameter
 // there: c is the quadrant of (u, v), the child's u axis along the parent's
-// edge c -> c+1.
-std::pair<int, ExactParameter> quadrant(const ExactParameter& p) {
-  const Fraction one{1, 1}, half{1, 2};
-  const bool right = compare(p.u, half) > 0, top = compare(p.v, half) > 0;
-  const Fraction x = subtract(multiply(p.u, 2), Fraction{right ? 1 : 0, 1});
-  const Fraction y = subtract(multiply(p.v, 2), Fraction{top ? 1 : 0, 1});
+// edge c -> c+1. P is Fraction or double.
+template <class P>
+std::pair<int, std::array<P, 2>> quadrant(const P& u, const P& v) {
+  const bool right = greater(u, 1, 2), top = greater(v, 1, 2);
+  const P x = scale_minus(u, 2, right ? 1 : 0), y = scale_minus(v, 2, top ? 1 : 0);
   const int c = !top ? (right ? 1 : 0) : (right ? 2 : 3);
   switch (c) {
     case 0: return {0, {x, y}};
-    case 1: return {1, {y, subtract(one, x)}};
-    case 2: return {2, {subtract(one, x), subtract(one, y)}};
-    default: return {3, {subtract(one, y), x}};
+    case 1: return {1, {y, from(1, x)}};
+    case 2: return {2, {from(1, x), from(1, y)}};
+    default: return {3, {from(1, y), x}};
   }
 }
+
+// A sub-face of an N-gon's domain and its own coordinates.
+int subface(const FaceDomain& d, const Fraction& u, const Fraction& v, std::array<Fraction, 2>& local) {
+  ExactParameter l;
+  const int s = d.subface({u, v}, l);
+  local = {l.u, l.v};
+  return s;
+}
+int subface(const FaceDomain& d, double u, double v, std::array<double, 2>& local) { return d.subface(u, v, local[0], local[1]); }
 
 }  // namespace
 
@@ -115,6 +124,7 @@ QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, Prepared prepared)
   prepared_ = std::move(prepared.mesh);
   patches_.reserve(topology_.faces());
   for (std::size_t f = 0; f < topology_.faces(); ++f) patches_.push_back(gather_quad_patch(topology_, f));
+  if (tables_.descent()) descent_ = std::make_unique<QuadPatchDescent>(tables_);
   centre_weights_.resize(static_cast<std::size_t>(tables_.rates().back()) + 1);
   for (int n : tables_.rates()) {
     auto& w = centre_weights_[static_cast<std::size_t>(n)];
@@ -134,21 +144,62 @@ std::string QuadFamily::preparation() const {
 
 FaceDomain QuadFamily::domain(std::size_t face) const { return FaceDomain::of(SchemeFamily::Quad, original_sizes_[face]); }
 
-std::pair<std::size_t, ExactParameter> QuadFamily::locate(std::size_t face, const ExactParameter& at) const {
-  ExactParameter p = at;
+template <class P>
+std::pair<std::size_t, std::array<P, 2>> QuadFamily::locate_any(std::size_t face, P u, P v) const {
+  std::array<P, 2> p{u, v};
   for (std::size_t level = 0; level < hierarchy_.levels.size(); ++level) {
     const std::size_t first = hierarchy_.levels[level].child_offsets[face];
     if (level == 0 && polygon_step_ && original_sizes_[face] != 4) {
-      ExactParameter local;
-      face = first + static_cast<std::size_t>(domain(face).subface(p, local));
+      std::array<P, 2> local;
+      face = first + static_cast<std::size_t>(subface(domain(face), p[0], p[1], local));
       p = local;
       continue;
     }
-    const auto [c, child] = quadrant(p);
+    const auto [c, child] = quadrant(p[0], p[1]);
     face = first + static_cast<std::size_t>(c);
     p = child;
   }
   return {face, p};
+}
+
+std::pair<std::size_t, ExactParameter> QuadFamily::locate(std::size_t face, const ExactParameter& at) const {
+  const auto [prepared, p] = locate_any(face, at.u, at.v);
+  return {prepared, {p[0], p[1]}};
+}
+
+std::pair<std::size_t, std::array<double, 2>> QuadFamily::locate(std::size_t face, double u, double v) const {
+  return locate_any(face, u, v);
+}
+
+template <class P>
+Approximation QuadFamily::descend(std::size_t face, P u, P v, double tolerance, const Point* prepared) const {
+  if (!descent_)
+    throw EvaluationError("these tables hold no patch subdivision (exact JSON tables without descent data): evaluation at "
+                          "parameters they do not hold needs the .sgs file, or tables from this stencilgen");
+  const auto [pf, p] = locate_any(face, u, v);
+  const QuadPatch& patch = patches_[pf];
+  // Into the patch's own coordinates (the extraordinary vertex at (0, 0)).
+  std::array<P, 2> q;
+  switch (patch.rotation) {
+    case 0: q = p; break;
+    case 1: q = {p[1], from(1, p[0])}; break;
+    case 2: q = {from(1, p[0]), from(1, p[1])}; break;
+    default: q = {from(1, p[1]), p[0]}; break;
+  }
+  std::vector<Point> points(patch.points.size());
+  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
+  return descent_->evaluate(patch.valence, points, q[0], q[1], tolerance);
+}
+
+Approximation QuadFamily::evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const {
+  return descend(face, at.u, at.v, tolerance, prepared);
+}
+
+Approximation QuadFamily::evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const {
+  // A double is an exact dyadic fraction: evaluated exactly where the tables reach it.
+  const auto fu = exact_fraction(u), fv = exact_fraction(v);
+  if (fu && fv) return descend(face, *fu, *fv, tolerance, prepared);
+  return descend(face, u, v, tolerance, prepared);
 }
 
 bool QuadFamily::stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const {

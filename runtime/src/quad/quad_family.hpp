@@ -11,6 +11,7 @@
 #include "family/family.hpp"
 #include "mesh/connectivity.hpp"
 #include "mesh/uniform_topology.hpp"
+#include "patch_descent.hpp"
 #include "quad_patch.hpp"
 #include "stencil_runtime/tables.hpp"
 #include "tables/quad_tables.hpp"
@@ -26,6 +27,8 @@ class QuadFamily final : public Family {
   int refinement_steps() const override { return steps_ + (polygon_step_ ? 1 : 0); }
   FaceDomain domain(std::size_t face) const override;
   bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const override;
+  Approximation evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const override;
+  Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const override;
   void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
   void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
               std::array<float, 3>* out) const override;
@@ -36,6 +39,8 @@ class QuadFamily final : public Family {
   const QuadPatch& patch(std::size_t prepared_face) const { return patches_[prepared_face]; }
   // Where an exact parameter of an original face lands: a prepared face and its parameter there.
   std::pair<std::size_t, ExactParameter> locate(std::size_t face, const ExactParameter& at) const;
+  // The same for a real parameter (u, v): the prepared face and its (u, v) there.
+  std::pair<std::size_t, std::array<double, 2>> locate(std::size_t face, double u, double v) const;
 
  private:
   struct Prepared;
@@ -51,6 +56,12 @@ class QuadFamily final : public Family {
   std::vector<QuadPatch> patches_;
   // Per stored rate n (indexed by n): phi at the n cell centres, 4 weights each.
   std::vector<std::vector<double>> centre_weights_;
+  std::unique_ptr<const QuadPatchDescent> descent_;  // null for tables without the patch subdivision
+
+  template <class P>
+  std::pair<std::size_t, std::array<P, 2>> locate_any(std::size_t face, P u, P v) const;
+  template <class P>
+  Approximation descend(std::size_t face, P u, P v, double tolerance, const Point* prepared) const;
 };
 
 }  // namespace stencil_runtime

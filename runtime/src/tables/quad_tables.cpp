@@ -19,6 +19,26 @@ std::vector<double> read_scalars(detail::BinaryReader& r, std::size_t count, std
   return out;
 }
 
+// `rows` sparse rows over `columns` inputs: per row an entry count, then (column, weight) pairs.
+SparseRows read_rows(detail::BinaryReader& r, std::size_t rows, std::size_t columns, const std::string& what) {
+  SparseRows m;
+  m.columns_count = columns;
+  for (std::size_t k = 0; k < rows; ++k) {
+    const auto count = r.get<std::uint32_t>();
+    if (count > columns) r.fail(what + ": a row has " + std::to_string(count) + " entries for " + std::to_string(columns) + " points");
+    for (std::uint32_t e = 0; e < count; ++e) {
+      const auto column = r.get<std::uint32_t>();
+      const double weight = r.get<double>();
+      if (column >= columns) r.fail(what + ": column " + std::to_string(column) + " out of range");
+      if (!std::isfinite(weight)) r.fail(what + ": a weight is not finite");
+      m.columns.push_back(column);
+      m.weights.push_back(weight);
+    }
+    m.offsets.push_back(m.columns.size());
+  }
+  return m;
+}
+
 std::size_t half_count(long side) { return static_cast<std::size_t>(side * (side + 1) / 2); }
 
 bool finite(const std::vector<double>& xs) {
@@ -41,6 +61,9 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
   t.hash_ = r.get<std::uint64_t>();
   if (expected_hash != 0 && t.hash_ != expected_hash) r.fail("made from a different scheme (hash mismatch)");
   auto left = [&] { return bytes.size() - r.position(); };
+  const auto name_length = r.get<std::uint32_t>();
+  if (name_length == 0 || name_length > 256) r.fail("invalid scheme name length " + std::to_string(name_length));
+  t.name_ = r.get_string(name_length);
   t.face_corner_ = r.get<double>();
   t.edge_end_ = r.get<double>();
   t.edge_wing_ = r.get<double>();
@@ -64,6 +87,26 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
       VertexRule p{rule.valence, r.get<double>(), r.get<double>(), r.get<double>()};
       t.polygon_rules_.push_back(p);
     }
+  }
+  {  // the regular curve's mask, sign flags and polynomial pieces
+    QuadDescent& d = t.descent_;
+    d.mask_first = r.get<std::int32_t>();
+    const auto mask_size = r.get<std::uint32_t>();
+    if (mask_size == 0 || mask_size > 32 || d.mask_first < -32 || d.mask_first > 32) r.fail("invalid regular mask");
+    for (std::uint32_t k = 0; k < mask_size; ++k) d.mask.push_back(r.get<double>());
+    const auto flags = r.get<std::uint8_t>();
+    if (flags > 3) r.fail("invalid regular mask flags " + std::to_string(flags));
+    d.mask_nonnegative = (flags & 1) != 0;
+    d.derivative_nonnegative = (flags & 2) != 0;
+    const auto degree = r.get<std::uint32_t>();
+    if (degree > 7) r.fail("invalid polynomial degree " + std::to_string(degree) + " of the regular basis (0..7)");
+    d.degree = static_cast<int>(degree);
+    if (degree > 0)
+      for (int p = 0; p < 4; ++p) {
+        d.basis.emplace_back();
+        for (std::uint32_t e = 0; e <= degree; ++e) d.basis.back().push_back(r.get<double>());
+      }
+    t.has_descent_ = true;
   }
   const auto rate_count = r.get<std::uint32_t>();
   if (rate_count > left() / 4) r.fail("truncated rate list");
@@ -106,6 +149,14 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
         (kind == 0 ? v.nodes : v.centres).push_back(std::move(index));
       }
     }
+    QuadDescent::Valence d;
+    const auto flag = r.get<std::uint8_t>();
+    if (flag > 1) r.fail("valence " + std::to_string(valence) + ": invalid sign flag");
+    d.nonnegative = flag == 1;
+    const std::string where = "valence " + std::to_string(valence) + " patch subdivision";
+    d.ev_child = read_rows(r, points, points, where);
+    for (auto& child : d.regular_children) child = read_rows(r, 16, points, where);
+    t.descent_valences_.push_back(std::move(d));
     t.valences_.push_back(std::move(v));
   }
   if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
@@ -172,8 +223,21 @@ void QuadTables::validate(const std::string& origin) {
           if (x >= stencils) fail(where + ": stencil index out of range");
     }
   }
+  if (has_descent_) {
+    for (double a : descent_.mask)
+      if (!std::isfinite(a)) fail("a regular mask weight is not finite");
+    for (const auto& piece : descent_.basis)
+      if (!finite(piece)) fail("a polynomial coefficient of the regular basis is not finite");
+    if (descent_valences_.size() != valences_.size()) fail("patch subdivision missing for some valence");
+  }
   slot_of_rate_.assign(static_cast<std::size_t>(rates_.back()) + 1, -1);
   for (std::size_t k = 0; k < rates_.size(); ++k) slot_of_rate_[static_cast<std::size_t>(rates_[k])] = static_cast<int>(k);
+}
+
+const QuadDescent::Valence& QuadTables::descent(int valence) const {
+  for (std::size_t k = 0; k < valences_.size(); ++k)
+    if (valences_[k].valence == valence && has_descent_) return descent_valences_[k];
+  throw EvaluationError("valence " + std::to_string(valence) + " has no patch subdivision in the tables");
 }
 
 const QuadTables::VertexRule* QuadTables::vertex_rule(int valence) const {

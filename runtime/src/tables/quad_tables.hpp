@@ -13,6 +13,35 @@
 
 namespace stencil_runtime {
 
+// A small sparse matrix of exact weights rounded to double: row r is
+// sum over e in [offsets[r], offsets[r+1]) of weights[e] * input[columns[e]].
+struct SparseRows {
+  std::size_t columns_count = 0;
+  std::vector<std::size_t> offsets{0};
+  std::vector<std::uint32_t> columns;
+  std::vector<double> weights;
+  std::size_t rows() const { return offsets.size() - 1; }
+};
+
+// The scheme's own subdivision of a patch (version 4 tables), for evaluation at
+// any parameter: see QuadTables::descent() and docs/runtime.md.
+struct QuadDescent {
+  // The regular curve's mask a_i, i = mask_first ..: p'_k = sum_j a_{k - 2j} p_j.
+  std::int64_t mask_first = 0;
+  std::vector<double> mask;
+  bool mask_nonnegative = false;        // then the limit lies in the hull of the control points
+  bool derivative_nonnegative = false;  // then its derivatives lie in the hull of their differences
+  // The regular basis on [0, 1] as polynomials (degree 0: not polynomial):
+  // basis[p + 1][e] is the coefficient of t^e of phi(t - p), p = -1..2.
+  int degree = 0;
+  std::vector<std::vector<double>> basis;
+  struct Valence {
+    bool nonnegative = false;      // every weight of A0 and of the regular children
+    SparseRows ev_child;           // A0: 2v+8 rows over the patch's 2v+8 points
+    SparseRows regular_children[3];  // 16 rows each; children at offsets (1,0), (0,1), (1,1) in half-patch units
+  };
+};
+
 class QuadTables {
  public:
   // Throws LoadError naming the file (missing, truncated, bad magic, version,
@@ -24,7 +53,7 @@ class QuadTables {
   static QuadTables load_json_directory(const std::string& dir, std::uint64_t expected_hash = 0);
 
   std::uint64_t scheme_hash() const { return hash_; }
-  const std::string& scheme_name() const { return name_; }  // from the JSON tables; empty for binary files
+  const std::string& scheme_name() const { return name_; }
 
   // The scheme's subdivision rules, as stored (double).
   struct VertexRule {
@@ -49,6 +78,11 @@ class QuadTables {
   bool has_rate(int n) const { return rate_slot(n) >= 0; }
   bool has_valence(int v) const;
   static int points(int valence) { return valence == 4 ? 16 : 2 * valence + 8; }
+
+  // The patch subdivision (binary tables of version 4; nullptr for exact JSON
+  // tables without descent.json).
+  const QuadDescent* descent() const { return has_descent_ ? &descent_ : nullptr; }
+  const QuadDescent::Valence& descent(int valence) const;
 
   // Weights over the patch's control points (16 for the regular patch or
   // valence 4, 2v+8 otherwise) at node (i/n, j/n), 0 <= i,j <= n, or at the
@@ -101,6 +135,9 @@ class QuadTables {
   std::vector<std::vector<double>> regular_;  // per rate slot: phi(k/(2n)) for k = regular_first_ + ...
   std::vector<std::int64_t> regular_first_;
   std::vector<Valence> valences_;
+  bool has_descent_ = false;
+  QuadDescent descent_;
+  std::vector<QuadDescent::Valence> descent_valences_;  // parallel to valences_
 };
 
 }  // namespace stencil_runtime

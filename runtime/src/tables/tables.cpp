@@ -53,7 +53,7 @@ std::shared_ptr<const Tables> Tables::load(const std::string& path, std::uint64_
   } else if (file.extension() == ".sgs") {
     t->family_ = SchemeFamily::Quad;
     t->quad_ = std::make_unique<QuadTables>(QuadTables::load_binary(file.string(), expected_hash));
-    t->scheme_ = file.stem().string();
+    t->scheme_ = t->quad_->scheme_name();
   } else {
     throw LoadError(file.string() + ": not a surface table (expected a .sgs or .sgt file, or a directory of them)");
   }

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "family/parameter_ops.hpp"
 #include "triangle_steps.hpp"
 
 namespace stencil_runtime {
@@ -97,6 +98,24 @@ TriangleFamily::TriangleFamily(std::shared_ptr<const Tables> tables, Prepared pr
   refinement_ = std::move(prepared.refinement);
   hierarchy_ = std::move(prepared.hierarchy);
   prepared_ = std::move(prepared.mesh);
+}
+
+Approximation TriangleFamily::evaluate(std::size_t face, const ExactParameter& at, double, const Point* prepared) const {
+  PatchStencil s;
+  if (!stencil(face, at, s))
+    throw EvaluationError("the parameter " + at.str() + " of face " + std::to_string(face) +
+                          " is on no grid the tables hold, and triangle schemes are evaluated only where they do");
+  Approximation out;
+  for (std::size_t h = 0; h < s.size; ++h)
+    for (int k = 0; k < 3; ++k) out.point[static_cast<std::size_t>(k)] += s.weights[h] * prepared[s.points[h]][static_cast<std::size_t>(k)];
+  return out;
+}
+
+Approximation TriangleFamily::evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const {
+  const auto fu = exact_fraction(u), fv = exact_fraction(v);
+  if (!fu || !fv)
+    throw EvaluationError("triangle schemes are evaluated only at parameters their tables hold");
+  return evaluate(face, ExactParameter{*fu, *fv}, tolerance, prepared);
 }
 
 std::string TriangleFamily::preparation() const {

@@ -27,6 +27,8 @@ class TriangleFamily final : public Family {
   int refinement_steps() const override { return steps_; }
   FaceDomain domain(std::size_t face) const override;
   bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const override;
+  Approximation evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const override;
+  Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const override;
   void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
   void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
               std::array<float, 3>* out) const override;

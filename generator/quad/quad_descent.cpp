@@ -1,0 +1,50 @@
+#include "quad/quad_descent.hpp"
+
+#include <algorithm>
+
+#include "base/error.hpp"
+
+namespace sg {
+
+namespace {
+
+bool nonnegative(const std::vector<SparseRow>& rows) {
+  return std::all_of(rows.begin(), rows.end(), [](const SparseRow& r) {
+    return std::all_of(r.begin(), r.end(), [](const auto& e) { return e.second >= 0; });
+  });
+}
+
+}  // namespace
+
+QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valences) {
+  const CurveScheme& curve = scheme.curve;
+  if (!curve.is_uniform() || curve.arity != 2) throw Error("internal: a quad scheme's regular curve must be uniform and binary");
+  QuadDescent out;
+  long last = 0;
+  out.mask_first = curve.types[0].terms.front().shift;
+  for (const Term& t : curve.types[0].terms) out.mask_first = std::min(out.mask_first, t.shift), last = std::max(last, t.shift);
+  out.mask.assign(static_cast<std::size_t>(last - out.mask_first + 1), Rational(0));
+  for (const Term& t : curve.types[0].terms) out.mask[static_cast<std::size_t>(t.shift - out.mask_first)] += t.coeff;
+  out.mask_nonnegative = std::all_of(out.mask.begin(), out.mask.end(), [](const Rational& a) { return a >= 0; });
+  // b(z) = 2 a(z) / (1 + z) by synthetic division, when 1 + z divides a(z).
+  std::vector<Rational> b(out.mask.size() - 1, Rational(0));
+  Rational carry = 0;
+  for (std::size_t k = 0; k + 1 < out.mask.size(); ++k) {
+    b[k] = out.mask[k] - carry;
+    carry = b[k];
+  }
+  const bool divides = out.mask.back() == carry;
+  out.derivative_nonnegative = divides && std::all_of(b.begin(), b.end(), [](const Rational& x) { return x >= 0; });
+  out.pieces = polynomial_pieces(curve);
+  for (int v : valences) {
+    if (v == 4) continue;
+    QuadDescent::Valence d{v, build_patch_subdivision(scheme, v), false};
+    d.nonnegative = nonnegative(d.subdivision.extraordinary_child) &&
+                    std::all_of(d.subdivision.regular_children.begin(), d.subdivision.regular_children.end(),
+                                [](const auto& rows) { return nonnegative(rows); });
+    out.valences.push_back(std::move(d));
+  }
+  return out;
+}
+
+}  // namespace sg

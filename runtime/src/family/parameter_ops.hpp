@@ -1,0 +1,46 @@
+#pragma once
+// The few operations the descent through a patch's children needs, for exact
+// parameters (Fraction, overflow-checked) and real ones (double). The real
+// operations are exact in binary floating point where the descent uses them:
+// 2x - c for x in [c/2, (c+1)/2] and 1 - x for x in [1/2, 1] (Sterbenz);
+// 1 - x for small x may round by at most half an ulp of 1, which the bounds allow for.
+#include <cmath>
+#include <cstdint>
+#include <optional>
+
+#include "stencil_runtime/exact_parameter.hpp"
+
+namespace stencil_runtime {
+
+inline double to_real(const Fraction& x) { return x.to_double(); }
+inline double to_real(double x) { return x; }
+
+inline bool greater(const Fraction& x, std::int64_t num, std::int64_t den) { return compare(x, Fraction{num, den}) > 0; }
+inline bool greater(double x, std::int64_t num, std::int64_t den) { return x * static_cast<double>(den) > static_cast<double>(num); }
+
+// k x - c
+inline Fraction scale_minus(const Fraction& x, std::int64_t k, std::int64_t c) { return subtract(multiply(x, k), Fraction{c, 1}); }
+inline double scale_minus(double x, std::int64_t k, std::int64_t c) { return static_cast<double>(k) * x - static_cast<double>(c); }
+
+// c - x
+inline Fraction from(std::int64_t c, const Fraction& x) { return subtract(Fraction{c, 1}, x); }
+inline double from(std::int64_t c, double x) { return static_cast<double>(c) - x; }
+
+// A double as the exact dyadic fraction it is, when its denominator fits in 62 bits.
+inline std::optional<Fraction> exact_fraction(double x) {
+  if (!std::isfinite(x)) return std::nullopt;
+  if (x == 0) return Fraction{0, 1};
+  int e = 0;
+  const double m = std::frexp(x, &e);  // x = m 2^e, 0.5 <= |m| < 1
+  std::int64_t num = static_cast<std::int64_t>(std::ldexp(m, 53));  // exact: 53 bits
+  int den_bits = 53 - e;
+  while (den_bits > 0 && (num & 1) == 0) num /= 2, --den_bits;
+  if (den_bits < 0) {
+    if (den_bits < -9) return std::nullopt;
+    return Fraction{num * (std::int64_t{1} << -den_bits), 1};
+  }
+  if (den_bits > 62) return std::nullopt;
+  return Fraction{num, std::int64_t{1} << den_bits};
+}
+
+}  // namespace stencil_runtime

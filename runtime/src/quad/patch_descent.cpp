@@ -1,0 +1,197 @@
+#include "patch_descent.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "family/parameter_ops.hpp"
+
+namespace stencil_runtime {
+
+namespace {
+
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+// Levels of descent: a double's dyadic denominator has at most 62 bits here,
+// and 2^-64 of a patch is far below any tolerance a double can express.
+constexpr int kMaxLevels = 64;
+
+double norm(const Point& a, const Point& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+double largest_magnitude(const std::vector<Point>& q) {
+  double m = 0;
+  for (const Point& p : q)
+    for (double c : p) m = std::max(m, std::fabs(c));
+  return m;
+}
+
+// out = rows * q, and the rounding this may add (sum of |w| * |q| times the entries, times epsilon).
+double apply(const SparseRows& rows, const std::vector<Point>& q, std::vector<Point>& out) {
+  out.assign(rows.rows(), Point{0, 0, 0});
+  std::size_t widest = 0;
+  for (std::size_t r = 0; r < rows.rows(); ++r) {
+    Point& p = out[r];
+    for (std::size_t e = rows.offsets[r]; e != rows.offsets[r + 1]; ++e)
+      for (int k = 0; k < 3; ++k) p[static_cast<std::size_t>(k)] += rows.weights[e] * q[rows.columns[e]][static_cast<std::size_t>(k)];
+    widest = std::max(widest, rows.offsets[r + 1] - rows.offsets[r]);
+  }
+  return static_cast<double>(widest + 2) * kEpsilon * largest_magnitude(q);
+}
+
+// A stored rate's grid holding (x, y) exactly (both coordinates on 1/(2n) with equal parity).
+bool held(const QuadTables& t, const Fraction& x, const Fraction& y, int& n, std::int64_t& a, std::int64_t& b) {
+  for (int rate : t.rates()) {
+    const std::int64_t g = 2 * static_cast<std::int64_t>(rate);
+    if (g % x.den != 0 || g % y.den != 0) continue;
+    a = x.num * (g / x.den), b = y.num * (g / y.den);
+    if (((a ^ b) & 1) != 0) continue;
+    n = rate;
+    return true;
+  }
+  return false;
+}
+bool held(const QuadTables&, double, double, int&, std::int64_t&, std::int64_t&) { return false; }
+
+Point combine(const double* w, const std::vector<Point>& q) {
+  Point p{0, 0, 0};
+  for (std::size_t h = 0; h < q.size(); ++h)
+    for (int k = 0; k < 3; ++k) p[static_cast<std::size_t>(k)] += w[h] * q[h][static_cast<std::size_t>(k)];
+  return p;
+}
+
+}  // namespace
+
+QuadPatchDescent::QuadPatchDescent(const QuadTables& tables) : tables_(tables), d_(*[&] {
+  if (!tables.descent())
+    throw EvaluationError("these tables hold no patch subdivision (exact JSON tables from an older stencilgen): "
+                          "evaluation at parameters they do not hold needs tables from this stencilgen");
+  return tables.descent();
+}()) {
+  for (int c = 0; c < 2; ++c)
+    for (int k = 0; k < 4; ++k)
+      for (int j = 0; j < 4; ++j) {
+        // Child c's point k - 1 is the fine point c + k - 1 = sum_j a_{c + k - 1 - 2 (j - 1)} p_{j - 1}.
+        const std::int64_t i = c + (k - 1) - 2 * (j - 1) - d_.mask_first;
+        half_[c][k][j] = i >= 0 && i < static_cast<std::int64_t>(d_.mask.size()) ? d_.mask[static_cast<std::size_t>(i)] : 0.0;
+      }
+}
+
+void QuadPatchDescent::regular_child(std::vector<Point>& q, int cx, int cy) const {
+  // Rows (x) first, then columns (y); points (i, j) at (j + 1) * 4 + (i + 1).
+  Point rows[16], out[16];
+  for (int j = 0; j < 4; ++j)
+    for (int k = 0; k < 4; ++k) {
+      Point p{0, 0, 0};
+      for (int i = 0; i < 4; ++i)
+        for (int c = 0; c < 3; ++c) p[static_cast<std::size_t>(c)] += half_[cx][k][i] * q[static_cast<std::size_t>(j * 4 + i)][static_cast<std::size_t>(c)];
+      rows[j * 4 + k] = p;
+    }
+  for (int k = 0; k < 4; ++k)
+    for (int i = 0; i < 4; ++i) {
+      Point p{0, 0, 0};
+      for (int j = 0; j < 4; ++j)
+        for (int c = 0; c < 3; ++c) p[static_cast<std::size_t>(c)] += half_[cy][k][j] * rows[j * 4 + i][static_cast<std::size_t>(c)];
+      out[k * 4 + i] = p;
+    }
+  q.assign(out, out + 16);
+}
+
+Point QuadPatchDescent::polynomial(const std::vector<Point>& q, double x, double y) const {
+  double bx[4], by[4];
+  for (int p = 0; p < 4; ++p) {
+    double sx = 0, sy = 0;
+    for (int e = d_.degree; e >= 0; --e) {
+      sx = sx * x + d_.basis[static_cast<std::size_t>(p)][static_cast<std::size_t>(e)];
+      sy = sy * y + d_.basis[static_cast<std::size_t>(p)][static_cast<std::size_t>(e)];
+    }
+    bx[p] = sx, by[p] = sy;
+  }
+  Point out{0, 0, 0};
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i)
+      for (int c = 0; c < 3; ++c) out[static_cast<std::size_t>(c)] += bx[i] * by[j] * q[static_cast<std::size_t>(j * 4 + i)][static_cast<std::size_t>(c)];
+  return out;
+}
+
+Approximation QuadPatchDescent::regular_bound(const std::vector<Point>& q, double x, double y) const {
+  // The nearest node of the finest stored grid, evaluated exactly.
+  const int n = tables_.rates().back();
+  const long a = std::clamp(std::lround(x * n), 0L, static_cast<long>(n)), b = std::clamp(std::lround(y * n), 0L, static_cast<long>(n));
+  double w[16];
+  tables_.node_stencil(4, n, static_cast<int>(a), static_cast<int>(b), w);
+  Approximation out;
+  out.point = combine(w, q);
+  out.exact = false;
+  const double dx = std::fabs(x - static_cast<double>(a) / n), dy = std::fabs(y - static_cast<double>(b) / n);
+  if (d_.mask_nonnegative && d_.derivative_nonnegative) {
+    double du = 0, dv = 0;  // largest differences of neighbouring control points, along u and along v
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 3; ++i) {
+        du = std::max(du, norm(q[static_cast<std::size_t>(j * 4 + i + 1)], q[static_cast<std::size_t>(j * 4 + i)]));
+        dv = std::max(dv, norm(q[static_cast<std::size_t>((i + 1) * 4 + j)], q[static_cast<std::size_t>(i * 4 + j)]));
+      }
+    out.bound = dx * du + dy * dv;
+  } else if (d_.mask_nonnegative) {
+    for (const Point& p : q) out.bound = std::max(out.bound, norm(p, out.point));  // the limit lies in the hull
+  } else {
+    throw EvaluationError("this scheme's regular rules have negative weights, so evaluation between the parameters its "
+                          "tables hold has no bound; give exact rationals the tables hold");
+  }
+  return out;
+}
+
+template <class P>
+Approximation QuadPatchDescent::evaluate(int valence, std::vector<Point>& q, P x, P y, double tolerance) const {
+  double rounding = 0;
+  std::vector<Point> next;
+  for (int level = 0;; ++level) {
+    int n = 0;
+    std::int64_t a = 0, b = 0;
+    if (held(tables_, x, y, n, a, b)) {  // exact from the tables
+      std::array<double, 2 * limits::kMaxValence + 8> w{};
+      if ((a & 1) == 0) tables_.node_stencil(valence, n, static_cast<int>(a / 2), static_cast<int>(b / 2), w.data());
+      else tables_.centre_stencil(valence, n, static_cast<int>(a / 2), static_cast<int>(b / 2), w.data());
+      return {combine(w.data(), q), 0.0, true};
+    }
+    if (valence == 4) {
+      if (d_.degree > 0) return {polynomial(q, to_real(x), to_real(y)), 0.0, true};
+      Approximation approx = regular_bound(q, to_real(x), to_real(y));
+      approx.bound += rounding + 4 * kEpsilon * largest_magnitude(q);
+      if (approx.bound <= tolerance || level == kMaxLevels) return approx;
+      const int cx = greater(x, 1, 2) ? 1 : 0, cy = greater(y, 1, 2) ? 1 : 0;
+      rounding += 18 * kEpsilon * largest_magnitude(q);
+      regular_child(q, cx, cy);
+      x = scale_minus(x, 2, cx), y = scale_minus(y, 2, cy);
+      continue;
+    }
+    const QuadDescent::Valence& sub = tables_.descent(valence);
+    if (level == kMaxLevels) {  // within 2^-64 of the extraordinary vertex: its limit point
+      if (!sub.nonnegative)
+        throw EvaluationError("valence " + std::to_string(valence) + " has negative subdivision weights, so evaluation this close "
+                              "to the extraordinary vertex has no bound");
+      std::array<double, 2 * limits::kMaxValence + 8> w{};
+      tables_.node_stencil(valence, tables_.rates().front(), 0, 0, w.data());
+      Approximation approx{combine(w.data(), q), 0.0, false};
+      for (const Point& p : q) approx.bound = std::max(approx.bound, norm(p, approx.point));
+      approx.bound += rounding;
+      return approx;
+    }
+    const bool right = greater(x, 1, 2), top = greater(y, 1, 2);
+    if (!right && !top) {
+      rounding += apply(sub.ev_child, q, next);
+      x = scale_minus(x, 2, 0), y = scale_minus(y, 2, 0);
+    } else {
+      const int c = right && !top ? 0 : (!right ? 1 : 2);  // offsets (1,0), (0,1), (1,1)
+      rounding += apply(sub.regular_children[c], q, next);
+      x = scale_minus(x, 2, right ? 1 : 0), y = scale_minus(y, 2, top ? 1 : 0);
+      valence = 4;
+    }
+    q.swap(next);
+  }
+}
+
+template Approximation QuadPatchDescent::evaluate<Fraction>(int, std::vector<Point>&, Fraction, Fraction, double) const;
+template Approximation QuadPatchDescent::evaluate<double>(int, std::vector<Point>&, double, double, double) const;
+
+}  // namespace stencil_runtime

@@ -1,0 +1,45 @@
+#pragma once
+// A quad patch evaluated at any parameter by the scheme's own subdivision of
+// the patch (docs/runtime.md, "Evaluation at any parameter"). The control
+// points descend into the child that holds the parameter: the extraordinary
+// child through A0, a regular child through its rows, a regular patch into one
+// of its four quadrants through the curve's half-interval matrices. The
+// descent stops
+//  - exactly, where a stored rate holds the child's parameter (a double is an
+//    exact dyadic fraction, so this happens within its binary digits);
+//  - exactly up to rounding, in a regular patch whose basis is polynomial
+//    (Catmull-Clark's bicubic B-splines): the pieces are evaluated directly;
+//  - otherwise once the bound is within the tolerance. The approximation is the
+//    exact limit point at the nearest node of the finest stored grid; where the
+//    scheme's mask and derivative mask are non-negative the limit's partial
+//    derivatives lie in the convex hulls of the control points' differences,
+//    so |f(x) - f(node)| <= |dx| max|D_u| + |dy| max|D_v| (plus rounding).
+#include <array>
+#include <vector>
+
+#include "family/family.hpp"
+#include "tables/quad_tables.hpp"
+
+namespace stencil_runtime {
+
+class QuadPatchDescent {
+ public:
+  // Throws EvaluationError when the tables hold no patch subdivision.
+  explicit QuadPatchDescent(const QuadTables& tables);
+
+  // `points`: the patch's control points in the tables' canonical order (16 or
+  // 2v+8), consumed; (x, y): the patch parameter. P is Fraction or double.
+  template <class P>
+  Approximation evaluate(int valence, std::vector<Point>& points, P x, P y, double tolerance) const;
+
+ private:
+  Approximation regular_bound(const std::vector<Point>& q, double x, double y) const;
+  Point polynomial(const std::vector<Point>& q, double x, double y) const;
+  void regular_child(std::vector<Point>& q, int cx, int cy) const;
+
+  const QuadTables& tables_;
+  const QuadDescent& d_;
+  double half_[2][4][4];  // the curve's half-interval matrices: child c point k from parent point j
+};
+
+}  // namespace stencil_runtime
