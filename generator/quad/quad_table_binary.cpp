@@ -1,7 +1,6 @@
 #include "quad/quad_table_binary.hpp"
 
 #include <map>
-#include <numeric>
 
 #include "base/error.hpp"
 #include "common/byte_writer.hpp"
@@ -9,18 +8,6 @@
 
 namespace sg {
 namespace fmt = stencil_runtime::format;
-
-void put_scalar(std::string& out, double d, BinaryPrecision p) {
-  if (p == BinaryPrecision::Double)
-    put<double>(out, d);
-  else
-    put<float>(out, static_cast<float>(d));
-}
-
-std::pair<long, long> reduced_fraction(long p, long q) {
-  const long g = std::gcd(p, q);
-  return {p / g, q / g};
-}
 
 std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& set, BinaryPrecision precision) {
   std::string out(fmt::kSurfaceMagic, sizeof fmt::kSurfaceMagic);
