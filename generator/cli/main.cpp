@@ -1,222 +1,10 @@
 // stencilgen: exact evaluation stencils for stationary subdivision schemes.
+// The command line (CLI11) and the error boundary; each command is in its own file.
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <chrono>
 #include <iostream>
-#include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
-#include "common/atomic_output.hpp"
-#include "common/rate_spec.hpp"
-#include "common/read_file.hpp"
-#include "curve/curve_scheme_loader.hpp"
-#include "curve/curve_table_json.hpp"
-#include "curve/curve_table_verify.hpp"
-#include "curve/generate_curve.hpp"
-#include "curve/plot_svg.hpp"
-#include "curve/residue_solver.hpp"
-#include "quad/generate_quad.hpp"
-#include "quad/quad_analysis.hpp"
-#include "quad/quad_scheme_loader.hpp"
-#include "quad/quad_table_json.hpp"
-#include "triangle/generate_triangle.hpp"
-#include "triangle/triangle_analysis.hpp"
-#include "triangle/triangle_scheme_loader.hpp"
-#include "triangle/triangle_table.hpp"
-
-namespace {
-
-int run_generate(const std::string& scheme_spec, const std::string& rates_spec, const std::string& out,
-                 const std::vector<std::string>& params, const std::string& route, bool quiet) {
-  const auto rates = sg::parse_rate_spec(rates_spec);
-  const sg::CurveScheme scheme = sg::load_curve_scheme(scheme_spec, params);
-  const sg::RouteChoice choice = route == "residue" ? sg::RouteChoice::Residue
-                                 : route == "eigen"  ? sg::RouteChoice::Eigen
-                                                     : sg::RouteChoice::Both;
-  const auto start = std::chrono::steady_clock::now();
-  auto progress = [&](const std::string& line) {
-    if (!quiet) std::cerr << line << "\n";
-  };
-  const auto tables = sg::generate_curve_tables(scheme, rates, choice, progress);
-  sg::write_curve_tables(scheme, tables, out);
-  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cout << "wrote " << tables.size() << " exact tables (JSON + binary) for '" << scheme.name << "' to "
-            << (std::filesystem::path(out) / scheme.name).string() << " in " << secs << " s\n";
-  return 0;
-}
-
-std::vector<int> parse_valences(const std::string& spec) {
-  // Unlike --n, a single number means that one valence, not 1..N.
-  const bool single = !spec.empty() && spec.find_first_not_of("0123456789") == std::string::npos;
-  std::vector<int> valences;
-  for (long v : sg::parse_rate_spec(single ? spec + "," + spec : spec, "--valence")) {
-    if (v < 3) throw sg::Error("--valence: valences start at 3, got " + std::to_string(v));
-    valences.push_back(static_cast<int>(v));
-  }
-  return valences;
-}
-
-int run_generate_quad(const std::string& scheme_spec, const std::string& rates_spec, const std::string& valence_spec,
-                         const std::string& out, const std::vector<std::string>& params, const std::string& precision,
-                         bool quiet) {
-  const auto rates = sg::parse_rate_spec(rates_spec);
-  const auto valences = parse_valences(valence_spec);
-  const sg::QuadScheme scheme = sg::load_quad_scheme(scheme_spec, params);
-  const auto start = std::chrono::steady_clock::now();
-  for (int v : valences) {
-    scheme.vertex_rule(v);
-    const sg::SmoothnessReport report = sg::analyse_quad_valence(scheme, v, 16);
-    if (!report.ok())
-      std::cerr << "stencilgen: warning: '" << scheme.name << "' fails the smoothness analysis at valence " << v
-                << " (tables are still exact; see `stencilgen analyze`):\n"
-                << sg::format_report(report);
-  }
-  auto progress = [&](const std::string& line) {
-    if (!quiet) std::cerr << line << "\n";
-  };
-  const auto set = sg::generate_quad_tables(scheme, valences, rates, progress);
-  const std::size_t bytes = sg::write_quad_tables(
-      scheme, set, out, precision == "single" ? sg::BinaryPrecision::Single : sg::BinaryPrecision::Double);
-  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cout << "wrote exact surface tables for '" << scheme.name << "' (valences " << valence_spec << ", rates "
-            << rates.front() << ".." << rates.back() << ", " << rates.size() * valences.size() << " tables) to "
-            << (std::filesystem::path(out) / scheme.name).string() << " in " << secs << " s; binary "
-            << scheme.name << ".sgs: " << bytes << " bytes (" << precision << " precision)\n";
-  return 0;
-}
-
-int run_generate_triangle(const std::string& scheme_spec, const std::string& rates_spec, const std::string& valence_spec,
-                          const std::string& out, const std::vector<std::string>& params, const std::string& precision,
-                          bool quiet) {
-  const auto rates = sg::parse_rate_spec(rates_spec);
-  auto valences = parse_valences(valence_spec);
-  const sg::TriangleScheme scheme = sg::load_triangle_scheme(scheme_spec, params);
-  // Valence 6 is the regular patch, which the runtime needs for every ordinary triangle.
-  if (std::find(valences.begin(), valences.end(), 6) == valences.end()) valences.push_back(6);
-  std::sort(valences.begin(), valences.end());
-  const auto start = std::chrono::steady_clock::now();
-  auto progress = [&](const std::string& line) {
-    if (!quiet) std::cerr << line << "\n";
-  };
-  const auto set = sg::generate_triangle_tables(scheme, valences, rates, progress);
-  const std::size_t bytes = sg::write_triangle_tables(
-      scheme, set, out, precision == "single" ? sg::BinaryPrecision::Single : sg::BinaryPrecision::Double);
-  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::string exact, approx;
-  for (int v : valences) (scheme.exact_neighbour_weight(v) ? exact : approx) += (std::to_string(v) + " ");
-  std::cout << "wrote triangle tables for '" << scheme.name << "' (valences " << valence_spec << " and 6, rates "
-            << rates.front() << ".." << rates.back() << ", " << rates.size() * valences.size() << " tables) to "
-            << (std::filesystem::path(out) / scheme.name).string() << " in " << secs << " s; exact at valences "
-            << (exact.empty() ? "none " : exact) << "; high precision (" << sg::kRealDigits << " digits, not exact) at "
-            << (approx.empty() ? "none " : approx) << "; binary " << scheme.name << ".sgt: " << bytes << " bytes ("
-            << precision << " precision)\n";
-  return 0;
-}
-
-int run_analyze(const std::string& scheme_spec, const std::string& valence_spec, const std::vector<std::string>& params,
-                long samples) {
-  if (sg::scheme_type(scheme_spec) == "triangle") {
-    const sg::TriangleScheme scheme = sg::load_triangle_scheme(scheme_spec, params);
-    int failed = 0;
-    std::cout << "smoothness analysis of '" << scheme.name << "' (" << scheme.source << ")"
-              << (scheme.refinement == sg::TriangleRefinement::Sqrt3
-                      ? "; spectra of two composed steps (one step's moduli are their square roots)"
-                      : "")
-              << "\n";
-    for (int v : parse_valences(valence_spec)) {
-      const sg::SmoothnessReport r = sg::analyse_triangle_valence(scheme, v, samples);
-      if (!r.ok()) ++failed;
-      std::cout << sg::format_report(r);
-    }
-    std::cout << (failed == 0 ? "all valences pass\n" : std::to_string(failed) + " valence(s) FAIL\n");
-    return failed == 0 ? 0 : 1;
-  }
-  const sg::QuadScheme scheme = sg::load_quad_scheme(scheme_spec, params);
-  int failed = 0;
-  std::cout << "smoothness analysis of '" << scheme.name << "' (" << scheme.source << ")\n";
-  for (int v : parse_valences(valence_spec)) {
-    scheme.vertex_rule(v);
-    const sg::SmoothnessReport r = sg::analyse_quad_valence(scheme, v, samples);
-    if (!r.ok()) ++failed;
-    std::cout << sg::format_report(r);
-  }
-  std::cout << (failed == 0 ? "all valences pass\n" : std::to_string(failed) + " valence(s) FAIL\n");
-  return failed == 0 ? 0 : 1;
-}
-
-int run_verify(const std::vector<std::string>& files, const std::string& scheme_spec,
-               const std::vector<std::string>& params) {
-  int bad = 0;
-  for (const std::string& file : files) {
-    const std::string text = sg::read_file(file);
-    if (sg::table_format(text) == sg::kTriangleTableFormat) {
-      // Re-solve the table and compare the serialised result byte for byte.
-      const nlohmann::json doc = nlohmann::json::parse(text);
-      std::vector<std::string> overrides = params;
-      if (overrides.empty())
-        for (const auto& [k, v] : doc.at("parameters").items()) overrides.push_back(k + "=" + v.get<std::string>());
-      const sg::TriangleScheme scheme =
-          sg::load_triangle_scheme(scheme_spec.empty() ? doc.at("scheme").get<std::string>() : scheme_spec, overrides);
-      const int v = doc.at("valence").get<int>();
-      const long n = doc.at("n").get<long>();
-      const sg::TriangleTable fresh = sg::solve_triangle_table(scheme, v, n, sg::solve_regular(scheme, 3 * n));
-      if (sg::triangle_table_to_json(fresh) == text) {
-        std::cout << file << ": OK (" << scheme.name << " triangle table, valence " << v << ", n = " << n << "; "
-                  << (fresh.exact ? "exact" : "high precision") << "; equal to the re-solved table in every digit)\n";
-      } else {
-        ++bad;
-        std::cout << file << ": FAIL: differs from the re-solved table (scheme '" << scheme.name << "', valence " << v
-                  << ", n = " << n << ")\n";
-      }
-      continue;
-    }
-    if (sg::table_format(text) == sg::kQuadTableFormat) {
-      const std::string name = nlohmann::json::parse(text).value("scheme", "");
-      std::vector<std::string> overrides = params;
-      if (overrides.empty())
-        for (const auto& [k, v] : nlohmann::json::parse(text).at("parameters").items())
-          overrides.push_back(k + "=" + v.get<std::string>());
-      const sg::QuadScheme scheme = sg::load_quad_scheme(scheme_spec.empty() ? name : scheme_spec, overrides);
-      const auto failures = sg::verify_quad_table_json(text, file, scheme);
-      if (failures.empty())
-        std::cout << file << ": OK (" << scheme.name << " surface; every stencil equals the re-solved one exactly)\n";
-      else
-        ++bad;
-      for (const auto& f : failures) std::cout << file << ": FAIL: " << f << "\n";
-      continue;
-    }
-    const sg::CurveTable table = sg::curve_table_from_json(text, file);
-    std::vector<std::string> overrides = params;
-    if (overrides.empty())
-      for (const auto& [k, v] : table.parameters) overrides.push_back(k + "=" + sg::to_string(v));
-    const sg::CurveScheme scheme = sg::load_curve_scheme(scheme_spec.empty() ? table.scheme : scheme_spec, overrides);
-    const auto failures = sg::verify_curve_table(table, scheme);
-    if (failures.empty()) {
-      std::size_t values = 0;
-      for (const auto& f : table.functions) values += f.values.size();
-      std::cout << file << ": OK (" << table.scheme << ", n = " << table.n << ", " << values
-                << " exact values; scaling relations, partition of unity and symmetry hold exactly)\n";
-    } else {
-      ++bad;
-      for (const auto& f : failures) std::cout << file << ": FAIL: " << f << "\n";
-    }
-  }
-  return bad == 0 ? 0 : 1;
-}
-
-int run_plot(const std::string& scheme_spec, long n, const std::string& out, const std::vector<std::string>& params) {
-  if (n < 1) throw sg::Error("--n must be at least 1, got " + std::to_string(n));
-  const sg::CurveScheme scheme = sg::load_curve_scheme(scheme_spec, params);
-  const sg::CurveTable table = sg::make_table(scheme, sg::solve_by_residues(scheme, n));
-  const std::filesystem::path path(out);
-  sg::OutputTransaction tx(path.has_parent_path() ? path.parent_path() : std::filesystem::path("."));
-  tx.add(path.filename().string(), sg::plot_table_svg(table));
-  tx.commit();
-  std::cout << "wrote " << out << "\n";
-  return 0;
-}
-
-}  // namespace
+#include "cli/commands.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -237,19 +25,16 @@ int main(int argc, char** argv) {
       "  stencilgen plot --scheme fourpoint --n 21 --out fourpoint.svg\n"
       "  stencilgen list"};
   app.require_subcommand(0, 1);
-  std::string scheme, rates, out, route = "both";
-  std::vector<std::string> params;
-  bool quiet = false;
-  app.add_option("--scheme", scheme, "scheme name (a file in the schemes directory) or path to a scheme .json");
-  app.add_option("-n,--n", rates, "rates: N (every rate 1..N), A-B (a range) or a list like 3,5,7");
-  app.add_option("--out", out, "output directory; tables go to OUT/<scheme>/n<N>.json and .sgc");
-  app.add_option("--param", params, "override a scheme parameter, NAME=RATIONAL (e.g. w=1/32); repeatable");
-  app.add_option("--route", route, "solver: residue (a), eigen (b) or both, cross-checked (default)")
+  sg::cli::GenerateOptions gen;
+  app.add_option("--scheme", gen.scheme, "scheme name (a file in the schemes directory) or path to a scheme .json");
+  app.add_option("-n,--n", gen.rates, "rates: N (every rate 1..N), A-B (a range) or a list like 3,5,7");
+  app.add_option("--out", gen.out, "output directory; tables go to OUT/<scheme>/n<N>.json and .sgc");
+  app.add_option("--param", gen.params, "override a scheme parameter, NAME=RATIONAL (e.g. w=1/32); repeatable");
+  app.add_option("--route", gen.route, "solver: residue (a), eigen (b) or both, cross-checked (default)")
       ->check(CLI::IsMember({"residue", "eigen", "both"}));
-  app.add_flag("-q,--quiet", quiet, "no progress lines on stderr");
-  std::string valences, precision = "double";
-  app.add_option("--valence", valences, "surface schemes: valences, e.g. 3-8, 5 or 3,5,6 (default 3-8)");
-  app.add_option("--binary-precision", precision, "surface schemes: scalars of the .sgs/.sgt file, double (default) or single")
+  app.add_flag("-q,--quiet", gen.quiet, "no progress lines on stderr");
+  app.add_option("--valence", gen.valences, "surface schemes: valences, e.g. 3-8, 5 or 3,5,6 (default 3-8)");
+  app.add_option("--binary-precision", gen.precision, "surface schemes: scalars of the .sgs/.sgt file, double (default) or single")
       ->check(CLI::IsMember({"double", "single"}));
 
   CLI::App* analyze = app.add_subcommand("analyze", "smoothness analysis of a surface scheme's extraordinary rules");
@@ -283,30 +68,15 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   try {
-    if (verify->parsed()) return run_verify(verify_files, verify_scheme, verify_params);
-    if (analyze->parsed()) return run_analyze(analyze_scheme, analyze_valences, analyze_params, analyze_samples);
-    if (plot->parsed()) return run_plot(plot_scheme, plot_n, plot_out, plot_params);
-    if (list->parsed()) {
-      std::cout << "schemes in " << sg::default_schemes_dir().string() << ":\n";
-      for (const auto& name : sg::available_schemes(sg::default_schemes_dir(), sg::SchemeFamily::Curve))
-        std::cout << "  " << name << " (curve)\n";
-      for (const auto& name : sg::available_schemes(sg::default_schemes_dir(), sg::SchemeFamily::Quad))
-        std::cout << "  " << name << " (quad surface)\n";
-      for (const auto& name : sg::available_schemes(sg::default_schemes_dir(), sg::SchemeFamily::Triangle))
-        std::cout << "  " << name << " (triangle surface)\n";
-      return 0;
-    }
-    if (scheme.empty() || rates.empty() || out.empty()) {
+    if (verify->parsed()) return sg::cli::verify(verify_files, verify_scheme, verify_params);
+    if (analyze->parsed()) return sg::cli::analyze(analyze_scheme, analyze_valences, analyze_params, analyze_samples);
+    if (plot->parsed()) return sg::cli::plot(plot_scheme, plot_n, plot_out, plot_params);
+    if (list->parsed()) return sg::cli::list();
+    if (gen.scheme.empty() || gen.rates.empty() || gen.out.empty()) {
       std::cerr << "stencilgen: error: generation needs --scheme, --n and --out (see --help)\n";
       return 2;
     }
-    const std::string type = sg::scheme_type(scheme);
-    if (type == "quad")
-      return run_generate_quad(scheme, rates, valences.empty() ? "3-8" : valences, out, params, precision, quiet);
-    if (type == "triangle")
-      return run_generate_triangle(scheme, rates, valences.empty() ? "3-8" : valences, out, params, precision, quiet);
-    if (!valences.empty()) throw sg::Error("--valence applies to surface schemes; '" + scheme + "' is a curve scheme");
-    return run_generate(scheme, rates, out, params, route, quiet);
+    return sg::cli::generate(gen);
   } catch (const sg::Error& e) {
     std::cerr << "stencilgen: error: " << e.what() << "\n";
     return 1;

@@ -46,4 +46,14 @@ std::vector<long> parse_rate_spec(const std::string& spec, const std::string& wh
   return out;
 }
 
+std::vector<int> parse_valence_spec(const std::string& spec) {
+  const bool single = !spec.empty() && spec.find_first_not_of("0123456789") == std::string::npos;
+  std::vector<int> valences;
+  for (long v : parse_rate_spec(single ? spec + "," + spec : spec, "--valence")) {
+    if (v < 3) throw Error("--valence: valences start at 3, got " + std::to_string(v));
+    valences.push_back(static_cast<int>(v));
+  }
+  return valences;
+}
+
 }  // namespace sg

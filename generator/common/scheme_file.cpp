@@ -3,24 +3,10 @@
 #include "common/hash.hpp"
 #include "common/parameters_json.hpp"
 #include "common/read_file.hpp"
-#include "curve/curve_scheme_loader.hpp"
 
 namespace sg {
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-fs::path resolve_scheme_file(const std::string& spec, const fs::path& dir) {
-  if (spec.empty()) throw Error("empty scheme name");
-  const bool is_path = spec.find('/') != std::string::npos || spec.ends_with(".json");
-  const fs::path file = is_path ? fs::path(spec) : dir / (spec + ".json");
-  if (!fs::is_regular_file(file)) {
-    if (is_path) throw Error(spec + ": no such scheme file");
-    std::string list;
-    for (const auto& n : available_schemes(dir)) list += (list.empty() ? "" : ", ") + n;
-    throw Error("unknown scheme '" + spec + "' (no " + file.string() + "); available: " + list);
-  }
-  return file;
-}
 
 json read_scheme_document(const fs::path& file, const SchemeContext& ctx) {
   json doc;

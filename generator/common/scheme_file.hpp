@@ -43,10 +43,6 @@ class SchemeContext {
   std::string file_;
 };
 
-// `spec` is a path (contains '/' or ends in .json) or a name looked up in `dir`.
-// Throws with the list of available schemes when the name is unknown.
-std::filesystem::path resolve_scheme_file(const std::string& spec, const std::filesystem::path& dir);
-
 // Parses the file and checks "format" and "version".
 nlohmann::json read_scheme_document(const std::filesystem::path& file, const SchemeContext& ctx);
 

@@ -1,11 +1,9 @@
 #include "curve/curve_scheme_loader.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
-#include "common/read_file.hpp"
 #include "common/scheme_file.hpp"
 #include "curve/knot_insertion.hpp"
 #include "curve/support.hpp"
@@ -122,32 +120,6 @@ void build_from_knots(CurveScheme& s, const KnotSpec& spec, const Context& ctx) 
 }
 
 }  // namespace
-
-fs::path default_schemes_dir() {
-  if (const char* env = std::getenv("STENCILGEN_SCHEMES_DIR"); env && *env) return env;
-  return STENCILGEN_SCHEMES_DIR;
-}
-
-std::vector<std::string> available_schemes(const fs::path& dir, SchemeFamily family) {
-  std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    if (entry.path().extension() != ".json") continue;
-    if (family != SchemeFamily::Any) {
-      std::string type;
-      try {
-        type = json::parse(read_file(entry.path())).value("type", "");
-      } catch (const std::exception&) {
-        continue;  // unreadable files belong to no family; loading them reports why
-      }
-      const SchemeFamily of = type == "quad" ? SchemeFamily::Quad : type == "triangle" ? SchemeFamily::Triangle : SchemeFamily::Curve;
-      if (of != family) continue;
-    }
-    names.push_back(entry.path().stem().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
 
 CurveScheme load_curve_scheme(const std::string& spec, const std::vector<std::string>& overrides, const fs::path& dir) {
   const fs::path file = resolve_scheme_file(spec, dir);

@@ -1,17 +1,12 @@
 #include "quad/quad_scheme_loader.hpp"
 
 #include "common/hash.hpp"
+#include "curve/curve_scheme_loader.hpp"
 #include "common/scheme_file.hpp"
 
 namespace sg {
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-std::string scheme_type(const std::string& spec, const fs::path& dir) {
-  const fs::path file = resolve_scheme_file(spec, dir);
-  const SchemeContext ctx(file.string());
-  return read_scheme_document(file, ctx).at("type").get<std::string>();
-}
 
 namespace {
 

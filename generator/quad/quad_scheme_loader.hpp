@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "curve/curve_scheme_loader.hpp"
+#include "common/scheme_registry.hpp"
 #include "quad/quad_scheme.hpp"
 
 namespace sg {
@@ -14,8 +14,5 @@ namespace sg {
 // file and field.
 QuadScheme load_quad_scheme(const std::string& spec, const std::vector<std::string>& overrides = {},
                             const std::filesystem::path& dir = default_schemes_dir());
-
-// The "type" field of a scheme file ("curve-uniform", "quad", ...), for dispatch.
-std::string scheme_type(const std::string& spec, const std::filesystem::path& dir = default_schemes_dir());
 
 }  // namespace sg

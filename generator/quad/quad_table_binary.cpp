@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <map>
-#include <numeric>
 
 #include "base/error.hpp"
 #include "common/byte_writer.hpp"
@@ -11,18 +10,6 @@
 
 namespace sg {
 namespace fmt = stencil_runtime::format;
-
-void put_scalar(std::string& out, double d, BinaryPrecision p) {
-  if (p == BinaryPrecision::Double)
-    put<double>(out, d);
-  else
-    put<float>(out, static_cast<float>(d));
-}
-
-std::pair<long, long> reduced_fraction(long p, long q) {
-  const long g = std::gcd(p, q);
-  return {p / g, q / g};
-}
 
 namespace {
 

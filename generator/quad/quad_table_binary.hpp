@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "common/table_encoding.hpp"
 #include "curve/curve_solution.hpp"
 #include "quad/quad_scheme.hpp"
 #include "quad/quad_table.hpp"
@@ -21,14 +22,6 @@ struct QuadTableSet {
   std::vector<int> valences;
   std::vector<std::vector<QuadTable>> tables;  // [valence][rate]
 };
-
-enum class BinaryPrecision { Double = 8, Single = 4 };
-
-// One stored scalar, float64 or float32 (the binary tables' weights).
-void put_scalar(std::string& out, double value, BinaryPrecision precision);
-
-// p/q in lowest terms, so that equal parameter points of different grids share one stored stencil.
-std::pair<long, long> reduced_fraction(long p, long q);
 
 // One .sgs file: the scheme's subdivision rules (double), regular curve values and, per valence, the stencils of all
 // rates, each distinct parameter point stored once (docs/table-format.md).

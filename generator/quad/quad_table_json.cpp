@@ -3,19 +3,10 @@
 #include <nlohmann/json.hpp>
 
 #include "common/parameters_json.hpp"
+#include "common/table_encoding.hpp"
 
 namespace sg {
 using ojson = nlohmann::ordered_json;
-
-ojson exact_entry_json(const ScaledVector& w, const Rational& x, const Rational& y) {
-  ojson e;
-  e["at"] = {to_string(x), to_string(y)};
-  e["denominator"] = w.den.str();
-  ojson nums = ojson::array();
-  for (const auto& v : w.num) nums.push_back(v.str());
-  e["numerators"] = nums;
-  return e;
-}
 
 namespace {
 
@@ -76,79 +67,6 @@ std::string quad_table_to_json(const QuadTable& t) {
   append_entries(out, "centres", t.centres, 2 * t.n, 1, true);
   out += "}\n";
   return out;
-}
-
-}  // namespace sg
-
-#include "base/error.hpp"
-#include "common/hash.hpp"
-#include "quad/patch_layout.hpp"
-
-namespace sg {
-
-std::string table_format(const std::string& text) {
-  try {
-    const ojson doc = ojson::parse(text);
-    return doc.is_object() ? doc.value("format", "") : "";
-  } catch (const ojson::parse_error&) {
-    return "";
-  }
-}
-
-std::vector<std::string> verify_quad_table_json(const std::string& text, const std::string& origin,
-                                             const QuadScheme& scheme) {
-  std::vector<std::string> failures;
-  ojson doc;
-  try {
-    doc = ojson::parse(text);
-    if (doc.at("format") != kQuadTableFormat || doc.at("version") != kQuadTableVersion)
-      throw Error("not a version " + std::to_string(kQuadTableVersion) + " surface table");
-    if (doc.at("scheme_hash") != hex64(scheme.hash))
-      failures.push_back("scheme hash " + doc.at("scheme_hash").get<std::string>() + " is not that of '" +
-                         scheme.name + "' (" + hex64(scheme.hash) + ")");
-    const int v = doc.at("valence").get<int>();
-    const long n = doc.at("n").get<long>();
-    if (n < 1 || v < 3) throw Error("invalid valence or n");
-    const PatchGrid patch = solve_ev_patch(scheme, v, 2 * n);
-    if (doc.at("reflection").get<std::vector<std::size_t>>() != PatchLayout(v).reflection())
-      failures.push_back("the reflection permutation is wrong");
-    std::size_t expected_count[2] = {static_cast<std::size_t>((n + 1) * (n + 2) / 2),
-                                     static_cast<std::size_t>(n * (n + 1) / 2)};
-    int kind = 0;
-    for (const char* key : {"nodes", "centres"}) {
-      const ojson& list = doc.at(key);
-      if (list.size() != expected_count[kind])
-        failures.push_back(std::string(key) + ": " + std::to_string(list.size()) + " entries, expected " +
-                           std::to_string(expected_count[kind]));
-      for (const ojson& e : list) {
-        const Rational x = parse_rational(e.at("at")[0].get<std::string>()) * 2 * n;
-        const Rational y = parse_rational(e.at("at")[1].get<std::string>()) * 2 * n;
-        const std::string where = std::string(key) + " at (" + e.at("at")[0].get<std::string>() + ", " +
-                                  e.at("at")[1].get<std::string>() + ")";
-        if (denominator(x) != 1 || denominator(y) != 1 || x < 0 || y < 0 || x > 2 * n || y > 2 * n) {
-          failures.push_back(where + ": not a point of the grid 1/(2n) in the patch");
-          continue;
-        }
-        const Integer den(e.at("denominator").get<std::string>());
-        std::vector<Rational> w;
-        Integer sum = 0;
-        for (const ojson& num : e.at("numerators")) {
-          const Integer k(num.get<std::string>());
-          sum += k;
-          w.emplace_back(k, den);
-        }
-        if (sum != den) failures.push_back(where + ": the weights do not sum to 1");
-        if (w != patch.at(static_cast<long>(numerator(x)), static_cast<long>(numerator(y))))
-          failures.push_back(where + ": differs from the re-solved stencil");
-      }
-      ++kind;
-    }
-  } catch (const Error& e) {
-    failures.push_back(origin + ": " + e.what());
-  } catch (const std::exception& e) {
-    failures.push_back(origin + ": malformed surface table (" + e.what() + ")");
-  }
-  return failures;
 }
 
 }  // namespace sg

@@ -5,7 +5,7 @@
 // steps, which remove the lattice's rotation), and the characteristic map from
 // the subdominant eigenvectors, sampled through the patch stencils of every
 // sector. Computed in double from the 80-digit weights.
-#include "quad/quad_analysis.hpp"
+#include "common/smoothness_report.hpp"
 #include "triangle/triangle_scheme.hpp"
 
 namespace sg {

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "curve/curve_scheme_loader.hpp"
+#include "common/scheme_registry.hpp"
 #include "triangle/triangle_scheme.hpp"
 
 namespace sg {

@@ -7,7 +7,7 @@
 #include "base/error.hpp"
 #include "common/hash.hpp"
 #include "common/parameters_json.hpp"
-#include "quad/quad_table_json.hpp"
+#include "common/table_encoding.hpp"
 
 namespace sg {
 using ojson = nlohmann::ordered_json;

@@ -2,7 +2,7 @@
 #include <string>
 #include <vector>
 
-#include "quad/quad_table_binary.hpp"
+#include "common/table_encoding.hpp"
 #include "triangle/triangle_table.hpp"
 
 namespace sg {

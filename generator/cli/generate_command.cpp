@@ -1,0 +1,95 @@
+// stencilgen --scheme S --n RATES [--valence V] --out DIR: curve, quad or triangle tables.
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include "base/error.hpp"
+#include "cli/cli_helpers.hpp"
+#include "cli/commands.hpp"
+#include "common/rate_spec.hpp"
+#include "common/scheme_registry.hpp"
+#include "curve/curve_scheme_loader.hpp"
+#include "curve/generate_curve.hpp"
+#include "quad/generate_quad.hpp"
+#include "quad/quad_analysis.hpp"
+#include "quad/quad_scheme_loader.hpp"
+#include "triangle/generate_triangle.hpp"
+#include "triangle/triangle_scheme_loader.hpp"
+
+namespace sg::cli {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int generate_curve(const GenerateOptions& o) {
+  const auto rates = parse_rate_spec(o.rates);
+  const CurveScheme scheme = load_curve_scheme(o.scheme, o.params);
+  const RouteChoice choice = o.route == "residue" ? RouteChoice::Residue
+                             : o.route == "eigen" ? RouteChoice::Eigen
+                                                  : RouteChoice::Both;
+  const auto start = std::chrono::steady_clock::now();
+  const auto tables = generate_curve_tables(scheme, rates, choice, progress_lines(o.quiet));
+  write_curve_tables(scheme, tables, o.out);
+  std::cout << "wrote " << tables.size() << " exact tables (JSON + binary) for '" << scheme.name << "' to "
+            << (std::filesystem::path(o.out) / scheme.name).string() << " in " << seconds_since(start) << " s\n";
+  return 0;
+}
+
+int generate_quad(const GenerateOptions& o, const std::string& valence_spec) {
+  const auto rates = parse_rate_spec(o.rates);
+  const auto valences = parse_valence_spec(valence_spec);
+  const QuadScheme scheme = load_quad_scheme(o.scheme, o.params);
+  const auto start = std::chrono::steady_clock::now();
+  for (int v : valences) {
+    scheme.vertex_rule(v);
+    const SmoothnessReport report = analyse_quad_valence(scheme, v, 16);
+    if (!report.ok())
+      std::cerr << "stencilgen: warning: '" << scheme.name << "' fails the smoothness analysis at valence " << v
+                << " (tables are still exact; see `stencilgen analyze`):\n"
+                << format_report(report);
+  }
+  const auto set = generate_quad_tables(scheme, valences, rates, progress_lines(o.quiet));
+  const std::size_t bytes = write_quad_tables(scheme, set, o.out, binary_precision(o.precision));
+  std::cout << "wrote exact surface tables for '" << scheme.name << "' (valences " << valence_spec << ", rates "
+            << rates.front() << ".." << rates.back() << ", " << rates.size() * valences.size() << " tables) to "
+            << (std::filesystem::path(o.out) / scheme.name).string() << " in " << seconds_since(start)
+            << " s; binary " << scheme.name << ".sgs: " << bytes << " bytes (" << o.precision << " precision)\n";
+  return 0;
+}
+
+int generate_triangle(const GenerateOptions& o, const std::string& valence_spec) {
+  const auto rates = parse_rate_spec(o.rates);
+  auto valences = parse_valence_spec(valence_spec);
+  const TriangleScheme scheme = load_triangle_scheme(o.scheme, o.params);
+  // Valence 6 is the regular patch, which the runtime needs for every ordinary triangle.
+  if (std::find(valences.begin(), valences.end(), 6) == valences.end()) valences.push_back(6);
+  std::sort(valences.begin(), valences.end());
+  const auto start = std::chrono::steady_clock::now();
+  const auto set = generate_triangle_tables(scheme, valences, rates, progress_lines(o.quiet));
+  const std::size_t bytes = write_triangle_tables(scheme, set, o.out, binary_precision(o.precision));
+  std::string exact, approx;
+  for (int v : valences) (scheme.exact_neighbour_weight(v) ? exact : approx) += (std::to_string(v) + " ");
+  std::cout << "wrote triangle tables for '" << scheme.name << "' (valences " << valence_spec << " and 6, rates "
+            << rates.front() << ".." << rates.back() << ", " << rates.size() * valences.size() << " tables) to "
+            << (std::filesystem::path(o.out) / scheme.name).string() << " in " << seconds_since(start)
+            << " s; exact at valences " << (exact.empty() ? "none " : exact) << "; high precision (" << kRealDigits
+            << " digits, not exact) at " << (approx.empty() ? "none " : approx) << "; binary " << scheme.name
+            << ".sgt: " << bytes << " bytes (" << o.precision << " precision)\n";
+  return 0;
+}
+
+}  // namespace
+
+int generate(const GenerateOptions& o) {
+  const std::string type = scheme_type(o.scheme);
+  const std::string valences = o.valences.empty() ? "3-8" : o.valences;
+  if (type == "quad") return generate_quad(o, valences);
+  if (type == "triangle") return generate_triangle(o, valences);
+  if (!o.valences.empty()) throw Error("--valence applies to surface schemes; '" + o.scheme + "' is a curve scheme");
+  return generate_curve(o);
+}
+
+}  // namespace sg::cli

@@ -1,0 +1,27 @@
+// stencilgen plot --scheme S --n N --out FILE.svg: the scaling functions of a curve scheme at rate n.
+#include <filesystem>
+#include <iostream>
+
+#include "base/error.hpp"
+#include "cli/commands.hpp"
+#include "common/atomic_output.hpp"
+#include "curve/curve_scheme_loader.hpp"
+#include "curve/curve_table.hpp"
+#include "curve/plot_svg.hpp"
+#include "curve/residue_solver.hpp"
+
+namespace sg::cli {
+
+int plot(const std::string& scheme_spec, long n, const std::string& out, const std::vector<std::string>& params) {
+  if (n < 1) throw Error("--n must be at least 1, got " + std::to_string(n));
+  const CurveScheme scheme = load_curve_scheme(scheme_spec, params);
+  const CurveTable table = make_table(scheme, solve_by_residues(scheme, n));
+  const std::filesystem::path path(out);
+  OutputTransaction tx(path.has_parent_path() ? path.parent_path() : std::filesystem::path("."));
+  tx.add(path.filename().string(), plot_table_svg(table));
+  tx.commit();
+  std::cout << "wrote " << out << "\n";
+  return 0;
+}
+
+}  // namespace sg::cli
