@@ -172,7 +172,13 @@ TEST_CASE("bad tables and bad meshes get clear errors, and nothing is written", 
   CHECK(eval(good.string(), write("tri.obj", quadv + "f 1 2 3\nf 1 3 4\n")).output.find("has a boundary") != std::string::npos);
   CHECK(eval(good.string(), write("badindex.obj", quadv + "f 1 2 3 9\n")).output.find("badindex.obj:5: face index 9") != std::string::npos);
   CHECK(eval(good.string(), cube, "--face 6 --uv 0,0").output.find("face 6 does not exist") != std::string::npos);
-  CHECK(eval(good.string(), cube, "--face 0 --uv 1/29,0").output.find("tables with rate 29 make it exact") != std::string::npos);
+  // A rational no stored rate holds, and a decimal: within a bound, said on the line before the point.
+  const CliResult approximate = eval(good.string(), cube, "--face 0 --uv 1/29,0");
+  CHECK(approximate.status == 0);
+  CHECK(approximate.output.find("within") != std::string::npos);
+  CHECK(approximate.output.find("of the exact one (bound; tolerance") != std::string::npos);
+  CHECK(eval(good.string(), cube, "--face 0 --uv 0.3,0.7 --tolerance 0").output.find("--tolerance must be a positive number") !=
+        std::string::npos);
   CHECK(eval(good.string(), cube, "--face 0 --uv 3/2,0").output.find("lies outside face 0 (its domain is 0 <= u, v <= 1)") != std::string::npos);
   // A valence the tables lack: name the vertex and the stencilgen call.
   const fs::path only5 = dir / "only5";

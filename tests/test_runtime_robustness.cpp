@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
@@ -176,8 +177,20 @@ TEST_CASE("tool options and parameters outside their limits are refused, not wra
   auto tess = [&](const std::string& extra) {
     return run_stenciltess("--tables " + tables + " --mesh " + cube + " --out " + (dir / "t.ply").string() + " " + extra);
   };
-  // A denominator whose lcm used to wrap to the point at (0, 1/2).
-  expect_error(eval("--face 0 --uv 1/9223372036854775807,1/2"), "no table holds it exactly");
+  // A denominator whose lcm used to wrap, silently giving the point at (0, 1/2):
+  // now the point at the parameter given, within a bound of the exact one.
+  auto last_point = [](const CliResult& r) {
+    const auto line = r.output.substr(r.output.rfind('\n', r.output.size() - 2) + 1);
+    Point p{};
+    std::istringstream(line) >> p[0] >> p[1] >> p[2];
+    return p;
+  };
+  const CliResult wrapped = eval("--face 0 --uv 4611686018427387903/9223372036854775807,1/3");
+  INFO(wrapped.output);
+  REQUIRE(wrapped.status == 0);
+  CHECK(wrapped.output.find("within") != std::string::npos);
+  const Point half = last_point(eval("--face 0 --uv 1/2,1/3")), got = last_point(wrapped);
+  CHECK(std::hypot(got[0] - half[0], got[1] - half[1], got[2] - half[2]) < 1e-12);
   expect_error(eval("--face 0 --uv 1/99999999999999999999,1/2"), "is not an exact rational");
   expect_error(eval("--face -1 --uv 1/2,1/2"), "--face '-1' is not a number");
   expect_error(eval("--face 0 --uv 1/2"), "--uv expects U,V");

@@ -1,5 +1,6 @@
 // stencileval: limit points of a control mesh at exact rational parameters,
 // from the tables written by stencilgen, for any scheme family.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -13,13 +14,29 @@ namespace {
 using namespace stencil_runtime;
 using stencil_tools::ParameterText;
 
-Point evaluate(const Surface& surface, std::size_t face, const ParameterText& u, const ParameterText& v) {
-  if (!u.exact || !v.exact)
-    throw EvaluationError("decimal parameters are not supported yet; give exact rationals such as 1/3");
-  const Point p = surface.evaluate(face, {u.fraction, v.fraction});
-  for (double x : p)
-    if (!std::isfinite(x)) throw EvaluationError("the limit point is not finite (coordinates too large)");
-  return p;
+// The diagonal of the bounding box of a face's control points (its corners).
+double face_extent(const Mesh& mesh, std::size_t face) {
+  std::size_t first = 0;
+  for (std::size_t f = 0; f < face; ++f) first += static_cast<std::size_t>(mesh.face_sizes[f]);
+  Point lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (int c = 0; c < mesh.face_sizes[face]; ++c) {
+    const Point& p = mesh.positions[static_cast<std::size_t>(mesh.face_vertices[first + static_cast<std::size_t>(c)])];
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  }
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+// Exact rationals stay exact where the tables reach them; decimals (and
+// rationals they do not reach) are evaluated within `relative` of the face's
+// control-point extent, and the bound comes back.
+Evaluation evaluate(const Surface& surface, const Mesh& mesh, std::size_t face, const ParameterText& u, const ParameterText& v,
+                    double relative) {
+  if (face >= mesh.face_count())
+    throw EvaluationError("face " + std::to_string(face) + " does not exist (the mesh has " + std::to_string(mesh.face_count()) +
+                          " faces, numbered from 0)");
+  const double tolerance = relative * face_extent(mesh, face);
+  if (u.exact && v.exact) return surface.evaluate(face, ExactParameter{u.fraction, v.fraction}, tolerance);
+  return surface.evaluate(face, u.value, v.value, tolerance);
 }
 
 }  // namespace
@@ -34,18 +51,27 @@ int main(int argc, char** argv) {
       "  triangle (triangle scheme): u along v0->v1, v along v0->v2, u + v <= 1;\n"
       "  N-gon (quad scheme, N != 4): sub-face s (the quad at corner s after the scheme's polygon step) is the tile\n"
       "  [s % U, s % U + 1/2] x [s / U, s / U + 1/2], U = 2 (N = 3), 3 (N = 5..9), 1 + floor(sqrt(N - 1)) above.\n"
-      "Prints the point as `x y z` on the last line.\n\n"
+      "U and V are exact rationals (1/3) or decimals (0.3). Exact where the tables hold the parameter, directly or\n"
+      "after the scheme's own subdivision of the patch (most decimals are exact binary fractions and are reached);\n"
+      "otherwise within --tolerance times the face's control-point extent, and the line before the point says\n"
+      "how far it may be from the exact one. Prints the point as `x y z` on the last line.\n\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --face 0 --uv 1/3,1/2\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --batch queries.txt   (lines: F U V)\n"
+      "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --face 0 --uv 0.3,0.7\n"
       "  stencileval --tables tables/loop --mesh meshes/tri-torus.obj --face 0 --uv 1/3,1/3",
       "stencileval"};
   std::string tables_spec, mesh_path, uv, batch, face_text;
+  double tolerance = 1e-12;
   app.add_option("--tables", tables_spec, "a .sgs or .sgt table file, the directory stencilgen wrote it to, or a directory of exact JSON quad tables")->required();
   app.add_option("--mesh", mesh_path, "closed control mesh (.obj): polygons for a quad scheme, triangles for a triangle scheme")->required();
   app.add_option("--face", face_text, "face number, from 0 in file order");
-  app.add_option("--uv", uv, "parameters U,V as exact rationals, e.g. 1/3,1/2");
+  app.add_option("--uv", uv, "parameters U,V: exact rationals (1/3,1/2) or decimals (0.3,0.7)");
+  app.add_option("--tolerance", tolerance,
+                 "where the tables do not reach the parameter: largest error as a fraction of the face's control-point "
+                 "extent (default 1e-12)");
   app.add_option("--batch", batch, "file of `F U V` lines; prints one `x y z` line per query");
   return stencil_tools::run_tool(app, argc, argv, [&] {
+    if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive number");
     if (batch.empty() && (face_text.empty() || uv.empty()))
       throw std::runtime_error("give --face and --uv, or --batch (see --help)");
     if (!batch.empty() && (!face_text.empty() || !uv.empty()))
@@ -66,8 +92,9 @@ int main(int argc, char** argv) {
         if (!(ls >> f) || f[0] == '#') continue;
         try {
           if (!(ls >> u >> v) || (ls >> extra)) throw std::runtime_error("expected `F U V`, got '" + line + "'");
-          const Point p = evaluate(surface, stencil_tools::parse_index(f, "face"), stencil_tools::parse_parameter(u),
-                                   stencil_tools::parse_parameter(v));
+          const Point p = evaluate(surface, mesh, stencil_tools::parse_index(f, "face"), stencil_tools::parse_parameter(u),
+                                   stencil_tools::parse_parameter(v), tolerance)
+                              .point;
           char text[96];
           std::snprintf(text, sizeof text, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
           out += text;
@@ -80,9 +107,13 @@ int main(int argc, char** argv) {
     }
     const std::size_t face = stencil_tools::parse_index(face_text, "--face");
     const auto [u, v] = stencil_tools::split_pair(uv, "--uv");
-    const Point p = evaluate(surface, face, stencil_tools::parse_parameter(u), stencil_tools::parse_parameter(v));
-    std::printf("face %zu at (%s): limit point of '%s'\n%.17g %.17g %.17g\n", face, uv.c_str(), tables->scheme().c_str(), p[0],
-                p[1], p[2]);
+    const Evaluation e = evaluate(surface, mesh, face, stencil_tools::parse_parameter(u), stencil_tools::parse_parameter(v), tolerance);
+    if (e.exact)
+      std::printf("face %zu at (%s): limit point of '%s'\n", face, uv.c_str(), tables->scheme().c_str());
+    else
+      std::printf("face %zu at (%s): limit point of '%s', within %.3g of the exact one (bound; tolerance %.3g)\n", face,
+                  uv.c_str(), tables->scheme().c_str(), e.bound, tolerance * face_extent(mesh, face));
+    std::printf("%.17g %.17g %.17g\n", e.point[0], e.point[1], e.point[2]);
     return 0;
   });
 }

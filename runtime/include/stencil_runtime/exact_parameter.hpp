@@ -10,6 +10,12 @@
 
 namespace stencil_runtime {
 
+// Exact parameter arithmetic that would need more than 64 bits; evaluation
+// then continues at the nearest double (Surface::evaluate with a tolerance).
+struct ParameterOverflow : EvaluationError {
+  using EvaluationError::EvaluationError;
+};
+
 struct Fraction {
   std::int64_t num = 0, den = 1;  // lowest terms, den > 0
 
@@ -25,7 +31,7 @@ struct Fraction {
 // anything else, including numbers that do not fit in 64 bits.
 Fraction parse_fraction(std::string_view text);
 
-// Overflow-checked operations (throw EvaluationError naming the operation).
+// Overflow-checked operations (throw ParameterOverflow naming the operation).
 Fraction add(const Fraction& a, const Fraction& b);
 Fraction subtract(const Fraction& a, const Fraction& b);
 Fraction multiply(const Fraction& a, std::int64_t k);

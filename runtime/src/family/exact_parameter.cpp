@@ -8,7 +8,7 @@ namespace stencil_runtime {
 namespace {
 
 [[noreturn]] void overflow(const char* what) {
-  throw EvaluationError(std::string("exact parameter arithmetic overflows 64 bits (") + what + ")");
+  throw ParameterOverflow(std::string("exact parameter arithmetic overflows 64 bits (") + what + ")");
 }
 
 std::int64_t checked_mul(std::int64_t a, std::int64_t b) {

@@ -192,7 +192,13 @@ Approximation QuadFamily::descend(std::size_t face, P u, P v, double tolerance, 
 }
 
 Approximation QuadFamily::evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const {
-  return descend(face, at.u, at.v, tolerance, prepared);
+  try {
+    return descend(face, at.u, at.v, tolerance, prepared);
+  } catch (const ParameterOverflow&) {  // beyond 64-bit fractions: the nearest double
+    Approximation a = descend(face, at.u.to_double(), at.v.to_double(), tolerance, prepared);
+    a.exact = false;
+    return a;
+  }
 }
 
 Approximation QuadFamily::evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const {
