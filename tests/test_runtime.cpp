@@ -258,6 +258,16 @@ TEST_CASE("the runtime loads the exact JSON tables too, with the same stencils a
         }
     }
   CHECK_THROWS_WITH(QuadTables::load_json_directory(json_dir.string(), binary.scheme_hash() + 1), Catch::Contains("different scheme"));
+  // descent.json: the JSON tables evaluate at any parameter as the binary file does.
+  {
+    const Mesh cube = read_obj((kMeshes / "cube.obj").string());
+    const Surface from_json = surface_of(loaded, cube), from_binary = surface_of(Tables::load((dir / "nonpoly.sgs").string()), cube);
+    for (std::size_t f = 0; f < cube.face_count(); ++f) {
+      const Evaluation a = from_json.evaluate(f, 0.3, 1.0 / 7, 1e-9), b = from_binary.evaluate(f, 0.3, 1.0 / 7, 1e-9);
+      REQUIRE(distance(a.point, b.point) < 1e-14);
+      REQUIRE(a.bound == Approx(b.bound).epsilon(1e-9));
+    }
+  }
   fs::remove(json_dir / "v5" / "n4.json");
   CHECK_THROWS_WITH(Tables::load(json_dir.string()), Catch::Contains("different set of rates"));
   fs::remove_all(dir);

@@ -12,6 +12,7 @@
 #include "curve/residue_solver.hpp"
 #include "quad/ev_patch_solver.hpp"
 #include "quad/quad_descent.hpp"
+#include "quad/quad_descent_json.hpp"
 #include "quad/quad_table_json.hpp"
 
 namespace sg {
@@ -59,6 +60,7 @@ std::size_t write_quad_tables(const QuadScheme& scheme, const QuadTableSet& set,
     tx.add("regular/n" + std::to_string(2 * set.rates[r]) + ".json",
            curve_table_to_json(make_table(scheme.curve, set.regular[r])));
   add_table_files(tx, set.tables, quad_table_to_json);
+  tx.add("descent.json", quad_descent_to_json(scheme, *set.descent));
   std::string binary = quad_tables_to_binary(scheme, set, precision);
   const std::size_t size = binary.size();
   tx.add(scheme.name + ".sgs", std::move(binary));

@@ -45,6 +45,35 @@ QuadTables::VertexRule read_rule(const JsonFile& f, const std::string& key, cons
   return {static_cast<int>(valence), w[0], w[1], w[2]};
 }
 
+// Sparse rows [[column, "p/q"], ...] over `columns` points.
+SparseRows read_rows(const JsonFile& f, const json& rows, std::size_t count, std::size_t columns, const std::string& field) {
+  f.array(rows, field);
+  if (rows.size() != count) f.fail(field, "expected " + std::to_string(count) + " rows");
+  SparseRows m;
+  m.columns_count = columns;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const std::string row_field = field + "[" + std::to_string(r) + "]";
+    const json& row = f.array(rows[r], row_field);
+    if (row.size() > columns) f.fail(row_field, "more entries than points");
+    for (std::size_t e = 0; e < row.size(); ++e) {
+      const std::string entry = row_field + "[" + std::to_string(e) + "]";
+      const json& pair = f.array(row[e], entry);
+      if (pair.size() != 2) f.fail(entry, "expected [column, weight]");
+      const std::int64_t column = f.integer(pair[0], entry);
+      if (column < 0 || static_cast<std::size_t>(column) >= columns) f.fail(entry, "column out of range");
+      m.columns.push_back(static_cast<std::uint32_t>(column));
+      m.weights.push_back(detail::parse_exact_rational(f.string(pair[1], entry), f, entry));
+    }
+    m.offsets.push_back(m.columns.size());
+  }
+  return m;
+}
+
+bool boolean(const JsonFile& f, const json& value, const std::string& field) {
+  if (!value.is_boolean()) f.fail(field, "expected true or false");
+  return value.get<bool>();
+}
+
 }  // namespace
 
 QuadTables QuadTables::load_json_directory(const std::string& dir, std::uint64_t expected_hash) {
@@ -178,6 +207,62 @@ QuadTables QuadTables::load_json_directory(const std::string& dir, std::uint64_t
     for (const auto& [k, x] : grid) dense[static_cast<std::size_t>(k - lo)] = x;
     t.regular_first_.push_back(lo);
     t.regular_.push_back(std::move(dense));
+  }
+  // The patch subdivision, for evaluation at any parameter (absent in tables from older stencilgens).
+  const fs::path descent = fs::path(dir) / "descent.json";
+  if (fs::exists(descent)) {
+    const JsonFile f(descent.string());
+    const json& doc = f.root();
+    if (f.string(f.member(doc, "format", ""), "format") != "stencilgen-quad-descent" || f.integer(f.member(doc, "version", ""), "version") != 1)
+      f.fail("format", "not a version 1 stencilgen quad descent file");
+    if (f.string(f.member(doc, "scheme", ""), "scheme") != t.name_) f.fail("scheme", "another scheme than the tables'");
+    QuadDescent& d = t.descent_;
+    const json& mask = f.member(doc, "mask", "");
+    d.mask_first = f.integer(f.member(mask, "first", "mask"), "mask.first");
+    const json& coefficients = f.array(f.member(mask, "coefficients", "mask"), "mask.coefficients");
+    if (coefficients.empty() || coefficients.size() > 32 || d.mask_first < -32 || d.mask_first > 32) f.fail("mask", "invalid regular mask");
+    for (std::size_t k = 0; k < coefficients.size(); ++k)
+      d.mask.push_back(detail::parse_exact_rational(f.string(coefficients[k], "mask.coefficients"), f, "mask.coefficients"));
+    d.mask_nonnegative = boolean(f, f.member(doc, "mask_nonnegative", ""), "mask_nonnegative");
+    d.derivative_nonnegative = boolean(f, f.member(doc, "derivative_nonnegative", ""), "derivative_nonnegative");
+    const json& basis = f.member(doc, "polynomial_basis", "");
+    if (!basis.is_null()) {
+      const std::int64_t degree = f.integer(f.member(basis, "degree", "polynomial_basis"), "polynomial_basis.degree");
+      if (degree < 1 || degree > 7) f.fail("polynomial_basis.degree", "must be 1..7");
+      d.degree = static_cast<int>(degree);
+      const json& pieces = f.array(f.member(basis, "pieces", "polynomial_basis"), "polynomial_basis.pieces");
+      if (pieces.size() != 4) f.fail("polynomial_basis.pieces", "expected four pieces");
+      for (const json& piece : pieces) {
+        f.array(piece, "polynomial_basis.pieces");
+        if (piece.size() != static_cast<std::size_t>(degree) + 1) f.fail("polynomial_basis.pieces", "wrong number of coefficients");
+        d.basis.emplace_back();
+        for (const json& c : piece)
+          d.basis.back().push_back(detail::parse_exact_rational(f.string(c, "polynomial_basis.pieces"), f, "polynomial_basis.pieces"));
+      }
+    }
+    const json& valences = f.array(f.member(doc, "valences", ""), "valences");
+    t.descent_valences_.resize(t.valences_.size());
+    std::vector<char> seen(t.valences_.size(), 0);
+    for (std::size_t k = 0; k < valences.size(); ++k) {
+      const std::string field = "valences[" + std::to_string(k) + "]";
+      const std::int64_t v = f.integer(f.member(valences[k], "valence", field), field + ".valence");
+      std::size_t slot = t.valences_.size();
+      for (std::size_t s = 0; s < t.valences_.size(); ++s)
+        if (t.valences_[s].valence == v) slot = s;
+      if (slot == t.valences_.size()) continue;  // a valence the tables were not written for
+      const std::size_t points = static_cast<std::size_t>(QuadTables::points(static_cast<int>(v)));
+      QuadDescent::Valence& out = t.descent_valences_[slot];
+      out.nonnegative = boolean(f, f.member(valences[k], "nonnegative", field), field + ".nonnegative");
+      out.ev_child = read_rows(f, f.member(valences[k], "ev_child", field), points, points, field + ".ev_child");
+      const json& children = f.array(f.member(valences[k], "regular_children", field), field + ".regular_children");
+      if (children.size() != 3) f.fail(field + ".regular_children", "expected three children");
+      for (std::size_t c = 0; c < 3; ++c)
+        out.regular_children[c] = read_rows(f, children[c], 16, points, field + ".regular_children[" + std::to_string(c) + "]");
+      seen[slot] = 1;
+    }
+    for (std::size_t s = 0; s < seen.size(); ++s)
+      if (!seen[s]) f.fail("valences", "no patch subdivision for valence " + std::to_string(t.valences_[s].valence));
+    t.has_descent_ = true;
   }
   t.validate(dir);
   return t;

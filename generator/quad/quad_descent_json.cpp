@@ -1,0 +1,76 @@
+#include "quad/quad_descent_json.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "common/hash.hpp"
+
+namespace sg {
+
+using ojson = nlohmann::ordered_json;
+
+namespace {
+
+// Rows as lists of [column, "p/q"] pairs.
+ojson rows_json(const std::vector<SparseRow>& rows) {
+  ojson out = ojson::array();
+  for (const SparseRow& row : rows) {
+    ojson r = ojson::array();
+    for (const auto& [column, weight] : row) r.push_back({column, to_string(weight)});
+    out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string quad_descent_to_json(const QuadScheme& scheme, const QuadDescent& d) {
+  ojson doc;
+  doc["format"] = kQuadDescentFormat;
+  doc["version"] = kQuadDescentVersion;
+  doc["scheme"] = scheme.name;
+  doc["scheme_hash"] = hex64(scheme.hash);
+  doc["meaning"] =
+      "The scheme's own subdivision of a patch, for evaluation at any parameter (docs/runtime.md). mask: the regular "
+      "curve's a_i from i = first (p'_k = sum_j a_{k-2j} p_j); polynomial_basis: phi(t - p) on [0,1] for p = -1..2, "
+      "coefficients of t^0.. (null: not polynomial); per valence: A0 (ev_child, 2v+8 rows) and the regular children at "
+      "offsets (1,0), (0,1), (1,1) (16 rows each), rows as [column, weight] pairs over the patch's 2v+8 points.";
+  ojson mask;
+  mask["first"] = d.mask_first;
+  ojson coefficients = ojson::array();
+  for (const Rational& a : d.mask) coefficients.push_back(to_string(a));
+  mask["coefficients"] = coefficients;
+  doc["mask"] = mask;
+  doc["mask_nonnegative"] = d.mask_nonnegative;
+  doc["derivative_nonnegative"] = d.derivative_nonnegative;
+  if (d.pieces) {
+    ojson basis = ojson::array();
+    for (int p = -1; p <= 2; ++p) {
+      ojson piece = ojson::array();
+      for (int e = 0; e <= d.pieces->degree; ++e) {
+        const long m = -p;
+        const bool inside = m >= d.pieces->first && m < d.pieces->first + static_cast<long>(d.pieces->pieces.size());
+        piece.push_back(inside ? to_string(d.pieces->pieces[static_cast<std::size_t>(m - d.pieces->first)][static_cast<std::size_t>(e)])
+                               : std::string("0"));
+      }
+      basis.push_back(piece);
+    }
+    doc["polynomial_basis"] = {{"degree", d.pieces->degree}, {"pieces", basis}};
+  } else {
+    doc["polynomial_basis"] = nullptr;
+  }
+  ojson valences = ojson::array();
+  for (const QuadDescent::Valence& v : d.valences) {
+    ojson entry;
+    entry["valence"] = v.valence;
+    entry["nonnegative"] = v.nonnegative;
+    entry["ev_child"] = rows_json(v.subdivision.extraordinary_child);
+    ojson children = ojson::array();
+    for (const auto& child : v.subdivision.regular_children) children.push_back(rows_json(child));
+    entry["regular_children"] = children;
+    valences.push_back(entry);
+  }
+  doc["valences"] = valences;
+  return doc.dump() + "\n";
+}
+
+}  // namespace sg
