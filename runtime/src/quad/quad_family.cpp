@@ -230,6 +230,39 @@ bool QuadFamily::stencil(std::size_t face, const ExactParameter& at, PatchStenci
   return false;
 }
 
+// The n^2 cell centres of a regular face, tensor-product form: rows R[q][i] =
+// sum_c wx(i)[c] P(c, q), then each point sums 4 rows with the weights of its
+// row. N > 0 fixes n at compile time (short loops unrolled), N = 0 reads it.
+template <int N>
+void regular_centres(const QuadPatch& p, const double* wx, int n_runtime, const Point* pos, std::array<float, 3>* out,
+                     std::vector<Point>& rows) {
+  const int n = N > 0 ? N : n_runtime;
+  rows.resize(4 * static_cast<std::size_t>(n));
+  for (int q = 0; q < 4; ++q) {
+    const Point& P0 = pos[p.points[static_cast<std::size_t>(q * 4)]];
+    const Point& P1 = pos[p.points[static_cast<std::size_t>(q * 4 + 1)]];
+    const Point& P2 = pos[p.points[static_cast<std::size_t>(q * 4 + 2)]];
+    const Point& P3 = pos[p.points[static_cast<std::size_t>(q * 4 + 3)]];
+    for (int i = 0; i < n; ++i) {
+      const double* w = wx + 4 * i;
+      rows[static_cast<std::size_t>(q * n + i)] = {w[0] * P0[0] + w[1] * P1[0] + w[2] * P2[0] + w[3] * P3[0],
+                                                   w[0] * P0[1] + w[1] * P1[1] + w[2] * P2[1] + w[3] * P3[1],
+                                                   w[0] * P0[2] + w[1] * P1[2] + w[2] * P2[2] + w[3] * P3[2]};
+    }
+  }
+  const Point* r0 = rows.data();
+  const Point* r1 = r0 + n;
+  const Point* r2 = r1 + n;
+  const Point* r3 = r2 + n;
+  for (int j = 0; j < n; ++j) {
+    const double* wy = wx + 4 * j;  // same weights: the grid is square
+    for (int i = 0; i < n; ++i)
+      out[j * n + i] = {static_cast<float>(wy[0] * r0[i][0] + wy[1] * r1[i][0] + wy[2] * r2[i][0] + wy[3] * r3[i][0]),
+                        static_cast<float>(wy[0] * r0[i][1] + wy[1] * r1[i][1] + wy[2] * r2[i][1] + wy[3] * r3[i][1]),
+                        static_cast<float>(wy[0] * r0[i][2] + wy[1] * r1[i][2] + wy[2] * r2[i][2] + wy[3] * r3[i][2])};
+  }
+}
+
 void QuadFamily::points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
                         std::array<float, 3>* out_all) const {
   thread_local std::vector<Point> rows, local, reflected;
@@ -238,31 +271,15 @@ void QuadFamily::points(const TessellationLayout& layout, std::size_t begin, std
     const int n = layout.rates[f];
     std::array<float, 3>* out = out_all + layout.point_offsets[f];
     if (p.valence == 4) {
-      // Rows first: R[q][i] = sum_c wx(i)[c] P(c, q), then each point sums 4 rows.
       const double* wx = centre_weights_[static_cast<std::size_t>(n)].data();
-      rows.resize(4 * static_cast<std::size_t>(n));
-      for (int q = 0; q < 4; ++q) {
-        const Point& P0 = pos[p.points[static_cast<std::size_t>(q * 4)]];
-        const Point& P1 = pos[p.points[static_cast<std::size_t>(q * 4 + 1)]];
-        const Point& P2 = pos[p.points[static_cast<std::size_t>(q * 4 + 2)]];
-        const Point& P3 = pos[p.points[static_cast<std::size_t>(q * 4 + 3)]];
-        for (int i = 0; i < n; ++i) {
-          const double* w = wx + 4 * i;
-          rows[static_cast<std::size_t>(q * n + i)] = {w[0] * P0[0] + w[1] * P1[0] + w[2] * P2[0] + w[3] * P3[0],
-                                                       w[0] * P0[1] + w[1] * P1[1] + w[2] * P2[1] + w[3] * P3[1],
-                                                       w[0] * P0[2] + w[1] * P1[2] + w[2] * P2[2] + w[3] * P3[2]};
-        }
-      }
-      for (int j = 0; j < n; ++j) {
-        const double* wy = wx + 4 * j;  // same weights: the grid is square
-        const Point* r0 = rows.data();
-        const Point* r1 = r0 + n;
-        const Point* r2 = r1 + n;
-        const Point* r3 = r2 + n;
-        for (int i = 0; i < n; ++i)
-          out[j * n + i] = {static_cast<float>(wy[0] * r0[i][0] + wy[1] * r1[i][0] + wy[2] * r2[i][0] + wy[3] * r3[i][0]),
-                            static_cast<float>(wy[0] * r0[i][1] + wy[1] * r1[i][1] + wy[2] * r2[i][1] + wy[3] * r3[i][1]),
-                            static_cast<float>(wy[0] * r0[i][2] + wy[1] * r1[i][2] + wy[2] * r2[i][2] + wy[3] * r3[i][2])};
+      switch (n) {  // small rates unrolled: their per-face loops are short
+        case 1: regular_centres<1>(p, wx, 1, pos, out, rows); break;
+        case 2: regular_centres<2>(p, wx, 2, pos, out, rows); break;
+        case 3: regular_centres<3>(p, wx, 3, pos, out, rows); break;
+        case 4: regular_centres<4>(p, wx, 4, pos, out, rows); break;
+        case 6: regular_centres<6>(p, wx, 6, pos, out, rows); break;
+        case 8: regular_centres<8>(p, wx, 8, pos, out, rows); break;
+        default: regular_centres<0>(p, wx, n, pos, out, rows); break;
       }
       continue;
     }
