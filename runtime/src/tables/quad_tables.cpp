@@ -5,6 +5,7 @@
 #include <string>
 
 #include "binary_reader.hpp"
+#include "quad_expansion.hpp"
 #include "stencil_runtime/binary_format.hpp"
 #include "stencil_runtime/limits.hpp"
 
@@ -238,6 +239,13 @@ const QuadDescent::Valence& QuadTables::descent(int valence) const {
   for (std::size_t k = 0; k < valences_.size(); ++k)
     if (valences_[k].valence == valence && has_descent_) return descent_valences_[k];
   throw EvaluationError("valence " + std::to_string(valence) + " has no patch subdivision in the tables");
+}
+
+QuadTables::Expanded QuadTables::expand(int valence) const {
+  std::vector<double> limit(static_cast<std::size_t>(points(valence)));
+  node_stencil(valence, rates_.front(), 0, 0, limit.data());
+  ExpandedPatch e = expand_patch(valence, descent(valence), limit, rates_, regular_, regular_first_);
+  return {std::move(e.weights), std::move(e.nodes), std::move(e.centres)};
 }
 
 const QuadTables::VertexRule* QuadTables::vertex_rule(int valence) const {

@@ -82,6 +82,14 @@ class QuadTables {
   // The patch subdivision (binary tables of version 4; nullptr for exact JSON
   // tables without descent.json).
   const QuadDescent* descent() const { return has_descent_ ? &descent_ : nullptr; }
+  // The extraordinary patch's stencils of `valence`, recomputed from the patch
+  // subdivision, the regular values and the limit stencil (quad_expansion.hpp),
+  // in the stored form (weights, per-rate node and centre indices).
+  struct Expanded {
+    std::vector<double> weights;
+    std::vector<std::vector<std::uint32_t>> nodes, centres;
+  };
+  Expanded expand(int valence) const;
   const QuadDescent::Valence& descent(int valence) const;
 
   // Weights over the patch's control points (16 for the regular patch or
