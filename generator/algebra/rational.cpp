@@ -9,6 +9,7 @@
 namespace sg {
 
 namespace {
+
 bool all_digits(std::string_view s) {
   if (s.empty()) return false;
   for (char c : s)
@@ -40,15 +41,32 @@ std::string to_string(const Rational& value) {
   return numerator(value).str() + "/" + denominator(value).str();
 }
 
-long floor_to_long(const Rational& value) {
+bool fits_long(const Integer& value) {
+  return value <= std::numeric_limits<long>::max() && value >= std::numeric_limits<long>::min();
+}
+
+long to_long(const Integer& value, const std::string& what) {
+  if (!fits_long(value)) throw Error(what + " " + value.str() + " does not fit in a 64-bit integer");
+  return value.convert_to<long>();
+}
+
+Integer floor_integer(const Rational& value) {
   Integer q = numerator(value) / denominator(value);  // truncates toward zero
   if (value < 0 && q * denominator(value) != numerator(value)) q -= 1;
-  if (q > std::numeric_limits<long>::max() || q < std::numeric_limits<long>::min())
-    throw Error("integer part of " + to_string(value) + " is too large");
+  return q;
+}
+
+long floor_to_long(const Rational& value) {
+  const Integer q = floor_integer(value);
+  if (!fits_long(q)) throw Error("the floor of " + to_string(value) + " does not fit in a 64-bit integer");
   return q.convert_to<long>();
 }
 
-long ceil_to_long(const Rational& value) { return -floor_to_long(-value); }
+long ceil_to_long(const Rational& value) {
+  const Integer q = -floor_integer(-value);  // negated as an Integer, where it cannot overflow
+  if (!fits_long(q)) throw Error("the ceiling of " + to_string(value) + " does not fit in a 64-bit integer");
+  return q.convert_to<long>();
+}
 
 double to_double(const Rational& value) {
   // Round-to-nearest-even by hand: mpz's own conversion truncates.

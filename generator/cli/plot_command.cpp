@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 #include "cli/commands.hpp"
 #include "common/atomic_output.hpp"
 #include "curve/curve_scheme_loader.hpp"
@@ -13,7 +14,9 @@
 namespace sg::cli {
 
 int plot(const std::string& scheme_spec, long n, const std::string& out, const std::vector<std::string>& params) {
-  if (n < 1) throw Error("--n must be at least 1, got " + std::to_string(n));
+  if (n < 1 || n > limits::kMaxCurveRate)
+    throw Error("plot --n " + std::to_string(n) + " is outside 1.." + std::to_string(limits::kMaxCurveRate) +
+                " (the largest rate for curve schemes)");
   const CurveScheme scheme = load_curve_scheme(scheme_spec, params);
   const CurveTable table = make_table(scheme, solve_by_residues(scheme, n));
   const std::filesystem::path path(out);
