@@ -3,10 +3,12 @@
 // limit named, and no integer conversion wraps around.
 #include <catch2/catch.hpp>
 #include <limits>
+#include <nlohmann/json.hpp>
 
 #include "algebra/expression.hpp"
 #include "algebra/rational.hpp"
 #include "base/limits.hpp"
+#include "common/json_document.hpp"
 #include "common/rate_spec.hpp"
 
 using sg::Rational;
@@ -91,4 +93,33 @@ TEST_CASE("rate and valence specs: limits named, numbers of any length read with
                     Catch::Contains("s.json: valence 11 is outside the range 3..10"));
   CHECK_THROWS_WITH(sg::check_rates({1, 129}, 128, "the largest rate for surface schemes"),
                     Catch::Contains("rate n = 129 is outside 1..128 (the largest rate for surface schemes)"));
+}
+
+TEST_CASE("JSON documents: nesting checked while parsing, fields read with their type and range", "[limits]") {
+  using nlohmann::json;
+  const std::string at_limit = std::string(limits::kMaxJsonDepth, '[') + std::string(limits::kMaxJsonDepth, ']');
+  CHECK(sg::parse_json_document<json>(at_limit, "f.json").is_array());
+  CHECK_THROWS_WITH(sg::parse_json_document<json>("[" + at_limit + "]", "f.json"),
+                    Catch::Contains("f.json: arrays and objects nested deeper than 32 levels"));
+  std::string objects;
+  for (int i = 0; i < 100000; ++i) objects += "{\"a\":";
+  CHECK_THROWS_WITH(sg::parse_json_document<nlohmann::ordered_json>(objects, "f.json"), Catch::Contains("nested deeper than 32"));
+  CHECK_THROWS_WITH(sg::parse_json_document<json>("{\"a\": 1e999}", "f.json"),
+                    Catch::Equals("f.json: not valid JSON: number overflow parsing '1e999'"));
+  CHECK_THROWS_WITH(sg::parse_json_document<json>("{\"a\": }", "f.json"),
+                    Catch::StartsWith("f.json: not valid JSON: parse error at line 1, column 7"));
+
+  const sg::DocumentReader<json> r("f.json");
+  const json doc = json::parse(R"({"big": 18446744073709551615, "neg": -5, "real": 2.0, "text": "2", "q": "1/0"})");
+  CHECK_THROWS_WITH(r.integer(doc["big"], "big", 1, 10), Catch::Equals("f.json: big: 18446744073709551615 is outside the range 1..10"));
+  CHECK(r.integer(doc["neg"], "neg", -5, 5) == -5);
+  CHECK_THROWS_WITH(r.integer(doc["neg"], "neg", -4, 5), Catch::Contains("-5 is outside the range -4..5"));
+  CHECK_THROWS_WITH(r.integer(doc["real"], "real", 0, 5), Catch::Contains("expected an integer, got 2.0"));
+  CHECK_THROWS_WITH(r.integer(doc["text"], "text", 0, 5), Catch::Contains("expected an integer, got \"2\""));
+  CHECK_THROWS_WITH(r.require(doc, "missing", ""), Catch::Equals("f.json: missing required field 'missing'"));
+  CHECK_THROWS_WITH(r.rational_literal(doc["q"], sg::field_path(sg::field_path("values", "1/3"), 0)),
+                    Catch::StartsWith("f.json: values[\"1/3\"][0]: '1/0' has a zero denominator"));
+  CHECK(sg::field_path("functions", 2) == "functions[2]");
+  CHECK(sg::field_path("parameters", "w") == "parameters.w");
+  CHECK(sg::field_path("values", "12") == "values[\"12\"]");
 }
