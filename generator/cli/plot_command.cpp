@@ -1,5 +1,4 @@
 // stencilgen plot --scheme S --n N --out FILE.svg: the scaling functions of a curve scheme at rate n.
-#include <filesystem>
 #include <iostream>
 
 #include "base/error.hpp"
@@ -19,10 +18,7 @@ int plot(const std::string& scheme_spec, long n, const std::string& out, const s
                 " (the largest rate for curve schemes)");
   const CurveScheme scheme = load_curve_scheme(scheme_spec, params);
   const CurveTable table = make_table(scheme, solve_by_residues(scheme, n));
-  const std::filesystem::path path(out);
-  OutputTransaction tx(path.has_parent_path() ? path.parent_path() : std::filesystem::path("."));
-  tx.add(path.filename().string(), plot_table_svg(table));
-  tx.commit();
+  write_file_atomically(out, plot_table_svg(table));
   std::cout << "wrote " << out << "\n";
   return 0;
 }
