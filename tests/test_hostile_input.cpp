@@ -215,6 +215,7 @@ TEST_CASE("small inputs that ask for unbounded work are refused before the work,
   expect_refusal(dir, "--scheme nonpoly --valence 5 --n 129" + out, {"129 is above 128, the largest rate for surface schemes"});
   expect_refusal(dir, "--scheme loop --valence 5 --n 120-130" + out, {"130 is above 128, the largest rate for surface schemes"});
   expect_refusal(dir, "plot --scheme fourpoint --n 5000 --out " + (dir / "p.svg").string(), {"5000 is outside 1..4096"});
+  expect_refusal(dir, "analyze --scheme nonpoly --valence 5 --samples 1000", {"--samples", "see --help"});
   // File sizes: a scheme file is read only up to its limit.
   write_text(dir / "padded.json", fourpoint_scheme().dump() + std::string(2 << 20, ' '));
   expect_refusal(dir, "--scheme " + (dir / "padded.json").string() + " --n 3" + out,
@@ -231,5 +232,25 @@ TEST_CASE("integers in rate and valence specs are read without overflow", "[host
   expect_refusal(dir, "--scheme fourpoint --n 3-99999999999999999999,2" + out, {"99999999999999999999 is above 4096"});
   expect_refusal(dir, "--scheme nonpoly --n 2 --valence 3-99999999999999999999" + out, {"is above 64, the largest valence"});
   expect_refusal(dir, "--scheme fourpoint --n 5-" + out, {"'' is not a positive integer"});
+  fs::remove_all(dir);
+}
+
+TEST_CASE("every failure is one line and exit code 1: command-line errors and an impossible allocation", "[hostile]") {
+  const fs::path dir = scratch_dir("hostile-boundary");
+  expect_refusal(dir, "--scheme fourpoint --n 3 --bogus", {"--bogus", "(see --help)"});
+  expect_refusal(dir, "--scheme fourpoint --n 3", {"generation needs --scheme, --n and --out"});
+  const CliResult help = run_stencilgen("--help");
+  CHECK(help.status == 0);
+  CHECK(help.output.find("stencilgen") != std::string::npos);
+#if !defined(__SANITIZE_ADDRESS__)  // ASan reserves more address space than any such limit
+  // 150 MB of address space: GMP's allocations fail inside the solver (GMP used
+  // to abort the process; now they throw std::bad_alloc like any other).
+  const CliResult oom = run_command("ulimit -v 150000; " + stencilgen_exe(),
+                                    "-q --scheme nonpoly --valence 8 --n 128,128 --out " + (dir / "out").string());
+  INFO(oom.output);
+  CHECK(oom.status == 1);
+  CHECK(oom.output == "stencilgen: error: out of memory\n");
+  CHECK(entries(dir).empty());
+#endif
   fs::remove_all(dir);
 }

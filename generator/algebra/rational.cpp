@@ -2,13 +2,31 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <new>
 
 #include "base/error.hpp"
 
 namespace sg {
 
 namespace {
+
+// GMP (and MPFR, which allocates through it) ends the process when an
+// allocation fails; these throw std::bad_alloc instead, so that an impossible
+// allocation reaches the caller, and stencilgen's error boundary, like any other.
+void* gmp_allocate(std::size_t size) {
+  void* p = std::malloc(size);
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+void* gmp_reallocate(void* old, std::size_t, std::size_t size) {
+  void* p = std::realloc(old, size);
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+void gmp_free(void* p, std::size_t) { std::free(p); }
+[[maybe_unused]] const bool kGmpAllocationThrows = (mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free), true);
 
 bool all_digits(std::string_view s) {
   if (s.empty()) return false;
