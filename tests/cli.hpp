@@ -2,6 +2,7 @@
 // Runs the stencilgen executable and captures its exit code and output.
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <stdexcept>
@@ -23,7 +24,17 @@ inline CliResult run_command(const std::string& exe, const std::string& args) {
   return r;
 }
 
-inline CliResult run_stencilgen(const std::string& args) { return run_command(STENCILGEN_EXE, args); }
+// The stencilgen under test: this build's, unless $STENCILGEN_UNDER_TEST names
+// another binary (to show that a new test fails on an older build).
+inline std::string stencilgen_exe() {
+  const char* other = std::getenv("STENCILGEN_UNDER_TEST");
+  return other && *other ? other : STENCILGEN_EXE;
+}
+inline CliResult run_stencilgen(const std::string& args) { return run_command(stencilgen_exe(), args); }
+// The same, killed after `seconds` (status 137): for inputs that must be refused before any long work.
+inline CliResult run_stencilgen_within(int seconds, const std::string& args) {
+  return run_command("timeout -s KILL " + std::to_string(seconds) + " " + stencilgen_exe(), args);
+}
 #ifdef STENCILEVAL_EXE
 inline CliResult run_stencileval(const std::string& args) { return run_command(STENCILEVAL_EXE, args); }
 inline CliResult run_stenciltess(const std::string& args) { return run_command(STENCILTESS_EXE, args); }

@@ -41,7 +41,7 @@ TEST_CASE("malformed scheme files are rejected with the file and field named") {
   expect_failure("--scheme " + write_scheme(dir, "nofirst", R"({"format": "stencilgen-scheme", "version": 1, "name": "x", "type": "curve-uniform", "arity": 2, "mask": {"coefficients": ["1"]}})").string() + " --n 3",
                  "missing required field 'first'", out);
   expect_failure("--scheme " + write_scheme(dir, "arity", uniform("-1", "\"1/2\", \"1\", \"1/2\"", 4)).string() + " --n 3",
-                 "arity: must be 2 or 3", out);
+                 "arity: 4 is outside the range 2..3", out);
   expect_failure("--scheme " + write_scheme(dir, "type", R"({"format": "stencilgen-scheme", "version": 1, "name": "x", "type": "surface"})").string() + " --n 3",
                  "unknown type 'surface'", out);
   expect_failure("--scheme " + write_scheme(dir, "expr", uniform("-1", "\"1/2 + q\", \"1\", \"1/2\"")).string() + " --n 3",

@@ -35,12 +35,12 @@ TEST_CASE("rationals parse, print and round to the nearest double") {
 }
 
 TEST_CASE("rate specs") {
-  CHECK(sg::parse_rate_spec("4") == std::vector<long>{1, 2, 3, 4});
-  CHECK(sg::parse_rate_spec("12-14") == std::vector<long>{12, 13, 14});
-  CHECK(sg::parse_rate_spec("7,3,5,3") == std::vector<long>{3, 5, 7});
-  CHECK(sg::parse_rate_spec("1-2,9") == std::vector<long>{1, 2, 9});
-  CHECK_THROWS_WITH(sg::parse_rate_spec("0"), Catch::Contains("less than 1"));
-  CHECK_THROWS_WITH(sg::parse_rate_spec("-3"), Catch::Contains("not a positive integer"));
-  CHECK_THROWS_WITH(sg::parse_rate_spec("5-2"), Catch::Contains("empty"));
-  CHECK_THROWS_WITH(sg::parse_rate_spec("abc"), Catch::Contains("not a positive integer"));
+  CHECK(sg::parse_rate_spec("4", 4096, "the limit") == std::vector<long>{1, 2, 3, 4});
+  CHECK(sg::parse_rate_spec("12-14", 4096, "the limit") == std::vector<long>{12, 13, 14});
+  CHECK(sg::parse_rate_spec("7,3,5,3", 4096, "the limit") == std::vector<long>{3, 5, 7});
+  CHECK(sg::parse_rate_spec("1-2,9", 4096, "the limit") == std::vector<long>{1, 2, 9});
+  CHECK_THROWS_WITH(sg::parse_rate_spec("0", 4096, "the limit"), Catch::Contains("less than 1"));
+  CHECK_THROWS_WITH(sg::parse_rate_spec("-3", 4096, "the limit"), Catch::Contains("not a positive integer"));
+  CHECK_THROWS_WITH(sg::parse_rate_spec("5-2", 4096, "the limit"), Catch::Contains("empty"));
+  CHECK_THROWS_WITH(sg::parse_rate_spec("abc", 4096, "the limit"), Catch::Contains("not a positive integer"));
 }

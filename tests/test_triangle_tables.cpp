@@ -187,5 +187,5 @@ TEST_CASE("bad triangle scheme input is refused with the file and field named, n
   }
   const CliResult big = run_stencilgen("--scheme loop --valence 70 --n 2 --out " + (dir / "out").string());
   REQUIRE(big.status != 0);
-  REQUIRE(big.output.find("valence 70 is outside the range 3..64") != std::string::npos);
+  REQUIRE(big.output.find("70 is above 64, the largest valence") != std::string::npos);
 }

@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 
 namespace sg {
 namespace {
@@ -14,19 +15,29 @@ bool is_integer(const Real& x) { return floor(x) == x; }
 long to_long(const Rational& x) { return numerator(x).convert_to<long>(); }
 long to_long(const Real& x) { return x.convert_to<long>(); }
 
+long bits(const Integer& x) { return x == 0 ? 0 : static_cast<long>(msb(abs(x))) + 1; }
+// The size of an exact value (numerator and denominator); Reals have a fixed size.
+long bits(const Rational& x) { return bits(numerator(x)) + bits(denominator(x)); }
+long bits(const Real&) { return 0; }
+
 // Recursive descent over:  expr := term (('+'|'-') term)*
 //                          term := unary (('*'|'/') unary)*
 //                          unary := ('+'|'-') unary | power
 //                          power := atom ('^' unary)?
 //                          atom := integer | name | '(' expr ')'
 // T is Rational (exact; an irrational cos2pi is refused with IrrationalValue)
-// or Real (cos2pi in high precision).
+// or Real (cos2pi in high precision). Every recursion passes through unary(),
+// which counts the nesting depth; exact intermediate results are bounded in
+// size (limits.hpp).
 template <class T>
 class Parser {
  public:
   Parser(std::string_view text, const Bindings& bindings) : text_(text), bindings_(bindings) {}
 
   T parse() {
+    if (static_cast<long>(text_.size()) > limits::kMaxExpressionLength)
+      fail("the formula is " + std::to_string(text_.size()) + " characters long; the limit is " +
+           std::to_string(limits::kMaxExpressionLength));
     T value = expr();
     skip_space();
     if (pos_ != text_.size()) fail("unexpected '" + std::string(1, text_[pos_]) + "'");
@@ -35,8 +46,30 @@ class Parser {
 
  private:
   [[noreturn]] void fail(const std::string& what) const {
-    throw Error("in expression \"" + std::string(text_) + "\" at position " + std::to_string(pos_ + 1) + ": " + what);
+    throw Error("in expression \"" + excerpt(text_) + "\" at position " + std::to_string(pos_ + 1) + ": " + what);
   }
+  // `value`, unless an exact value has outgrown the size limit.
+  T sized(T value) const {
+    if (bits(value) > limits::kMaxExpressionBits)
+      fail("an intermediate value has " + std::to_string(bits(value)) + " bits (numerator and denominator); the limit is " +
+           std::to_string(limits::kMaxExpressionBits));
+    return value;
+  }
+  // Counts one nesting level for as long as it lives.
+  class Level {
+   public:
+    explicit Level(Parser& p) : p_(p) {
+      if (++p_.depth_ > limits::kMaxExpressionDepth)
+        p_.fail("nested more than " + std::to_string(limits::kMaxExpressionDepth) +
+                " levels deep (parentheses, signs and powers); that is the limit");
+    }
+    ~Level() { --p_.depth_; }
+    Level(const Level&) = delete;
+    Level& operator=(const Level&) = delete;
+
+   private:
+    Parser& p_;
+  };
   void skip_space() {
     while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
   }
@@ -51,8 +84,8 @@ class Parser {
   T expr() {
     T value = term();
     for (;;) {
-      if (accept('+')) value += term();
-      else if (accept('-')) value -= term();
+      if (accept('+')) value = sized(value + term());
+      else if (accept('-')) value = sized(value - term());
       else return value;
     }
   }
@@ -60,7 +93,7 @@ class Parser {
     T value = unary();
     for (;;) {
       if (accept('*')) {
-        value *= unary();
+        value = sized(value * unary());
       } else if (accept('/')) {
         const std::size_t at = pos_;
         T divisor = unary();
@@ -68,13 +101,14 @@ class Parser {
           pos_ = at;
           fail("division by zero");
         }
-        value /= divisor;
+        value = sized(value / divisor);
       } else {
         return value;
       }
     }
   }
   T unary() {
+    const Level level(*this);
     if (accept('-')) return -unary();
     if (accept('+')) return unary();
     return power();
@@ -88,14 +122,19 @@ class Parser {
       pos_ = at;
       fail("exponent must be an integer");
     }
-    if (abs(exponent) > 4096) {
+    if (abs(exponent) > limits::kMaxExponent) {
       pos_ = at;
-      fail("exponent too large");
+      fail("the exponent's magnitude is above the limit " + std::to_string(limits::kMaxExponent));
     }
-    const long e = to_long(exponent);
+    const long e = to_long(exponent), magnitude = e < 0 ? -e : e;
     if (e < 0 && base == 0) fail("zero to a negative power");
+    if (magnitude * bits(base) > limits::kMaxExpressionBits) {  // checked before the work, not after
+      pos_ = at;
+      fail("the power would have about " + std::to_string(magnitude * bits(base)) +
+           " bits (numerator and denominator); the limit is " + std::to_string(limits::kMaxExpressionBits));
+    }
     T result = 1;
-    for (long i = 0; i < (e < 0 ? -e : e); ++i) result *= base;
+    for (long i = 0; i < magnitude; ++i) result *= base;
     return e < 0 ? T(1 / result) : result;
   }
   T atom() {
@@ -111,7 +150,7 @@ class Parser {
     if (std::isdigit(static_cast<unsigned char>(c))) {
       const std::size_t start = pos_;
       while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
-      return T(Integer(std::string(text_.substr(start, pos_ - start))));
+      return sized(T(Integer(std::string(text_.substr(start, pos_ - start)))));
     }
     if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
       const std::size_t start = pos_;
@@ -144,13 +183,14 @@ class Parser {
   std::string_view text_;
   const Bindings& bindings_;
   std::size_t pos_ = 0;
+  int depth_ = 0;
 };
 
 }  // namespace
 
 std::optional<Rational> exact_cos2pi(const Rational& r) {
   // Niven: cos(2 pi r) is rational only where it is 0, +-1/2 or +-1.
-  const Rational frac = r - Rational(floor_to_long(r));
+  const Rational frac = r - Rational(floor_integer(r));
   const Rational table[][2] = {{Rational(0), Rational(1)},       {Rational(1, 6), Rational(1, 2)},
                                {Rational(1, 4), Rational(0)},    {Rational(1, 3), Rational(-1, 2)},
                                {Rational(1, 2), Rational(-1)},   {Rational(2, 3), Rational(-1, 2)},

@@ -2,13 +2,32 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <new>
 
 #include "base/error.hpp"
 
 namespace sg {
 
 namespace {
+
+// GMP (and MPFR, which allocates through it) ends the process when an
+// allocation fails; these throw std::bad_alloc instead, so that an impossible
+// allocation reaches the caller, and stencilgen's error boundary, like any other.
+void* gmp_allocate(std::size_t size) {
+  void* p = std::malloc(size);
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+void* gmp_reallocate(void* old, std::size_t, std::size_t size) {
+  void* p = std::realloc(old, size);
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+void gmp_free(void* p, std::size_t) { std::free(p); }
+[[maybe_unused]] const bool kGmpAllocationThrows = (mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free), true);
+
 bool all_digits(std::string_view s) {
   if (s.empty()) return false;
   for (char c : s)
@@ -40,15 +59,32 @@ std::string to_string(const Rational& value) {
   return numerator(value).str() + "/" + denominator(value).str();
 }
 
-long floor_to_long(const Rational& value) {
+bool fits_long(const Integer& value) {
+  return value <= std::numeric_limits<long>::max() && value >= std::numeric_limits<long>::min();
+}
+
+long to_long(const Integer& value, const std::string& what) {
+  if (!fits_long(value)) throw Error(what + " " + value.str() + " does not fit in a 64-bit integer");
+  return value.convert_to<long>();
+}
+
+Integer floor_integer(const Rational& value) {
   Integer q = numerator(value) / denominator(value);  // truncates toward zero
   if (value < 0 && q * denominator(value) != numerator(value)) q -= 1;
-  if (q > std::numeric_limits<long>::max() || q < std::numeric_limits<long>::min())
-    throw Error("integer part of " + to_string(value) + " is too large");
+  return q;
+}
+
+long floor_to_long(const Rational& value) {
+  const Integer q = floor_integer(value);
+  if (!fits_long(q)) throw Error("the floor of " + to_string(value) + " does not fit in a 64-bit integer");
   return q.convert_to<long>();
 }
 
-long ceil_to_long(const Rational& value) { return -floor_to_long(-value); }
+long ceil_to_long(const Rational& value) {
+  const Integer q = -floor_integer(-value);  // negated as an Integer, where it cannot overflow
+  if (!fits_long(q)) throw Error("the ceiling of " + to_string(value) + " does not fit in a 64-bit integer");
+  return q.convert_to<long>();
+}
 
 double to_double(const Rational& value) {
   // Round-to-nearest-even by hand: mpz's own conversion truncates.

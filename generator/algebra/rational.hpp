@@ -16,7 +16,15 @@ Rational parse_rational(std::string_view text);
 // "p/q" in lowest terms, or "p" when q == 1.
 std::string to_string(const Rational& value);
 
-// floor and ceiling of a rational as a (small) integer; throws if it does not fit.
+// Whether `value` is in the range of long.
+bool fits_long(const Integer& value);
+// `value` as a long; throws sg::Error ("WHAT VALUE does not fit ...") when it is out of range.
+long to_long(const Integer& value, const std::string& what);
+
+// The largest integer <= value, exactly.
+Integer floor_integer(const Rational& value);
+
+// floor and ceiling of a rational as a (small) integer; throw sg::Error if it does not fit.
 long floor_to_long(const Rational& value);
 long ceil_to_long(const Rational& value);
 

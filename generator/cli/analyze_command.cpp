@@ -1,6 +1,9 @@
 // stencilgen analyze --scheme S [--valence V]: the smoothness analysis of a surface scheme per valence.
+#include <functional>
 #include <iostream>
 
+#include "base/error.hpp"
+#include "base/limits.hpp"
 #include "cli/commands.hpp"
 #include "common/rate_spec.hpp"
 #include "common/scheme_registry.hpp"
@@ -11,35 +14,45 @@
 
 namespace sg::cli {
 
-int analyze(const std::string& scheme_spec, const std::string& valence_spec, const std::vector<std::string>& params,
-            long samples) {
-  if (scheme_type(scheme_spec) == "triangle") {
-    const TriangleScheme scheme = load_triangle_scheme(scheme_spec, params);
-    int failed = 0;
-    std::cout << "smoothness analysis of '" << scheme.name << "' (" << scheme.source << ")"
-              << (scheme.refinement == TriangleRefinement::Sqrt3
-                      ? "; spectra of two composed steps (one step's moduli are their square roots)"
-                      : "")
-              << "\n";
-    for (int v : parse_valence_spec(valence_spec)) {
-      const SmoothnessReport r = analyse_triangle_valence(scheme, v, samples);
-      if (!r.ok()) ++failed;
-      std::cout << format_report(r);
-    }
-    std::cout << (failed == 0 ? "all valences pass\n" : std::to_string(failed) + " valence(s) FAIL\n");
-    return failed == 0 ? 0 : 1;
-  }
-  const QuadScheme scheme = load_quad_scheme(scheme_spec, params);
+namespace {
+
+// Prints the heading and each valence's report; the exit code says whether all pass.
+int print_reports(const std::string& heading, const std::vector<int>& valences,
+                  const std::function<SmoothnessReport(int)>& analyse) {
+  std::cout << heading << "\n";
   int failed = 0;
-  std::cout << "smoothness analysis of '" << scheme.name << "' (" << scheme.source << ")\n";
-  for (int v : parse_valence_spec(valence_spec)) {
-    scheme.vertex_rule(v);
-    const SmoothnessReport r = analyse_quad_valence(scheme, v, samples);
+  for (int v : valences) {
+    const SmoothnessReport r = analyse(v);
     if (!r.ok()) ++failed;
     std::cout << format_report(r);
   }
   std::cout << (failed == 0 ? "all valences pass\n" : std::to_string(failed) + " valence(s) FAIL\n");
   return failed == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int analyze(const std::string& scheme_spec, const std::string& valence_spec, const std::vector<std::string>& params,
+            long samples) {
+  if (samples < 2 || samples > limits::kMaxAnalysisSamples)
+    throw Error("analyze --samples " + std::to_string(samples) + " is outside 2.." +
+                std::to_string(limits::kMaxAnalysisSamples));
+  // Every valence is checked against the limits and the scheme's range before the first is analysed.
+  const std::vector<int> valences = parse_valence_spec(valence_spec);
+  if (scheme_type(scheme_spec) == "triangle") {
+    const TriangleScheme scheme = load_triangle_scheme(scheme_spec, params);
+    check_valences(valences, scheme.min_valence, scheme.max_valence, scheme.source);
+    return print_reports(
+        "smoothness analysis of '" + scheme.name + "' (" + scheme.source + ")" +
+            (scheme.refinement == TriangleRefinement::Sqrt3
+                 ? "; spectra of two composed steps (one step's moduli are their square roots)"
+                 : ""),
+        valences, [&](int v) { return analyse_triangle_valence(scheme, v, samples); });
+  }
+  const QuadScheme scheme = load_quad_scheme(scheme_spec, params);
+  check_valences(valences, scheme.min_valence, scheme.max_valence, scheme.source);
+  return print_reports("smoothness analysis of '" + scheme.name + "' (" + scheme.source + ")", valences,
+                       [&](int v) { return analyse_quad_valence(scheme, v, samples); });
 }
 
 }  // namespace sg::cli

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 #include "cli/cli_helpers.hpp"
 #include "cli/commands.hpp"
 #include "common/rate_spec.hpp"
@@ -20,12 +21,14 @@
 namespace sg::cli {
 namespace {
 
+const char* const kSurfaceRateLimit = "the largest rate for surface schemes";
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 int generate_curve(const GenerateOptions& o) {
-  const auto rates = parse_rate_spec(o.rates);
+  const auto rates = parse_rate_spec(o.rates, limits::kMaxCurveRate, "the largest rate for curve schemes");
   const CurveScheme scheme = load_curve_scheme(o.scheme, o.params);
   const RouteChoice choice = o.route == "residue" ? RouteChoice::Residue
                              : o.route == "eigen" ? RouteChoice::Eigen
@@ -39,12 +42,12 @@ int generate_curve(const GenerateOptions& o) {
 }
 
 int generate_quad(const GenerateOptions& o, const std::string& valence_spec) {
-  const auto rates = parse_rate_spec(o.rates);
+  const auto rates = parse_rate_spec(o.rates, limits::kMaxSurfaceRate, kSurfaceRateLimit);
   const auto valences = parse_valence_spec(valence_spec);
   const QuadScheme scheme = load_quad_scheme(o.scheme, o.params);
+  check_valences(valences, scheme.min_valence, scheme.max_valence, scheme.source);
   const auto start = std::chrono::steady_clock::now();
   for (int v : valences) {
-    scheme.vertex_rule(v);
     const SmoothnessReport report = analyse_quad_valence(scheme, v, 16);
     if (!report.ok())
       std::cerr << "stencilgen: warning: '" << scheme.name << "' fails the smoothness analysis at valence " << v
@@ -61,9 +64,10 @@ int generate_quad(const GenerateOptions& o, const std::string& valence_spec) {
 }
 
 int generate_triangle(const GenerateOptions& o, const std::string& valence_spec) {
-  const auto rates = parse_rate_spec(o.rates);
+  const auto rates = parse_rate_spec(o.rates, limits::kMaxSurfaceRate, kSurfaceRateLimit);
   auto valences = parse_valence_spec(valence_spec);
   const TriangleScheme scheme = load_triangle_scheme(o.scheme, o.params);
+  check_valences(valences, scheme.min_valence, scheme.max_valence, scheme.source);
   // Valence 6 is the regular patch, which the runtime needs for every ordinary triangle.
   if (std::find(valences.begin(), valences.end(), 6) == valences.end()) valences.push_back(6);
   std::sort(valences.begin(), valences.end());

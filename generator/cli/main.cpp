@@ -4,9 +4,12 @@
 #include <iostream>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 #include "cli/commands.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
   CLI::App app{
       "stencilgen: exact evaluation stencils for stationary subdivision schemes.\n"
       "Solves the scaling relations of a scheme (described as data in schemes/*.json) exactly on the\n"
@@ -44,7 +47,7 @@ int main(int argc, char** argv) {
   analyze->add_option("--scheme", analyze_scheme, "surface scheme name or path")->required();
   analyze->add_option("--valence", analyze_valences, "valences, e.g. 3-16 (default)");
   analyze->add_option("--samples", analyze_samples, "characteristic map sampled on the grid 1/S per sector (default 32)")
-      ->check(CLI::Range(2, 512));
+      ->check(CLI::Range(2L, sg::limits::kMaxAnalysisSamples));
   analyze->add_option("--param", analyze_params, "parameter overrides NAME=RATIONAL");
 
   CLI::App* verify = app.add_subcommand("verify", "re-check curve or surface tables from disk exactly against their scheme");
@@ -66,19 +69,43 @@ int main(int argc, char** argv) {
 
   CLI::App* list = app.add_subcommand("list", "list the schemes in the schemes directory");
 
-  CLI11_PARSE(app, argc, argv);
   try {
-    if (verify->parsed()) return sg::cli::verify(verify_files, verify_scheme, verify_params);
-    if (analyze->parsed()) return sg::cli::analyze(analyze_scheme, analyze_valences, analyze_params, analyze_samples);
-    if (plot->parsed()) return sg::cli::plot(plot_scheme, plot_n, plot_out, plot_params);
-    if (list->parsed()) return sg::cli::list();
-    if (gen.scheme.empty() || gen.rates.empty() || gen.out.empty()) {
-      std::cerr << "stencilgen: error: generation needs --scheme, --n and --out (see --help)\n";
-      return 2;
-    }
-    return sg::cli::generate(gen);
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help
+    return app.exit(e);
+  }
+  if (verify->parsed()) return sg::cli::verify(verify_files, verify_scheme, verify_params);
+  if (analyze->parsed()) return sg::cli::analyze(analyze_scheme, analyze_valences, analyze_params, analyze_samples);
+  if (plot->parsed()) return sg::cli::plot(plot_scheme, plot_n, plot_out, plot_params);
+  if (list->parsed()) return sg::cli::list();
+  if (gen.scheme.empty() || gen.rates.empty() || gen.out.empty())
+    throw sg::Error("generation needs --scheme, --n and --out (see --help)");
+  return sg::cli::generate(gen);
+}
+
+// The one error boundary: every failure becomes one line on stderr and exit code 1.
+int fail(const std::string& message) {
+  std::string line = message;
+  for (char& c : line)
+    if (c == '\n' || c == '\r') c = ' ';
+  std::cerr << "stencilgen: error: " << line << "\n";
+  return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return fail(std::string(e.what()) + " (see --help)");
   } catch (const sg::Error& e) {
-    std::cerr << "stencilgen: error: " << e.what() << "\n";
-    return 1;
+    return fail(e.what());
+  } catch (const std::bad_alloc&) {
+    return fail("out of memory");
+  } catch (const std::exception& e) {  // a library's exception that no reading site turned into an sg::Error
+    return fail(std::string("unexpected failure: ") + e.what());
+  } catch (...) {
+    return fail("unexpected failure of an unknown kind");
   }
 }

@@ -1,8 +1,8 @@
 // stencilgen plot --scheme S --n N --out FILE.svg: the scaling functions of a curve scheme at rate n.
-#include <filesystem>
 #include <iostream>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 #include "cli/commands.hpp"
 #include "common/atomic_output.hpp"
 #include "curve/curve_scheme_loader.hpp"
@@ -13,13 +13,12 @@
 namespace sg::cli {
 
 int plot(const std::string& scheme_spec, long n, const std::string& out, const std::vector<std::string>& params) {
-  if (n < 1) throw Error("--n must be at least 1, got " + std::to_string(n));
+  if (n < 1 || n > limits::kMaxCurveRate)
+    throw Error("plot --n " + std::to_string(n) + " is outside 1.." + std::to_string(limits::kMaxCurveRate) +
+                " (the largest rate for curve schemes)");
   const CurveScheme scheme = load_curve_scheme(scheme_spec, params);
   const CurveTable table = make_table(scheme, solve_by_residues(scheme, n));
-  const std::filesystem::path path(out);
-  OutputTransaction tx(path.has_parent_path() ? path.parent_path() : std::filesystem::path("."));
-  tx.add(path.filename().string(), plot_table_svg(table));
-  tx.commit();
+  write_file_atomically(out, plot_table_svg(table));
   std::cout << "wrote " << out << "\n";
   return 0;
 }

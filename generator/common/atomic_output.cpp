@@ -8,43 +8,142 @@
 namespace sg {
 namespace fs = std::filesystem;
 
-void OutputTransaction::commit() {
+namespace {
+
+// `path` without a trailing separator ("out/" -> "out"), so that it has a file name.
+fs::path normalised(const fs::path& path) {
+  fs::path p = path.lexically_normal();
+  if (p.filename().empty() && p.has_parent_path()) p = p.parent_path();
+  return p;
+}
+
+// A sibling of `path` that only this process uses: ".NAME.ROLE-PID".
+fs::path sibling(const fs::path& parent, const fs::path& path, const std::string& role) {
+  return parent / ("." + path.filename().string() + "." + role + "-" + std::to_string(::getpid()));
+}
+
+// Creates `dir` and its missing parents; returns the topmost folder it created
+// (empty if none), which the caller removes again if it fails later.
+fs::path create_folders(const fs::path& dir) {
+  fs::path created;
+  for (fs::path p = dir; !p.empty(); p = p.parent_path()) {
+    std::error_code ec;
+    if (fs::exists(p, ec) || ec) break;
+    created = p;
+    if (!p.has_parent_path() || p.parent_path() == p) break;
+  }
   std::error_code ec;
-  const fs::path target = target_.lexically_normal();
-  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  fs::create_directories(parent, ec);
-  if (ec) throw Error("cannot create output directory " + parent.string() + ": " + ec.message());
-  if (fs::exists(target) && !fs::is_directory(target)) throw Error("output path " + target.string() + " exists and is not a directory");
-  const fs::path staging = parent / ("." + target.filename().string() + ".staging-" + std::to_string(::getpid()));
-  fs::remove_all(staging, ec);
-  auto abandon = [&](const std::string& what) {
+  fs::create_directories(dir, ec);
+  if (ec) {
+    if (!created.empty()) fs::remove_all(created, ec);
+    throw Error("cannot create output folder " + dir.string() + ": " + ec.message());
+  }
+  return created;
+}
+
+void write_bytes(const fs::path& file, const std::string& bytes, const fs::path& named) {
+  std::ofstream out(file, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) throw Error("cannot write " + named.string());
+}
+
+std::error_code injected() { return std::make_error_code(std::errc::io_error); }
+
+}  // namespace
+
+void OutputTransaction::add(const std::string& relative_name, std::string bytes) {
+  const fs::path name(relative_name);
+  bool plain = !relative_name.empty() && !name.has_root_path();
+  for (const auto& part : name) plain = plain && part != ".." && part != "." && !part.empty();
+  if (!plain) throw Error("internal: output file name '" + relative_name + "' is not a plain relative path");
+  files_[relative_name] = std::move(bytes);
+}
+
+// Until dismissed, undoes a failed commit whatever the failure (an sg::Error,
+// bad_alloc, ...): moves the previous target back if it was moved aside, and
+// removes the staging folder and the parent folders the commit created.
+class Undo {
+ public:
+  Undo(fs::path staging, fs::path created) : staging_(std::move(staging)), created_(std::move(created)) {}
+  ~Undo() {
+    if (dismissed_) return;
     std::error_code ignore;
-    fs::remove_all(staging, ignore);
-    throw Error(what);
-  };
-  fs::create_directory(staging, ec);
-  if (ec) abandon("cannot create staging directory " + staging.string() + ": " + ec.message());
+    if (!aside_.empty() && !fs::exists(target_, ignore)) fs::rename(aside_, target_, ignore);
+    fs::remove_all(staging_, ignore);
+    if (!created_.empty()) fs::remove_all(created_, ignore);
+  }
+  Undo(const Undo&) = delete;
+  Undo& operator=(const Undo&) = delete;
+  void moved_aside(fs::path target, fs::path aside) { target_ = std::move(target), aside_ = std::move(aside); }
+  void dismiss() { dismissed_ = true; }
+
+ private:
+  fs::path staging_, created_, target_, aside_;
+  bool dismissed_ = false;
+};
+
+void OutputTransaction::commit() {
+  const fs::path target = normalised(target_);
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (fs::exists(target, ec) && !fs::is_directory(target, ec))
+    throw Error("output path " + target.string() + " exists and is not a folder");
+  const fs::path staging = sibling(parent, target, "staging"), aside = sibling(parent, target, "old");
+  Undo undo(staging, create_folders(parent));
+  fs::remove_all(staging, ec);  // left by an earlier process with this pid
+  fs::remove_all(aside, ec);
+  ec = fault_ == Step::CreateStaging ? injected() : std::error_code();
+  if (!ec) fs::create_directory(staging, ec);
+  if (ec) throw Error("cannot create staging folder " + staging.string() + ": " + ec.message());
+  std::size_t written = 0;
   for (const auto& [name, bytes] : files_) {
     const fs::path file = staging / name;
     fs::create_directories(file.parent_path(), ec);
-    if (ec) abandon("cannot create " + file.parent_path().string() + ": " + ec.message());
-    std::ofstream out(file, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) abandon("cannot write " + (target / name).string());
+    if (ec) throw Error("cannot create " + file.parent_path().string() + ": " + ec.message());
+    if (fault_ == Step::WriteFile && written == 1)
+      throw Error("cannot write " + (target / name).string() + ": " + injected().message());
+    write_bytes(file, bytes, target / name);
+    ++written;
   }
-  if (!fs::exists(target)) {
-    fs::rename(staging, target, ec);  // one atomic step
-    if (ec) abandon("cannot move " + staging.string() + " to " + target.string() + ": " + ec.message());
-    return;
+  const bool replacing = fs::exists(target, ec);
+  if (replacing) {
+    ec = fault_ == Step::MoveOldAside ? injected() : std::error_code();
+    if (!ec) fs::rename(target, aside, ec);
+    if (ec) throw Error("cannot move the previous " + target.string() + " aside to " + aside.string() + ": " + ec.message());
+    undo.moved_aside(target, aside);
   }
-  // Target exists: move file by file (each rename is atomic; all files are already complete).
-  for (const auto& [name, bytes] : files_) {
-    fs::create_directories((target / name).parent_path(), ec);
-    if (!ec) fs::rename(staging / name, target / name, ec);
-    if (ec) abandon("cannot move " + name + " into " + target.string() + ": " + ec.message());
+  ec = fault_ == Step::MoveNewIn ? injected() : std::error_code();
+  if (!ec) fs::rename(staging, target, ec);  // the commit point
+  if (ec) {
+    std::string why = "cannot move " + staging.string() + " to " + target.string() + ": " + ec.message();
+    if (replacing) {
+      std::error_code back;
+      fs::rename(aside, target, back);
+      if (back) why += "; the previous contents could not be moved back either and are in " + aside.string();
+    }
+    throw Error(why);  // (Undo tries the move back once more if it failed here)
   }
-  fs::remove_all(staging, ec);
+  undo.dismiss();
+  if (replacing) {
+    ec = fault_ == Step::RemoveOld ? injected() : std::error_code();
+    if (!ec) fs::remove_all(aside, ec);
+    if (ec)
+      throw Error("the new output in " + target.string() + " is complete, but the previous contents, moved to " +
+                  aside.string() + ", could not be removed: " + ec.message());
+  }
+}
+
+void write_file_atomically(const fs::path& path, const std::string& bytes) {
+  const fs::path target = normalised(path);
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  const fs::path temporary = sibling(parent, target, "staging");
+  Undo undo(temporary, create_folders(parent));
+  write_bytes(temporary, bytes, target);
+  std::error_code ec;
+  fs::rename(temporary, target, ec);
+  if (ec) throw Error("cannot write " + target.string() + ": " + ec.message());
+  undo.dismiss();
 }
 
 }  // namespace sg

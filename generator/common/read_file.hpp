@@ -1,20 +1,13 @@
 #pragma once
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
-
-#include "base/error.hpp"
 
 namespace sg {
 
-// The whole file as bytes; throws sg::Error naming it when it cannot be read.
-inline std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path.string() + ": cannot open");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+// The whole file as bytes. Throws sg::Error naming the file when it cannot be
+// read, is a directory, or holds more than `max_bytes` (the limit for `kind`
+// files, e.g. "scheme", named in the message); it never reads more than
+// max_bytes + 1 bytes, whatever the file claims to be (a pipe, /dev/zero).
+std::string read_file(const std::filesystem::path& path, long max_bytes, const std::string& kind);
 
 }  // namespace sg

@@ -1,27 +1,63 @@
 #include "common/scheme_file.hpp"
 
+#include <cctype>
+
+#include "base/error.hpp"
+#include "base/limits.hpp"
 #include "common/hash.hpp"
 #include "common/parameters_json.hpp"
 #include "common/read_file.hpp"
+#include "common/scheme_registry.hpp"
 
 namespace sg {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-json read_scheme_document(const fs::path& file, const SchemeContext& ctx) {
-  json doc;
+namespace {
+
+// A name a formula can use: a letter or '_', then letters, digits and '_'.
+bool is_parameter_name(const std::string& name) {
+  if (name.empty() || static_cast<long>(name.size()) > limits::kMaxNameLength) return false;
+  if (!std::isalpha(static_cast<unsigned char>(name[0])) && name[0] != '_') return false;
+  for (char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  return true;
+}
+
+}  // namespace
+
+Rational SchemeContext::rational(const json& j, const std::string& field, const Bindings& b) const {
+  if (j.is_number_integer()) return Rational(Integer(j.dump()));  // exact for any 64-bit value, signed or not
+  if (!j.is_string())
+    fail(field, "expected an exact rational string such as \"-1/16\" (floating point is not exact), got " +
+                    json_excerpt(j));
   try {
-    doc = json::parse(read_file(file));
-  } catch (const json::parse_error& e) {
-    ctx.fail("", std::string("not valid JSON: ") + e.what());
+    return evaluate_expression(j.get_ref<const std::string&>(), b);
+  } catch (const Error& e) {
+    fail(field, e.what());
   }
-  if (!doc.is_object()) ctx.fail("", "expected a JSON object");
+}
+
+std::string SchemeContext::formula(const json& j, const std::string& field) const {
+  if (j.is_number_integer()) return j.dump();
+  if (!j.is_string()) fail(field, "expected a formula string in v, got " + json_excerpt(j));
+  return j.get<std::string>();
+}
+
+json parse_scheme_document(const std::string& text, const SchemeContext& ctx) {
+  const json doc = parse_json_document<json>(text, ctx.origin());
+  ctx.object(doc, "");
   if (ctx.require(doc, "format", "") != "stencilgen-scheme") ctx.fail("format", "expected \"stencilgen-scheme\"");
-  if (ctx.integer(ctx.require(doc, "version", ""), "version") != 1) ctx.fail("version", "only version 1 is supported");
-  const json& name = ctx.require(doc, "name", "");
-  if (!name.is_string() || name.get<std::string>().empty()) ctx.fail("name", "expected a non-empty string");
-  if (!ctx.require(doc, "type", "").is_string()) ctx.fail("type", "expected a string");
+  ctx.integer(ctx.require(doc, "version", ""), "version", 1, 1);
+  const std::string& name = ctx.string(ctx.require(doc, "name", ""), "name");
+  if (!is_scheme_name(name)) ctx.fail("name", "'" + excerpt(name) + "' is not a scheme name: " + kSchemeNameRule);
+  ctx.string(ctx.require(doc, "type", ""), "type");
+  if (doc.contains("description")) ctx.string(doc["description"], "description");
   return doc;
+}
+
+json read_scheme_document(const fs::path& file, const SchemeContext& ctx) {
+  return parse_scheme_document(read_file(file, limits::kMaxSchemeFileBytes, "scheme"), ctx);
 }
 
 std::uint64_t scheme_content_hash(json canonical, const Bindings& parameters) {
@@ -34,24 +70,28 @@ Bindings resolve_parameters(const json& doc, const std::vector<std::string>& ove
                             const SchemeContext& ctx) {
   Bindings params;
   if (doc.contains("parameters")) {
-    if (!doc["parameters"].is_object()) ctx.fail("parameters", "expected an object");
-    for (const auto& [key, value] : doc["parameters"].items())
-      params[key] = ctx.rational(value, "parameters." + key, {});
+    for (const auto& [key, value] : ctx.object(doc["parameters"], "parameters").items()) {
+      const std::string field = field_path("parameters", key);
+      if (!is_parameter_name(key))
+        ctx.fail(field, "'" + excerpt(key) + "' is not a parameter name (a letter or '_', then letters, digits and '_'; at most " +
+                            std::to_string(limits::kMaxNameLength) + " characters)");
+      params[key] = ctx.rational(value, field, {});
+    }
   }
   for (const std::string& o : overrides) {
     const auto eq = o.find('=');
-    if (eq == std::string::npos) throw Error("parameter override '" + o + "' is not NAME=VALUE");
+    if (eq == std::string::npos) throw Error("parameter override '" + excerpt(o) + "' is not NAME=VALUE");
     const std::string key = o.substr(0, eq);
     if (!params.count(key)) {
       std::string known;
       for (const auto& [k, v] : params) known += (known.empty() ? "" : ", ") + k;
-      throw Error("scheme '" + scheme_name + "' has no parameter '" + key + "'" +
+      throw Error("scheme '" + scheme_name + "' has no parameter '" + excerpt(key) + "'" +
                   (known.empty() ? " (it has none)" : " (it has: " + known + ")"));
     }
     try {
       params[key] = evaluate_expression(o.substr(eq + 1), {});
     } catch (const Error& e) {
-      throw Error("parameter override '" + o + "': " + e.what());
+      throw Error("parameter override " + key + ": " + e.what());
     }
   }
   return params;

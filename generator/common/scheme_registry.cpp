@@ -1,11 +1,12 @@
 #include "common/scheme_registry.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
-#include "common/read_file.hpp"
+#include "base/limits.hpp"
 #include "common/scheme_file.hpp"
 
 namespace sg {
@@ -17,6 +18,18 @@ fs::path default_schemes_dir() {
   return STENCILGEN_SCHEMES_DIR;
 }
 
+const char* const kSchemeNameRule =
+    "letters, digits, '-' and '_', starting with a letter or digit, at most 64 characters";
+static_assert(limits::kMaxNameLength == 64, "kSchemeNameRule states the limit");
+
+bool is_scheme_name(const std::string& name) {
+  if (name.empty() || static_cast<long>(name.size()) > limits::kMaxNameLength) return false;
+  if (!std::isalnum(static_cast<unsigned char>(name[0]))) return false;
+  for (char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') return false;
+  return true;
+}
+
 std::vector<std::string> available_schemes(const fs::path& dir, SchemeFamily family) {
   std::vector<std::string> names;
   std::error_code ec;
@@ -25,9 +38,10 @@ std::vector<std::string> available_schemes(const fs::path& dir, SchemeFamily fam
     if (family != SchemeFamily::Any) {
       std::string type;
       try {
-        type = json::parse(read_file(entry.path())).value("type", "");
-      } catch (const std::exception&) {
-        continue;  // unreadable files belong to no family; loading them reports why
+        const SchemeContext ctx(entry.path().string());
+        type = read_scheme_document(entry.path(), ctx).at("type").get<std::string>();
+      } catch (const Error&) {
+        continue;  // unreadable or invalid files belong to no family; loading them reports why
       }
       const SchemeFamily of = type == "quad" ? SchemeFamily::Quad : type == "triangle" ? SchemeFamily::Triangle : SchemeFamily::Curve;
       if (of != family) continue;
@@ -41,9 +55,15 @@ std::vector<std::string> available_schemes(const fs::path& dir, SchemeFamily fam
 fs::path resolve_scheme_file(const std::string& spec, const fs::path& dir) {
   if (spec.empty()) throw Error("empty scheme name");
   const bool is_path = spec.find('/') != std::string::npos || spec.ends_with(".json");
+  if (!is_path && !is_scheme_name(spec))
+    throw Error("'" + excerpt(spec) + "' is neither a scheme name (" + kSchemeNameRule +
+                ") nor a path to a scheme file (containing '/' or ending in .json)");
   const fs::path file = is_path ? fs::path(spec) : dir / (spec + ".json");
-  if (!fs::is_regular_file(file)) {
-    if (is_path) throw Error(spec + ": no such scheme file");
+  std::error_code ec;
+  const bool found = fs::is_regular_file(file, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory) throw Error(excerpt(spec) + ": " + ec.message());
+  if (!found) {
+    if (is_path) throw Error(excerpt(spec) + ": no such scheme file");
     std::string list;
     for (const auto& n : available_schemes(dir)) list += (list.empty() ? "" : ", ") + n;
     throw Error("unknown scheme '" + spec + "' (no " + file.string() + "); available: " + list);

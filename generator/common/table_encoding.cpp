@@ -29,13 +29,4 @@ std::pair<long, long> reduced_fraction(long p, long q) {
   return {p / g, q / g};
 }
 
-std::string table_format(const std::string& text) {
-  try {
-    const ojson doc = ojson::parse(text);
-    return doc.is_object() ? doc.value("format", "") : "";
-  } catch (const ojson::parse_error&) {
-    return "";
-  }
-}
-
 }  // namespace sg

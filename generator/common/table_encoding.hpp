@@ -1,7 +1,7 @@
 #pragma once
 // What the table writers of the families share: the exact stencil entry of the
-// JSON tables, the scalar precision of the binary tables, reduced parameter
-// points, and the "format" field that tells table files apart.
+// JSON tables, the scalar precision of the binary tables, and reduced
+// parameter points.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
@@ -22,8 +22,5 @@ void put_scalar(std::string& out, double value, BinaryPrecision precision);
 
 // p/q in lowest terms, so that equal parameter points of different grids share one stored stencil.
 std::pair<long, long> reduced_fraction(long p, long q);
-
-// The "format" field of a table file, or "" when it has none.
-std::string table_format(const std::string& text);
 
 }  // namespace sg

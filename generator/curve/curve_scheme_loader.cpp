@@ -4,6 +4,8 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
+#include "common/read_file.hpp"
 #include "common/scheme_file.hpp"
 #include "curve/knot_insertion.hpp"
 #include "curve/support.hpp"
@@ -26,9 +28,12 @@ class Context : public SchemeContext {
   using SchemeContext::SchemeContext;
   Mask mask(const json& j, const std::string& field, const Bindings& b) const {
     Mask m;
-    m.first = integer(require(j, "first", field), field + ".first");
+    m.first = integer(require(j, "first", field), field + ".first", -limits::kMaxMaskOffset, limits::kMaxMaskOffset);
     const json& coeffs = require(j, "coefficients", field);
     if (!coeffs.is_array() || coeffs.empty()) fail(field + ".coefficients", "expected a non-empty array");
+    if (static_cast<long>(coeffs.size()) > limits::kMaxMaskLength)
+      fail(field + ".coefficients", std::to_string(coeffs.size()) + " coefficients; the limit is " +
+                                        std::to_string(limits::kMaxMaskLength));
     for (std::size_t i = 0; i < coeffs.size(); ++i)
       m.coefficients.push_back(rational(coeffs[i], field + ".coefficients[" + std::to_string(i) + "]", b));
     // Trim zero ends so that `first`/`last` are the true mask support.
@@ -123,38 +128,44 @@ void build_from_knots(CurveScheme& s, const KnotSpec& spec, const Context& ctx) 
 
 CurveScheme load_curve_scheme(const std::string& spec, const std::vector<std::string>& overrides, const fs::path& dir) {
   const fs::path file = resolve_scheme_file(spec, dir);
-  const Context ctx(file.string());
-  const json doc = read_scheme_document(file, ctx);
+  return curve_scheme_from_json(read_file(file, limits::kMaxSchemeFileBytes, "scheme"), file.string(), overrides);
+}
+
+CurveScheme curve_scheme_from_json(const std::string& text, const std::string& origin,
+                                   const std::vector<std::string>& overrides) {
+  const Context ctx(origin);
+  const json doc = parse_scheme_document(text, ctx);
 
   CurveScheme s;
-  s.source = file.string();
+  s.source = origin;
   s.name = doc.at("name").get<std::string>();
   s.description = doc.value("description", "");
   s.parameters = resolve_parameters(doc, overrides, s.name, ctx);
 
-  const json& type = ctx.require(doc, "type", "");
-  if (!type.is_string()) ctx.fail("type", "expected a string");
-  const std::string kind = type.get<std::string>();
+  const std::string kind = doc.at("type").get<std::string>();
+  auto arity = [&] { return static_cast<int>(ctx.integer(ctx.require(doc, "arity", ""), "arity", 2, 3)); };
   if (kind == "curve-uniform") {
     s.kind = "uniform";
-    s.arity = static_cast<int>(ctx.integer(ctx.require(doc, "arity", ""), "arity"));
-    if (s.arity != 2 && s.arity != 3) ctx.fail("arity", "must be 2 or 3, got " + std::to_string(s.arity));
+    s.arity = arity();
     const Mask m = ctx.mask(ctx.require(doc, "mask", ""), "mask", s.parameters);
     s.types = {{"phi", Placement::Everywhere, 0, mask_terms(m, 0), 0, 0}};
   } else if (kind == "curve-columns") {
     s.kind = "columns";
-    s.arity = static_cast<int>(ctx.integer(ctx.require(doc, "arity", ""), "arity"));
-    if (s.arity != 2 && s.arity != 3) ctx.fail("arity", "must be 2 or 3, got " + std::to_string(s.arity));
+    s.arity = arity();
     const Mask left = ctx.mask(doc.contains("left_mask") ? doc["left_mask"] : ctx.require(doc, "mask", ""),
                                doc.contains("left_mask") ? "left_mask" : "mask", s.parameters);
     const Mask right = ctx.mask(doc.contains("right_mask") ? doc["right_mask"] : ctx.require(doc, "mask", ""),
                                 doc.contains("right_mask") ? "right_mask" : "mask", s.parameters);
     const json& cols = ctx.require(doc, "special_columns", "");
-    if (!cols.is_array()) ctx.fail("special_columns", "expected an array");
+    ctx.array(cols, "special_columns");
+    if (static_cast<long>(cols.size()) > limits::kMaxSpecialColumns)
+      ctx.fail("special_columns", std::to_string(cols.size()) + " columns; the limit is " +
+                                      std::to_string(limits::kMaxSpecialColumns));
     std::map<long, Column> special;
     for (std::size_t i = 0; i < cols.size(); ++i) {
-      const std::string field = "special_columns[" + std::to_string(i) + "]";
-      const long index = ctx.integer(ctx.require(cols[i], "index", field), field + ".index");
+      const std::string field = field_path("special_columns", i);
+      const long index = ctx.integer(ctx.require(cols[i], "index", field), field + ".index", -limits::kMaxMaskOffset,
+                                     limits::kMaxMaskOffset);
       const Mask m = ctx.mask(cols[i], field, s.parameters);
       if (special.count(index)) ctx.fail(field, "column " + std::to_string(index) + " is listed twice");
       special[index] = Column{m.first, m.coefficients};
@@ -164,14 +175,17 @@ CurveScheme load_curve_scheme(const std::string& spec, const std::vector<std::st
     s.kind = "knots";
     s.arity = 2;
     KnotSpec k;
-    k.degree = static_cast<int>(ctx.integer(ctx.require(doc, "degree", ""), "degree"));
+    k.degree = static_cast<int>(
+        ctx.integer(ctx.require(doc, "degree", ""), "degree", limits::kMinKnotDegree, limits::kMaxKnotDegree));
     const json& spacing = ctx.require(doc, "knot_spacing", "");
     k.left_spacing = ctx.rational(ctx.require(spacing, "left", "knot_spacing"), "knot_spacing.left", s.parameters);
     k.right_spacing = ctx.rational(ctx.require(spacing, "right", "knot_spacing"), "knot_spacing.right", s.parameters);
     if (k.left_spacing <= 0 || k.right_spacing <= 0) ctx.fail("knot_spacing", "spacings must be positive");
     build_from_knots(s, k, ctx);
   } else {
-    ctx.fail("type", kind == "quad" ? "is a quad surface scheme, not a curve scheme" : "unknown type '" + kind + "' (expected curve-uniform, curve-columns, curve-knots or quad)");
+    ctx.fail("type", kind == "quad" || kind == "triangle"
+                         ? "'" + kind + "' is a surface scheme, not a curve scheme"
+                         : "unknown type '" + excerpt(kind) + "' (expected curve-uniform, curve-columns, curve-knots, quad or triangle)");
   }
 
   compute_supports(s);

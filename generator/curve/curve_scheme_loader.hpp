@@ -13,4 +13,8 @@ namespace sg {
 CurveScheme load_curve_scheme(const std::string& spec, const std::vector<std::string>& overrides = {},
                               const std::filesystem::path& dir = default_schemes_dir());
 
+// The same from a scheme document in memory; `origin` names it in errors (and becomes `source`).
+CurveScheme curve_scheme_from_json(const std::string& text, const std::string& origin,
+                                   const std::vector<std::string>& overrides = {});
+
 }  // namespace sg

@@ -3,10 +3,16 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 #include "common/parameters_json.hpp"
 
 namespace sg {
 using ojson = nlohmann::ordered_json;
+
+namespace {
+// Where a function of a curve table can sit: far beyond any mask offset, well inside a long.
+constexpr long kMaxPosition = 1L << 31;
+}  // namespace
 
 std::string curve_table_to_json(const CurveTable& t) {
   ojson doc;
@@ -35,51 +41,55 @@ std::string curve_table_to_json(const CurveTable& t) {
 }
 
 CurveTable curve_table_from_json(const std::string& text, const std::string& origin) {
-  auto fail = [&](const std::string& what) -> Error { return Error(origin + ": " + what); };
-  ojson doc;
-  try {
-    doc = ojson::parse(text);
-  } catch (const ojson::parse_error& e) {
-    throw fail(std::string("not valid JSON: ") + e.what());
-  }
-  try {
-    if (doc.at("format") != kCurveTableFormat) throw fail("format is not \"" + std::string(kCurveTableFormat) + "\"");
-    if (doc.at("version") != kCurveTableVersion)
-      throw fail("version " + doc.at("version").dump() + " is not supported (expected " +
-                 std::to_string(kCurveTableVersion) + ")");
-    CurveTable t;
-    t.scheme = doc.at("scheme").get<std::string>();
-    t.scheme_hash = doc.at("scheme_hash").get<std::string>();
-    for (const auto& [k, v] : doc.at("parameters").items()) t.parameters[k] = parse_rational(v.get<std::string>());
-    t.arity = doc.at("arity").get<int>();
-    t.n = doc.at("n").get<long>();
-    if (t.n < 1) throw fail("n must be at least 1");
-    for (const auto& fj : doc.at("functions")) {
-      CurveTable::Function f;
-      f.name = fj.at("name").get<std::string>();
-      const std::string p = fj.at("placement").get<std::string>();
-      if (p == "every") f.placement = Placement::Everywhere;
-      else if (p == "at-most") f.placement = Placement::AtMost;
-      else if (p == "at-least") f.placement = Placement::AtLeast;
-      else if (p == "single") f.placement = Placement::Single;
-      else throw fail("function '" + f.name + "': unknown placement '" + p + "'");
-      f.position = fj.at("position").get<long>();
-      f.support_lo = parse_rational(fj.at("support").at(0).get<std::string>());
-      f.support_hi = parse_rational(fj.at("support").at(1).get<std::string>());
-      for (const auto& [key, value] : fj.at("values").items()) {
-        const Rational x = parse_rational(key) * t.n;
-        if (denominator(x) != 1) throw fail("function '" + f.name + "': parameter " + key + " is not on the grid (1/n)Z");
-        const Rational v = parse_rational(value.get<std::string>());
-        f.values[numerator(x).convert_to<long>()] = v;
+  return curve_table_from_document(parse_table_document(text, origin));
+}
+
+CurveTable curve_table_from_document(const TableDocument& table) {
+  const DocumentReader<ojson> r(table.origin);
+  const ojson& doc = table.doc;
+  if (table.format != kCurveTableFormat) r.fail("format", "is not \"" + std::string(kCurveTableFormat) + "\"");
+  r.integer(r.require(doc, "version", ""), "version", kCurveTableVersion, kCurveTableVersion);
+  CurveTable t;
+  t.scheme = table.scheme;
+  t.scheme_hash = r.string(r.require(doc, "scheme_hash", ""), "scheme_hash");
+  for (const auto& [k, v] : doc.at("parameters").items())  // checked by parse_table_document
+    t.parameters[k] = r.rational_literal(v, field_path("parameters", k));
+  t.arity = static_cast<int>(r.integer(r.require(doc, "arity", ""), "arity", 2, 3));
+  t.n = r.integer(r.require(doc, "n", ""), "n", 1, limits::kMaxCurveRate);
+  const ojson& functions = r.array(r.require(doc, "functions", ""), "functions");
+  for (std::size_t i = 0; i < functions.size(); ++i) {
+    const std::string field = field_path("functions", i);
+    const ojson& fj = functions[i];
+    CurveTable::Function f;
+    f.name = r.string(r.require(fj, "name", field), field_path(field, "name"));
+    const std::string& p = r.string(r.require(fj, "placement", field), field_path(field, "placement"));
+    if (p == "every") f.placement = Placement::Everywhere;
+    else if (p == "at-most") f.placement = Placement::AtMost;
+    else if (p == "at-least") f.placement = Placement::AtLeast;
+    else if (p == "single") f.placement = Placement::Single;
+    else r.fail(field_path(field, "placement"), "unknown placement '" + excerpt(p) + "'");
+    f.position = r.integer(r.require(fj, "position", field), field_path(field, "position"), -kMaxPosition, kMaxPosition);
+    const std::string support = field_path(field, "support");
+    const ojson& ends = r.array(r.require(fj, "support", field), support);
+    if (ends.size() != 2) r.fail(support, "expected [lo, hi], got " + json_excerpt(ends));
+    f.support_lo = r.rational_literal(ends[0], field_path(support, 0));
+    f.support_hi = r.rational_literal(ends[1], field_path(support, 1));
+    const std::string values = field_path(field, "values");
+    for (const auto& [key, value] : r.object(r.require(fj, "values", field), values).items()) {
+      const std::string at = field_path(values, key);
+      Rational x;
+      try {
+        x = parse_rational(key) * t.n;
+      } catch (const Error& e) {
+        r.fail(at, std::string("the parameter: ") + e.what());
       }
-      t.functions.push_back(std::move(f));
+      if (denominator(x) != 1) r.fail(at, "the parameter " + excerpt(key) + " is not on the grid (1/n)Z");
+      if (!fits_long(numerator(x))) r.fail(at, "the parameter " + excerpt(key) + " is outside every support");
+      f.values[numerator(x).convert_to<long>()] = r.rational_literal(value, at);
     }
-    return t;
-  } catch (const Error&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw fail(std::string("malformed table: ") + e.what());
+    t.functions.push_back(std::move(f));
   }
+  return t;
 }
 
 }  // namespace sg

@@ -1,6 +1,7 @@
 #pragma once
 #include <string>
 
+#include "common/table_document.hpp"
 #include "curve/curve_table.hpp"
 
 namespace sg {
@@ -9,7 +10,9 @@ inline constexpr const char* kCurveTableFormat = "stencilgen-curve-table";
 inline constexpr int kCurveTableVersion = 1;
 
 std::string curve_table_to_json(const CurveTable& table);
-// `origin` names the file in error messages.
+// Reads a table back; errors name `origin` (the file) and the JSON path of the
+// field at fault. Rates above limits::kMaxCurveRate are refused.
 CurveTable curve_table_from_json(const std::string& text, const std::string& origin);
+CurveTable curve_table_from_document(const TableDocument& table);
 
 }  // namespace sg

@@ -4,7 +4,9 @@
 #include <tbb/parallel_for.h>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 #include "common/atomic_output.hpp"
+#include "common/rate_spec.hpp"
 #include "curve/curve_table_binary.hpp"
 #include "curve/curve_table_json.hpp"
 #include "curve/curve_table_verify.hpp"
@@ -16,8 +18,7 @@ namespace sg {
 std::vector<CurveTable> generate_curve_tables(const CurveScheme& scheme, const std::vector<long>& rates,
                                               RouteChoice routes,
                                               const std::function<void(const std::string&)>& progress) {
-  for (long n : rates)
-    if (n < 1) throw Error("rate n must be at least 1, got " + std::to_string(n));
+  check_rates(rates, limits::kMaxCurveRate, "the largest rate for curve schemes");
   std::vector<CurveTable> tables(rates.size());
   std::mutex report;
   std::size_t done = 0;

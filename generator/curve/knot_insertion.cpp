@@ -1,12 +1,15 @@
 #include "curve/knot_insertion.hpp"
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 
 namespace sg {
 
 std::map<long, Column> knot_insertion_columns(const KnotSpec& spec, long radius) {
   const int d = spec.degree;
-  if (d < 1 || d > 15) throw Error("knot degree " + std::to_string(d) + " is outside 1..15");
+  if (d < limits::kMinKnotDegree || d > limits::kMaxKnotDegree)
+    throw Error("knot degree " + std::to_string(d) + " is outside " + std::to_string(limits::kMinKnotDegree) + ".." +
+                std::to_string(limits::kMaxKnotDegree));
   if (spec.left_spacing <= 0 || spec.right_spacing <= 0) throw Error("knot spacings must be positive");
   const long centre = (d + 1) / 2;
   const long K = 2 * radius + 2 * (d + 2);  // knot window t_{-K} .. t_K, wide enough to keep columns exact

@@ -5,7 +5,9 @@
 #include <tbb/parallel_for.h>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 #include "common/atomic_output.hpp"
+#include "common/rate_spec.hpp"
 #include "common/table_set_pipeline.hpp"
 #include "curve/curve_table.hpp"
 #include "curve/curve_table_json.hpp"
@@ -22,6 +24,7 @@ QuadTableSet generate_quad_tables(const QuadScheme& scheme, const std::vector<in
                                         const std::function<void(const std::string&)>& progress) {
   if (valences.empty() || rates.empty()) throw Error("nothing to generate: no valences or no rates");
   for (int v : valences) scheme.vertex_rule(v);  // range check with the scheme's own message
+  check_rates(rates, limits::kMaxSurfaceRate, "the largest rate for surface schemes");
   QuadTableSet set;
   set.descent = std::make_shared<const QuadDescent>(quad_descent(scheme, valences));
   set.rates = rates;

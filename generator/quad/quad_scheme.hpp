@@ -8,6 +8,7 @@
 #include <string>
 
 #include "algebra/rational.hpp"
+#include "base/limits.hpp"
 #include "curve/curve_scheme.hpp"
 
 namespace sg {
@@ -27,7 +28,7 @@ struct QuadScheme {
   Rational face_corner;           // face point: face_corner * each of the 4 corners
   Rational edge_end, edge_wing;   // edge point: edge_end * both ends + edge_wing * the 4 other corners of its 2 faces
   std::string vertex_centre, vertex_edge, vertex_face;  // formulas in v (and the parameters)
-  int min_valence = 3, max_valence = 64;
+  int min_valence = limits::kMinValence, max_valence = limits::kMaxValence;
 
   // Optional rules for one subdivision step of a mesh with arbitrary polygons
   // (after which every face is a quad). Face point: the centroid. Edge point:

@@ -1,8 +1,10 @@
 #include "quad/quad_scheme_loader.hpp"
 
+#include "base/limits.hpp"
 #include "common/hash.hpp"
-#include "curve/curve_scheme_loader.hpp"
+#include "common/read_file.hpp"
 #include "common/scheme_file.hpp"
+#include "curve/curve_scheme_loader.hpp"
 
 namespace sg {
 namespace fs = std::filesystem;
@@ -51,10 +53,7 @@ void load_polygon_rules(QuadScheme& q, const json& p, const SchemeContext& ctx) 
   r.edge_end = ctx.rational(ctx.require(edge, "end", "polygon_rules.edge"), "polygon_rules.edge.end", q.parameters);
   r.edge_face = ctx.rational(ctx.require(edge, "face_point", "polygon_rules.edge"), "polygon_rules.edge.face_point", q.parameters);
   auto formula = [&](const char* key) {
-    const json& f = ctx.require(vertex, key, "polygon_rules.vertex");
-    if (f.is_number_integer()) return std::to_string(f.get<long>());
-    if (!f.is_string()) ctx.fail(std::string("polygon_rules.vertex.") + key, "expected a formula string in v");
-    return f.get<std::string>();
+    return ctx.formula(ctx.require(vertex, key, "polygon_rules.vertex"), std::string("polygon_rules.vertex.") + key);
   };
   r.vertex_centre = formula("centre");
   r.vertex_midpoint = formula("edge_midpoint");
@@ -63,7 +62,7 @@ void load_polygon_rules(QuadScheme& q, const json& p, const SchemeContext& ctx) 
     ctx.fail("polygon_rules.edge", "on quads it gives end " + to_string(r.edge_end + r.edge_face / 2) + " and wing " +
                                        to_string(r.edge_face / 4) + ", but rules.edge has " + to_string(q.edge_end) +
                                        " and " + to_string(q.edge_wing));
-  for (int v = q.min_valence; v <= std::min(q.max_valence, 64); ++v) {
+  for (int v = q.min_valence; v <= q.max_valence; ++v) {
     const auto pr = q.polygon_vertex_rule(v);
     const VertexRule want = q.vertex_rule(v);
     const Rational centre = pr.centre + pr.midpoint / 2 + pr.face / 4, e = (pr.midpoint + pr.face) / (2 * v),
@@ -80,21 +79,28 @@ void load_polygon_rules(QuadScheme& q, const json& p, const SchemeContext& ctx) 
 
 QuadScheme load_quad_scheme(const std::string& spec, const std::vector<std::string>& overrides, const fs::path& dir) {
   const fs::path file = resolve_scheme_file(spec, dir);
-  const SchemeContext ctx(file.string());
-  const json doc = read_scheme_document(file, ctx);
+  return quad_scheme_from_json(read_file(file, limits::kMaxSchemeFileBytes, "scheme"), file.string(), overrides,
+                               file.has_parent_path() ? file.parent_path() : dir);
+}
+
+QuadScheme quad_scheme_from_json(const std::string& text, const std::string& origin,
+                                 const std::vector<std::string>& overrides, const fs::path& curve_dir) {
+  const SchemeContext ctx(origin);
+  const json doc = parse_scheme_document(text, ctx);
   const std::string type = doc.at("type").get<std::string>();
-  if (type != "quad") ctx.fail("type", "'" + type + "' is not a quad surface scheme (expected \"quad\")");
+  if (type != "quad") ctx.fail("type", "'" + excerpt(type) + "' is not a quad surface scheme (expected \"quad\")");
 
   QuadScheme q;
-  q.source = file.string();
+  q.source = origin;
   q.name = doc.at("name").get<std::string>();
   q.description = doc.value("description", "");
   q.parameters = resolve_parameters(doc, overrides, q.name, ctx);
 
-  const json& curve = ctx.require(doc, "regular_curve", "");
-  if (!curve.is_string()) ctx.fail("regular_curve", "expected the name of a curve scheme");
+  const std::string& curve = ctx.string(ctx.require(doc, "regular_curve", ""), "regular_curve");
+  if (!is_scheme_name(curve))
+    ctx.fail("regular_curve", "'" + excerpt(curve) + "' is not the name of a curve scheme (" + kSchemeNameRule + ")");
   try {
-    q.curve = load_curve_scheme(curve.get<std::string>(), {}, file.has_parent_path() ? file.parent_path() : dir);
+    q.curve = load_curve_scheme(curve, {}, curve_dir);
   } catch (const Error& e) {
     ctx.fail("regular_curve", e.what());
   }
@@ -110,23 +116,20 @@ QuadScheme load_quad_scheme(const std::string& spec, const std::vector<std::stri
   if (2 * q.edge_end + 4 * q.edge_wing != 1)
     ctx.fail("rules.edge", "2 * end + 4 * wing must be 1, got " + to_string(2 * q.edge_end + 4 * q.edge_wing));
   auto formula = [&](const char* key) {
-    const json& f = ctx.require(vertex, key, "rules.vertex");
-    if (f.is_number_integer()) return std::to_string(f.get<long>());
-    if (!f.is_string()) ctx.fail(std::string("rules.vertex.") + key, "expected a formula string in v, got " + f.dump());
-    return f.get<std::string>();
+    return ctx.formula(ctx.require(vertex, key, "rules.vertex"), std::string("rules.vertex.") + key);
   };
   q.vertex_centre = formula("centre");
   q.vertex_edge = formula("edge");
   q.vertex_face = formula("face");
   if (doc.contains("valences")) {
     const json& v = doc["valences"];
-    q.min_valence = static_cast<int>(ctx.integer(ctx.require(v, "min", "valences"), "valences.min"));
-    q.max_valence = static_cast<int>(ctx.integer(ctx.require(v, "max", "valences"), "valences.max"));
-    if (q.min_valence < 3 || q.max_valence < q.min_valence || q.max_valence > 1000)
-      ctx.fail("valences", "need 3 <= min <= max <= 1000");
+    q.min_valence = static_cast<int>(
+        ctx.integer(ctx.require(v, "min", "valences"), "valences.min", limits::kMinValence, limits::kMaxValence));
+    q.max_valence = static_cast<int>(
+        ctx.integer(ctx.require(v, "max", "valences"), "valences.max", q.min_valence, limits::kMaxValence));
   }
   // Every covered valence must give a rule summing to 1 (cheap, and catches typos early).
-  for (int v = q.min_valence; v <= std::min(q.max_valence, 64); ++v) q.vertex_rule(v);
+  for (int v = q.min_valence; v <= q.max_valence; ++v) q.vertex_rule(v);
   check_tensor_product(q, ctx);
   if (doc.contains("polygon_rules")) load_polygon_rules(q, doc["polygon_rules"], ctx);
 

@@ -15,4 +15,10 @@ namespace sg {
 QuadScheme load_quad_scheme(const std::string& spec, const std::vector<std::string>& overrides = {},
                             const std::filesystem::path& dir = default_schemes_dir());
 
+// The same from a scheme document in memory; `origin` names it in errors (and
+// becomes `source`); the regular curve scheme is looked up in `curve_dir`.
+QuadScheme quad_scheme_from_json(const std::string& text, const std::string& origin,
+                                 const std::vector<std::string>& overrides,
+                                 const std::filesystem::path& curve_dir = default_schemes_dir());
+
 }  // namespace sg

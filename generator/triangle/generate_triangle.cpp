@@ -5,6 +5,8 @@
 #include <tbb/parallel_for.h>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
+#include "common/rate_spec.hpp"
 #include "common/table_set_pipeline.hpp"
 
 namespace sg {
@@ -14,6 +16,7 @@ TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const st
                                           const std::function<void(const std::string&)>& progress) {
   if (valences.empty() || rates.empty()) throw Error("nothing to generate: no valences or no rates");
   for (int v : valences) scheme.real_neighbour_weight(v);  // range check with the scheme's own message
+  check_rates(rates, limits::kMaxSurfaceRate, "the largest rate for surface schemes");
   TriangleTableSet set;
   set.rates = rates;
   set.valences = valences;

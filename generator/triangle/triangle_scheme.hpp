@@ -12,6 +12,7 @@
 #include "algebra/expression.hpp"
 #include "algebra/rational.hpp"
 #include "algebra/real.hpp"
+#include "base/limits.hpp"
 
 namespace sg {
 
@@ -30,7 +31,7 @@ struct TriangleScheme {
   // Both: new vertex = (1 - v w) old + w * (each of its v neighbours), w = vertex_neighbour(v).
   // (For sqrt(3) the new face vertex is the centroid; the old vertex is relaxed.)
   std::string vertex_neighbour;
-  int min_valence = 3, max_valence = 64;
+  int min_valence = limits::kMinValence, max_valence = limits::kMaxValence;
 
   // The dilation of one refinement of the lattice (sqrt(3): two steps composed).
   int dilation() const { return refinement == TriangleRefinement::Loop ? 2 : 3; }

@@ -15,4 +15,8 @@ namespace sg {
 TriangleScheme load_triangle_scheme(const std::string& spec, const std::vector<std::string>& overrides = {},
                                     const std::filesystem::path& dir = default_schemes_dir());
 
+// The same from a scheme document in memory; `origin` names it in errors (and becomes `source`).
+TriangleScheme triangle_scheme_from_json(const std::string& text, const std::string& origin,
+                                         const std::vector<std::string>& overrides = {});
+
 }  // namespace sg

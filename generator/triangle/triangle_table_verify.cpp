@@ -1,0 +1,19 @@
+#include "triangle/triangle_table_verify.hpp"
+
+#include "base/limits.hpp"
+
+namespace sg {
+using ojson = nlohmann::ordered_json;
+
+TriangleTableCheck verify_triangle_table(const TableDocument& table, const std::string& text, const TriangleScheme& scheme) {
+  const DocumentReader<ojson> r(table.origin);
+  if (table.format != kTriangleTableFormat) r.fail("format", "is not \"" + std::string(kTriangleTableFormat) + "\"");
+  const int v = static_cast<int>(r.integer(r.require(table.doc, "valence", ""), "valence", scheme.min_valence, scheme.max_valence));
+  const long n = r.integer(r.require(table.doc, "n", ""), "n", 1, limits::kMaxSurfaceRate);
+  TriangleTableCheck check;
+  check.fresh = solve_triangle_table(scheme, v, n, solve_regular(scheme, 3 * n));
+  check.same = triangle_table_to_json(check.fresh) == text;
+  return check;
+}
+
+}  // namespace sg
