@@ -34,6 +34,24 @@ struct Approximation {
   bool exact = true;
 };
 
+// A piece of a prepared face's patch after local subdivision by the scheme's
+// own rules: its control points, and the part of the patch's parameter domain
+// it covers (quads: the square [x0, x0 + size] x [y0, y0 + size] of the patch
+// coordinates, extraordinary vertex at (0,0)). Where the scheme's weights are
+// non-negative, the limit surface over it lies in the convex hull of its points.
+struct SubPatch {
+  std::size_t face = 0;  // the prepared face
+  int kind = 0;          // the family's patch kind (quads: the valence, 4 for regular)
+  std::vector<Point> points;
+  double x0 = 0, y0 = 0, size = 1;
+};
+
+// An original face and a parameter in its domain.
+struct FaceParameterReal {
+  std::size_t face = 0;
+  double u = 0, v = 0;
+};
+
 // Points and polygons of a tessellation, planned once: `rates` (one stored
 // rate per prepared face) in, point offsets and polygons out.
 struct TessellationLayout {
@@ -68,6 +86,17 @@ class Family {
   // scheme's tables give no rigorous bound.
   virtual Approximation evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const = 0;
   virtual Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const = 0;
+
+  // Sub-patches (closest points, fitting): the whole patch of a prepared face,
+  // its children under one step of the scheme, the limit point at a patch
+  // parameter inside a sub-patch, and which original face and parameter a
+  // prepared face's patch parameter is. Whether the control points of every
+  // sub-patch bound its surface (all subdivision weights non-negative).
+  virtual bool hull_bounds() const = 0;
+  virtual void root(std::size_t prepared_face, const Point* prepared, SubPatch& out) const = 0;
+  virtual int split(const SubPatch& in, SubPatch* children) const = 0;  // at most 4 children
+  virtual Approximation evaluate(const SubPatch& in, double x, double y, double tolerance) const = 0;
+  virtual FaceParameterReal original(std::size_t prepared_face, double x, double y) const = 0;
 
   // Fills layout.point_offsets, quads and triangles for layout.rates.
   virtual void plan(TessellationLayout& layout, const detail::RangeRunner& run) const = 0;

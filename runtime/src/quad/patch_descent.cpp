@@ -191,6 +191,31 @@ Approximation QuadPatchDescent::evaluate(int valence, std::vector<Point>& q, P x
   }
 }
 
+void QuadPatchDescent::child(int valence, const std::vector<Point>& q, int cx, int cy, std::vector<Point>& out,
+                             int& out_valence) const {
+  if (valence == 4) {
+    out = q;
+    regular_child(out, cx, cy);
+    out_valence = 4;
+    return;
+  }
+  const QuadDescent::Valence& sub = tables_.descent(valence);
+  if (cx == 0 && cy == 0) {
+    apply(sub.ev_child, q, out);
+    out_valence = valence;
+  } else {
+    apply(sub.regular_children[cx == 1 && cy == 0 ? 0 : (cx == 0 ? 1 : 2)], q, out);
+    out_valence = 4;
+  }
+}
+
+bool QuadPatchDescent::nonnegative() const {
+  if (!d_.mask_nonnegative) return false;
+  for (int v : tables_.valences())
+    if (!tables_.descent(v).nonnegative) return false;
+  return true;
+}
+
 template Approximation QuadPatchDescent::evaluate<Fraction>(int, std::vector<Point>&, Fraction, Fraction, double) const;
 template Approximation QuadPatchDescent::evaluate<double>(int, std::vector<Point>&, double, double, double) const;
 

@@ -32,6 +32,13 @@ class QuadPatchDescent {
   template <class P>
   Approximation evaluate(int valence, std::vector<Point>& points, P x, P y, double tolerance) const;
 
+  // The child in quadrant (cx, cy) of a patch of kind `valence` (4: regular):
+  // for an extraordinary patch quadrant (0,0) is the extraordinary child (A0),
+  // the others its regular children; a regular patch's quadrants are regular.
+  void child(int valence, const std::vector<Point>& points, int cx, int cy, std::vector<Point>& out, int& out_valence) const;
+  // Whether every subdivision weight (mask, A0, regular children) is non-negative.
+  bool nonnegative() const;
+
  private:
   Approximation regular_bound(const std::vector<Point>& q, double x, double y) const;
   Point polynomial(const std::vector<Point>& q, double x, double y) const;

@@ -173,9 +173,7 @@ std::pair<std::size_t, std::array<double, 2>> QuadFamily::locate(std::size_t fac
 
 template <class P>
 Approximation QuadFamily::descend(std::size_t face, P u, P v, double tolerance, const Point* prepared) const {
-  if (!descent_)
-    throw EvaluationError("these tables hold no patch subdivision (exact JSON tables without descent data): evaluation at "
-                          "parameters they do not hold needs the .sgs file, or tables from this stencilgen");
+  checked_descent();
   const auto [pf, p] = locate_any(face, u, v);
   const QuadPatch& patch = patches_[pf];
   // Into the patch's own coordinates (the extraordinary vertex at (0, 0)).
@@ -188,7 +186,81 @@ Approximation QuadFamily::descend(std::size_t face, P u, P v, double tolerance, 
   }
   std::vector<Point> points(patch.points.size());
   for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
-  return descent_->evaluate(patch.valence, points, q[0], q[1], tolerance);
+  return checked_descent().evaluate(patch.valence, points, q[0], q[1], tolerance);
+}
+
+const QuadPatchDescent& QuadFamily::checked_descent() const {
+  if (!descent_)
+    throw EvaluationError("these tables hold no patch subdivision (exact JSON tables without descent data): it needs the "
+                          ".sgs file, or tables from this stencilgen");
+  return *descent_;
+}
+
+bool QuadFamily::hull_bounds() const { return checked_descent().nonnegative(); }
+
+void QuadFamily::root(std::size_t prepared_face, const Point* prepared, SubPatch& out) const {
+  const QuadPatch& patch = patches_[prepared_face];
+  out.face = prepared_face;
+  out.kind = patch.valence;
+  out.points.resize(patch.points.size());
+  for (std::size_t h = 0; h < out.points.size(); ++h) out.points[h] = prepared[patch.points[h]];
+  out.x0 = out.y0 = 0;
+  out.size = 1;
+}
+
+int QuadFamily::split(const SubPatch& in, SubPatch* children) const {
+  const QuadPatchDescent& d = checked_descent();
+  for (int c = 0; c < 4; ++c) {
+    const int cx = c & 1, cy = c >> 1;
+    SubPatch& out = children[c];
+    d.child(in.kind, in.points, cx, cy, out.points, out.kind);
+    out.face = in.face;
+    out.size = in.size / 2;
+    out.x0 = in.x0 + cx * out.size;
+    out.y0 = in.y0 + cy * out.size;
+  }
+  return 4;
+}
+
+Approximation QuadFamily::evaluate(const SubPatch& in, double x, double y, double tolerance) const {
+  std::vector<Point> points = in.points;
+  // The sub-patch's own parameters; exact fractions where the double is one (the descent then lands exactly).
+  const double sx = std::clamp((x - in.x0) / in.size, 0.0, 1.0), sy = std::clamp((y - in.y0) / in.size, 0.0, 1.0);
+  const auto fx = exact_fraction(sx), fy = exact_fraction(sy);
+  if (fx && fy) return checked_descent().evaluate(in.kind, points, *fx, *fy, tolerance);
+  return checked_descent().evaluate(in.kind, points, sx, sy, tolerance);
+}
+
+FaceParameterReal QuadFamily::original(std::size_t face, double x, double y) const {
+  // Patch coordinates back to the prepared face's (undo the rotation).
+  double u = x, v = y;
+  switch (patches_[face].rotation) {
+    case 0: break;
+    case 1: u = 1 - y, v = x; break;
+    case 2: u = 1 - x, v = 1 - y; break;
+    default: u = y, v = 1 - x; break;
+  }
+  // Up the hierarchy: each child's parameter to its parent's (the inverse of quadrant(), or a sub-face's tile).
+  for (std::size_t level = hierarchy_.levels.size(); level-- > 0;) {
+    const auto& offsets = hierarchy_.levels[level].child_offsets;
+    const std::size_t parent = static_cast<std::size_t>(std::upper_bound(offsets.begin(), offsets.end(), face) - offsets.begin()) - 1;
+    const int c = static_cast<int>(face - offsets[parent]);
+    if (level == 0 && polygon_step_ && original_sizes_[parent] != 4) {
+      const FaceDomain d = domain(parent);
+      u = c % d.u_tiles + u / 2, v = c / d.u_tiles + v / 2;
+    } else {
+      double pu = 0, pv = 0;
+      switch (c) {
+        case 0: pu = u / 2, pv = v / 2; break;
+        case 1: pu = (2 - v) / 2, pv = u / 2; break;
+        case 2: pu = (2 - u) / 2, pv = (2 - v) / 2; break;
+        default: pu = v / 2, pv = (2 - u) / 2; break;
+      }
+      u = pu, v = pv;
+    }
+    face = parent;
+  }
+  return {face, u, v};
 }
 
 Approximation QuadFamily::evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const {

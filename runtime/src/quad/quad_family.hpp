@@ -29,6 +29,11 @@ class QuadFamily final : public Family {
   bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const override;
   Approximation evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const override;
   Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const override;
+  bool hull_bounds() const override;
+  void root(std::size_t prepared_face, const Point* prepared, SubPatch& out) const override;
+  int split(const SubPatch& in, SubPatch* children) const override;
+  Approximation evaluate(const SubPatch& in, double x, double y, double tolerance) const override;
+  FaceParameterReal original(std::size_t prepared_face, double x, double y) const override;
   void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
   void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
               std::array<float, 3>* out) const override;
@@ -58,6 +63,7 @@ class QuadFamily final : public Family {
   std::vector<std::vector<double>> centre_weights_;
   std::unique_ptr<const QuadPatchDescent> descent_;  // null for tables without the patch subdivision
 
+  const QuadPatchDescent& checked_descent() const;  // throws EvaluationError without descent data
   template <class P>
   std::pair<std::size_t, std::array<P, 2>> locate_any(std::size_t face, P u, P v) const;
   template <class P>

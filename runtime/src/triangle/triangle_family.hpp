@@ -29,6 +29,12 @@ class TriangleFamily final : public Family {
   bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const override;
   Approximation evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const override;
   Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const override;
+  // Sub-patches need the triangle patch subdivision (the .sgt's children): not available yet.
+  bool hull_bounds() const override { return false; }
+  void root(std::size_t, const Point*, SubPatch&) const override { unavailable(); }
+  int split(const SubPatch&, SubPatch*) const override { unavailable(); }
+  Approximation evaluate(const SubPatch&, double, double, double) const override { unavailable(); }
+  FaceParameterReal original(std::size_t, double, double) const override { unavailable(); }
   void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
   void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
               std::array<float, 3>* out) const override;
@@ -42,6 +48,9 @@ class TriangleFamily final : public Family {
   std::pair<std::size_t, ExactParameter> locate(std::size_t face, const ExactParameter& at) const;
 
  private:
+  [[noreturn]] static void unavailable() {
+    throw EvaluationError("closest points on triangle schemes need the triangle patch subdivision, which these tables lack");
+  }
   struct Prepared;
   static Prepared prepare(const Tables& tables, const Connectivity& mesh);
   TriangleFamily(std::shared_ptr<const Tables> tables, Prepared prepared);
