@@ -83,11 +83,13 @@ def main():
         seed("curve_table_json", "off-grid-key.json", curve_json.replace('"1/3":', '"1/4":', 1))
 
         # JSON quad table directories: an input without "@@ " replaces the default file.
+        v3n1 = (json_dir / "v3/n1.json").read_text()
         v5n2 = (json_dir / "v5/n2.json").read_text()
-        seed("quad_json_table", "v5-n2.json", v5n2)
-        seed("quad_json_table", "v5-n1-as-n2.json", (json_dir / "v5/n1.json").read_text())
-        seed("quad_json_table", "truncated.json", v5n2[: len(v5n2) // 2])
-        seed("quad_json_table", "two-files", "@@ v3/n2.json\n" + (json_dir / "v3/n2.json").read_text() + "@@ v5/n2.json\n" + v5n2)
+        seed("quad_json_table", "v3-n1.json", v3n1)
+        seed("quad_json_table", "v3-n2-as-n1.json", (json_dir / "v3/n2.json").read_text())
+        seed("quad_json_table", "truncated.json", v3n1[: len(v3n1) // 2])
+        seed("quad_json_table", "two-files", "@@ v3/n2.json\n" + (json_dir / "v3/n2.json").read_text() +
+             "@@ v5/n1.json\n" + (json_dir / "v5/n1.json").read_text())
         regular4 = (json_dir / "regular/n4.json").read_text()
         seed("quad_json_regular", "regular-n4.json", regular4)
         seed("quad_json_regular", "regular-n2-as-n4.json", (json_dir / "regular/n2.json").read_text())

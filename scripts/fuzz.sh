@@ -33,6 +33,8 @@ done
 command -v clang++ > /dev/null || { echo "fuzz.sh: needs clang++ with libFuzzer (apt-get install clang libclang-rt-14-dev)" >&2; exit 2; }
 
 build=build-fuzz
+# Sanitizer reports with their stacks (libFuzzer itself stops at the first).
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}"
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTENCIL_FUZZ=ON -DBUILD_TESTING=OFF > /dev/null
 cmake --build "$build" --target fuzz_targets -j"${JOBS:-$(nproc)}"
 mapfile -t all < "$build/fuzz/fuzz_targets.txt"

@@ -3,8 +3,9 @@
 // may name and add other files), loaded by SurfaceTables::load_json_directory
 // and used as the tools use the tables. The two targets differ in the file an
 // input replaces by default (FUZZ_DEFAULT_FILE, set in fuzz/CMakeLists.txt):
-// an extraordinary patch's table (v5/n2.json) or the regular patch's curve
-// table (regular/n4.json), so that each has its own corpus.
+// the extraordinary patch table read first (v3/n1.json: the scheme hash and
+// rules come from it, and valence 3's reflection) or the regular patch's
+// curve table (regular/n4.json), so that each has its own corpus.
 #include "fuzz_support.hpp"
 #include "json_directory.hpp"
 #include "runtime_use.hpp"

@@ -16,8 +16,8 @@ stencil_runtime::CurveTable parse(const std::string& path) { return stencil_runt
 void use(const stencil_runtime::CurveTable& table) {
   if (table.functions.size() != 1) return;  // evaluate_uniform_curve is for uniform tables
   const std::vector<double> points{0, 1, 0, -1, 2, 0, 1, 3};
-  const std::int64_t last = std::min<std::int64_t>(8 * static_cast<std::int64_t>(table.n), 4096);
-  for (std::int64_t k = -static_cast<std::int64_t>(table.n); k <= last; ++k)
+  const std::int64_t n = table.n, reach = std::min<std::int64_t>(8 * n, 4096);  // bounded work
+  for (std::int64_t k = -std::min<std::int64_t>(n, 4096); k <= reach; ++k)
     stencil_runtime::evaluate_uniform_curve(table, points, k);
 }
 
