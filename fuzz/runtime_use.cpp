@@ -7,10 +7,12 @@
 
 #include "fuzz_support.hpp"
 #include "rate_choice.hpp"
-#include "stencil_runtime/limit_surface.hpp"
+#include "stencil_runtime/mesh_io.hpp"
+#include "stencil_runtime/surface.hpp"
+#include "stencil_runtime/surface_topology.hpp"
 #include "stencil_runtime/tessellation.hpp"
-#include "stencil_runtime/triangle_surface.hpp"
-#include "stencil_runtime/triangle_tessellation.hpp"
+#include "tables/quad_tables.hpp"
+#include "tables/triangle_tables.hpp"
 
 namespace fuzz {
 
@@ -47,49 +49,26 @@ const rt::Mesh& bundled_mesh(const char* name) {
   return it->second;
 }
 
-// Rate 1 for every original face, as stenciltess --rate 1 asks for it.
-template <class Surface>
-void tessellate_at_rate_one(const Surface& surface, const std::vector<int>& table_rates) {
-  std::vector<int> rates = rt::prepared_rates(surface, std::vector<int>(surface.original_faces(), 1));
-  stencil_tools::snap_to_tables(rates, table_rates);
-  rt::tessellate(surface, rates, {1});
-}
-
-// Corners and an inner point of the first original faces with `corners`
-// corners (the faces evaluate() takes), at every rate (quads: (i, j) in
-// [0, n]^2; triangles: i + j <= n).
-template <class Surface>
-void evaluate_some(const Surface& surface, const rt::Mesh& mesh, int corners, const std::vector<int>& table_rates,
-                   Budget& budget) {
-  std::vector<std::size_t> faces;
-  for (std::size_t f = 0; f < mesh.face_count() && faces.size() < 8; ++f)
-    if (mesh.face_sizes[f] == corners) faces.push_back(f);
-  for (int n : table_rates) {
-    const long far = corners == 4 ? n : 0;
-    const long points[][2] = {{0, 0}, {n, 0}, {0, n}, {far, far}, {n / 3, n / 3}};
-    for (std::size_t f : faces)
-      for (const auto& p : points) {
-        if (!budget.take(200)) return;
-        surface.evaluate(f, p[0], p[1], n);
-      }
-  }
-}
-
-void use_quad_surface(const rt::SurfaceTables& tables, const rt::Mesh& mesh, Budget& budget) {
+// As stenciltess does: topology from the connectivity, a plan at `rates`
+// (clamped to the tables by the plan), positions, then a few exact grid
+// parameters of the first faces evaluated (corners and an inner point at every
+// stored rate, within the budget). A valence or rule the tables lack is a
+// MeshError, reported by the tools the same way.
+void use_surface(const std::shared_ptr<const rt::Tables>& tables, const rt::Mesh& mesh, const std::vector<int>& rates,
+                 Budget& budget) {
   try {
-    const rt::LimitSurface surface(tables, mesh, "fuzz");
-    tessellate_at_rate_one(surface, tables.rates());
-    evaluate_some(surface, mesh, 4, tables.rates(), budget);
-  } catch (const rt::MeshError&) {
-    // A valence or rule the tables lack: the tools report it the same way.
-  }
-}
-
-void use_triangle_surface(const rt::TriangleTables& tables, const rt::Mesh& mesh, Budget& budget) {
-  try {
-    const rt::TriangleSurface surface(tables, mesh, "fuzz");
-    tessellate_at_rate_one(surface, tables.rates());
-    evaluate_some(surface, mesh, 3, tables.rates(), budget);
+    const auto topology = rt::SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
+    const rt::Surface surface(topology, mesh.positions);
+    rt::tessellate(surface, rates, {1});
+    const std::size_t faces = std::min<std::size_t>(topology->face_count(), 8);
+    for (int n : tables->rates()) {
+      const std::int64_t points[][2] = {{0, 0}, {n, 0}, {0, n}, {n / 3, n / 3}};
+      for (std::size_t f = 0; f < faces; ++f)
+        for (const auto& p : points) {
+          if (!budget.take(200)) return;
+          surface.evaluate(f, rt::ExactParameter{{p[0], n}, {p[1], n}});
+        }
+    }
   } catch (const rt::MeshError&) {
   }
 }
@@ -106,14 +85,11 @@ void check_permutation(const std::uint32_t* reflection, std::size_t points, int 
   }
 }
 
-}  // namespace
-
-void use_quad_tables(const rt::SurfaceTables& tables) {
-  Budget budget;
+void sweep_quad(const rt::QuadTables& tables, Budget& budget) {
   std::vector<int> valences = tables.valences();
   valences.push_back(4);
   for (int v : valences) {
-    std::vector<double> weights(static_cast<std::size_t>(rt::SurfaceTables::points(v)));
+    std::vector<double> weights(static_cast<std::size_t>(rt::QuadTables::points(v)));
     for (int n : tables.rates()) {
       if (!budget.take(2L * (n + 1) * (n + 1) * static_cast<long>(weights.size()))) break;
       for (int j = 0; j <= n; ++j)
@@ -122,8 +98,8 @@ void use_quad_tables(const rt::SurfaceTables& tables) {
           if (i < n && j < n) tables.centre_stencil(v, n, i, j, weights.data());
         }
       if (v == 4) continue;
-      // As LimitSurface::evaluate_centres reads them: whole stored stencils,
-      // applied to the control points permuted by the reflection where mirrored.
+      // As the tessellation reads them: whole stored stencils, applied to the
+      // control points permuted by the reflection where mirrored.
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
           bool mirrored = false;
@@ -133,12 +109,9 @@ void use_quad_tables(const rt::SurfaceTables& tables) {
     }
     if (v != 4) check_permutation(tables.reflection(v), weights.size(), v);
   }
-  use_quad_surface(tables, bundled_mesh("cube.obj"), budget);
-  use_quad_surface(tables, bundled_mesh("icosahedron.obj"), budget);
 }
 
-void use_triangle_tables(const rt::TriangleTables& tables) {
-  Budget budget;
+void sweep_triangle(const rt::TriangleTables& tables, Budget& budget) {
   for (int v : tables.valences())
     for (int region = 0; region < tables.regions(v); ++region) {
       const long points = static_cast<long>(tables.layout(v, region).size());
@@ -159,41 +132,46 @@ void use_triangle_tables(const rt::TriangleTables& tables) {
         if (!(sum == sum)) sum = 0;  // the sum is only read to keep the loads alive
       }
     }
-  use_triangle_surface(tables, bundled_mesh("icosahedron.obj"), budget);
+}
+
+}  // namespace
+
+void use_tables(const std::shared_ptr<const rt::Tables>& shared) {
+  Budget budget;
+  const rt::Tables& tables = *shared;
+  if (tables.family() == rt::SchemeFamily::Quad) {
+    sweep_quad(tables.quad(), budget);
+    for (const char* name : {"cube.obj", "icosahedron.obj"}) {
+      const rt::Mesh& mesh = bundled_mesh(name);
+      use_surface(shared, mesh, std::vector<int>(mesh.face_count(), 1), budget);
+    }
+  } else {
+    sweep_triangle(tables.triangle(), budget);
+    const rt::Mesh& mesh = bundled_mesh("icosahedron.obj");
+    use_surface(shared, mesh, std::vector<int>(mesh.face_count(), 1), budget);
+  }
 }
 
 void use_mesh(const rt::Mesh& mesh) {
-  static const rt::SurfaceTables quad_tables = [] {
+  auto fixture = [](const char* name) {
     try {
-      return rt::SurfaceTables::load((fixtures_dir() / "nonpoly.sgs").string());
+      return rt::Tables::load((fixtures_dir() / name).string());
     } catch (const std::exception& e) {
       harness_failure(e.what());
     }
-  }();
-  static const rt::TriangleTables triangle_tables = [] {
-    try {
-      return rt::TriangleTables::load((fixtures_dir() / "loop.sgt").string());
-    } catch (const std::exception& e) {
-      harness_failure(e.what());
-    }
-  }();
+  };
+  static const std::shared_ptr<const rt::Tables> quad_tables = fixture("nonpoly.sgs");
+  static const std::shared_ptr<const rt::Tables> triangle_tables = fixture("loop.sgt");
   const bool triangles = std::all_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k == 3; });
   // stenciltess --tolerance / --camera take the rates from the mesh before the
-  // surface checks it (corners: 3 with triangle tables, 4 with quad tables).
+  // surface checks it.
   try {
-    stencil_tools::rates_for_tolerance(mesh, 1e-3, triangles ? 3 : 4);
+    stencil_tools::rates_for_tolerance(mesh, 1e-3);
   } catch (const rt::MeshError&) {
   }
   const std::vector<int> view_rates = stencil_tools::rates_for_view(mesh, stencil_tools::Camera{}, 8);
   Budget budget;
-  auto use = [&](const auto& surface, const std::vector<int>& table_rates) {
-    std::vector<int> rates = rt::prepared_rates(surface, view_rates);
-    stencil_tools::snap_to_tables(rates, table_rates);
-    rt::tessellate(surface, rates, {1});
-    evaluate_some(surface, mesh, triangles ? 3 : 4, table_rates, budget);
-  };
-  if (triangles) use(rt::TriangleSurface(triangle_tables, mesh, "loop"), triangle_tables.rates());
-  else use(rt::LimitSurface(quad_tables, mesh, "nonpoly"), quad_tables.rates());
+  use_surface(triangles ? triangle_tables : quad_tables, mesh, view_rates, budget);
 }
 
 }  // namespace fuzz

@@ -5,9 +5,10 @@
 // loader and is out of range at lookup, a table with no rates). Each function
 // throws what the library throws; work is bounded so that a small input cannot
 // ask for hours of lookups.
+#include <memory>
+
 #include "stencil_runtime/mesh.hpp"
-#include "stencil_runtime/surface_table.hpp"
-#include "stencil_runtime/triangle_table.hpp"
+#include "stencil_runtime/tables.hpp"
 
 namespace fuzz {
 
@@ -16,10 +17,10 @@ namespace fuzz {
 // the bundled cube (valence 3) and icosahedron (polygon rules, valence 5)
 // prepared, tessellated at rate 1 snapped to the tables, and evaluated at a few
 // grid points of every rate.
-void use_quad_tables(const stencil_runtime::SurfaceTables& tables);
-
-// The same for triangle tables, with the bundled icosahedron (valence 5).
-void use_triangle_tables(const stencil_runtime::TriangleTables& tables);
+// Quad tables (Tables::quad()); triangle tables (Tables::triangle()) the same
+// way with the bundled icosahedron (valence 5). The surface is built through
+// the public interface (SurfaceTopology, Surface, TessellationPlan).
+void use_tables(const std::shared_ptr<const stencil_runtime::Tables>& tables);
 
 // A control mesh as stenciltess takes it: curvature and view rates, then the
 // surface with the fixture tables (fuzz/fixtures: nonpoly.sgs for quads and

@@ -1,14 +1,14 @@
 // Fuzz target: exact curve tables as `stencilgen verify` reads them
-// (sg::table_format to dispatch, then sg::curve_table_from_json).
+// (sg::parse_table_document, then sg::curve_table_from_json).
 #include "fuzz_support.hpp"
-#include "surface_table_json.hpp"
-#include "table_json.hpp"
+#include "common/table_document.hpp"
+#include "curve/curve_table_json.hpp"
 
 namespace {
 
 // Adapter: the entry points under test.
 void parse(const std::string& text) {
-  sg::table_format(text);
+  sg::parse_table_document(text, "fuzzed.json");
   sg::curve_table_from_json(text, "fuzzed.json");
 }
 

@@ -2,7 +2,7 @@
 // language (sg::evaluate_expression, exact; sg::evaluate_expression_real, high
 // precision, with FUZZ_REAL_EXPRESSION set in fuzz/CMakeLists.txt), with the
 // bindings a scheme file's formulas see: a valence v and a parameter w.
-#include "expression.hpp"
+#include "algebra/expression.hpp"
 #include "fuzz_support.hpp"
 
 namespace {

@@ -2,7 +2,7 @@
 // the mesh they give through stenciltess's path (runtime_use.hpp).
 #include "fuzz_support.hpp"
 #include "runtime_use.hpp"
-#include "stencil_runtime/mesh.hpp"
+#include "stencil_runtime/mesh_io.hpp"
 
 namespace {
 

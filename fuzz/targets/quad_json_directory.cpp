@@ -1,6 +1,6 @@
 // Fuzz targets quad_json_table and quad_json_regular: one file of an otherwise
 // valid directory of exact quad JSON tables (see json_directory.hpp; the input
-// may name and add other files), loaded by SurfaceTables::load_json_directory
+// may name and add other files), loaded by Tables::load
 // and used as the tools use the tables. The two targets differ in the file an
 // input replaces by default (FUZZ_DEFAULT_FILE, set in fuzz/CMakeLists.txt):
 // the extraordinary patch table read first (v3/n1.json: the scheme hash and
@@ -9,19 +9,19 @@
 #include "fuzz_support.hpp"
 #include "json_directory.hpp"
 #include "runtime_use.hpp"
-#include "stencil_runtime/surface_table.hpp"
+#include "stencil_runtime/tables.hpp"
 
 namespace {
 
 // Adapter: the entry point under test.
-stencil_runtime::SurfaceTables parse(const std::string& dir) {
-  return stencil_runtime::SurfaceTables::load_json_directory(dir);
+std::shared_ptr<const stencil_runtime::Tables> parse(const std::string& dir) {
+  return stencil_runtime::Tables::load(dir);
 }
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string dir = fuzz::json_table_directory(fuzz::as_text(data, size), FUZZ_DEFAULT_FILE);
-  fuzz::run_expecting_errors([&] { fuzz::use_quad_tables(parse(dir)); });
+  fuzz::run_expecting_errors([&] { fuzz::use_tables(parse(dir)); });
   return 0;
 }

@@ -7,9 +7,10 @@
 #include <vector>
 
 #include "fuzz_support.hpp"
-#include "quad_scheme_loader.hpp"
-#include "scheme_loader.hpp"
-#include "triangle_scheme_loader.hpp"
+#include "quad/quad_scheme_loader.hpp"
+#include "common/scheme_registry.hpp"
+#include "curve/curve_scheme_loader.hpp"
+#include "triangle/triangle_scheme_loader.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // Fuzz target: exact quad surface tables as `stencilgen verify` checks them
-// (sg::verify_surface_json against the bundled nonpoly scheme). verify
+// (sg::verify_quad_table against the bundled nonpoly scheme). verify
 // re-solves the patch at the table's own valence and rate, which takes as
 // long as generating it; inputs whose "valence" exceeds 6 or whose "n"
 // exceeds 3 are skipped, so that the fuzzer spends its time on the reader
@@ -7,13 +7,16 @@
 #include <nlohmann/json.hpp>
 
 #include "fuzz_support.hpp"
-#include "quad_scheme_loader.hpp"
-#include "surface_table_json.hpp"
+#include "common/table_document.hpp"
+#include "quad/quad_scheme_loader.hpp"
+#include "quad/quad_table_verify.hpp"
 
 namespace {
 
 // Adapter: the entry point under test.
-void verify(const std::string& text, const sg::QuadScheme& scheme) { sg::verify_surface_json(text, "fuzzed.json", scheme); }
+void verify(const std::string& text, const sg::QuadScheme& scheme) {
+  sg::verify_quad_table(sg::parse_table_document(text, "fuzzed.json"), scheme);
+}
 
 bool cheap_to_verify(const std::string& text) {
   const nlohmann::ordered_json doc = nlohmann::ordered_json::parse(text, nullptr, false);  // as verify parses it
