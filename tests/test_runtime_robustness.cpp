@@ -200,6 +200,14 @@ TEST_CASE("tool options and parameters outside their limits are refused, not wra
   write_file(dir / "q.txt", "0 1/2 1/2\n9 0 0\n");
   expect_error(eval("--batch " + (dir / "q.txt").string()), "q.txt:2: face 9 does not exist");
   expect_error(eval("--batch " + dir.string()), "not a regular file");
+  // A huge argument is quoted by its start and length, not echoed whole.
+  for (const std::string& uv : {std::string(100000, '(') + ",1/2", std::string(5000, '1') + "/3,1/2"}) {
+    const CliResult r = eval("--face 0 --uv '" + uv + "'");
+    INFO(r.output.substr(0, 400));
+    CHECK(r.status == 1);
+    CHECK(r.output.size() < 400);
+    CHECK(r.output.find("characters)") != std::string::npos);
+  }
   expect_error(tess("--rate 2147483647"), "--rate must be 1..4096");
   expect_error(tess("--rate 0"), "--rate must be 1..4096");
   expect_error(tess("--rate 4 --threads 2147483647"), "--threads must be 1..256");

@@ -45,7 +45,7 @@ CurveSolution table_to_solution(const CurveTable& table, const CurveScheme& sche
     tv.values.assign(static_cast<std::size_t>(std::max(0L, tv.range.size())), Rational(0));
     for (const auto& [k, v] : table.functions[h].values) {
       if (!tv.range.contains(k))
-        throw Error("function '" + table.functions[h].name + "' has a nonzero value at x = " +
+        throw Error("function '" + excerpt(table.functions[h].name) + "' has a nonzero value at x = " +
                     to_string(Rational(k, table.n)) + ", outside its support");
       tv.values[k - tv.range.first] = v;
     }

@@ -10,7 +10,7 @@ std::vector<std::string> verify_curve_table(const CurveTable& table, const Curve
   std::vector<std::string> failures;
   if (table.scheme != scheme.name) failures.push_back("table is for scheme '" + table.scheme + "', not '" + scheme.name + "'");
   if (table.scheme_hash != hex64(scheme.hash))
-    failures.push_back("scheme hash " + table.scheme_hash + " differs from " + hex64(scheme.hash) +
+    failures.push_back("scheme hash " + excerpt(table.scheme_hash) + " differs from " + hex64(scheme.hash) +
                        " (the scheme file or its parameters changed)");
   if (table.arity != scheme.arity) failures.push_back("arity " + std::to_string(table.arity) + " differs from the scheme's");
   if (!failures.empty()) return failures;
@@ -25,7 +25,7 @@ std::vector<std::string> verify_curve_table(const CurveTable& table, const Curve
     const ScalingType& t = scheme.types[h];
     const CurveTable::Function& f = table.functions[h];
     if (f.name != t.name || f.support_lo != t.support_lo || f.support_hi != t.support_hi)
-      failures.push_back("function " + std::to_string(h) + " ('" + f.name + "') does not match the scheme's type '" +
+      failures.push_back("function " + std::to_string(h) + " ('" + excerpt(f.name) + "') does not match the scheme's type '" +
                          t.name + "' and its support");
     // Scaling relation phi_h(k/n) = sum c phi_g((a k - n shift)/n), one grid step beyond the support too.
     const GridRange g = sol.types[h].range;
@@ -34,7 +34,7 @@ std::vector<std::string> verify_curve_table(const CurveTable& table, const Curve
       for (const Term& term : t.terms) rhs += term.coeff * sol.types[term.type].at(a * k - n * term.shift);
       if (rhs != sol.types[h].at(k)) {
         failures.push_back("scaling relation of '" + t.name + "' fails at x = " + to_string(Rational(k, n)) +
-                           ": value " + to_string(sol.types[h].at(k)) + ", relation gives " + to_string(rhs));
+                           ": value " + excerpt(to_string(sol.types[h].at(k))) + ", relation gives " + excerpt(to_string(rhs)));
         if (failures.size() > 20) return failures;
       }
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "algebra/integer_division.hpp"
+#include "base/error.hpp"
 
 namespace sg {
 std::vector<std::vector<std::size_t>> pou_groups(const CurveScheme& s, const std::vector<std::size_t>& invariant) {
@@ -46,7 +47,7 @@ std::optional<std::string> check_partition_of_unity(const CurveScheme& s, const 
         std::string names;
         for (std::size_t h : group) names += (names.empty() ? "" : "+") + s.types[h].name;
         return "partition of unity fails at x = " + std::to_string(r) + "/" + std::to_string(n) + " (mod 1) for " +
-               names + ": the sum is " + to_string(sum);
+               names + ": the sum is " + excerpt(to_string(sum));
       }
     }
   if (special.empty()) return std::nullopt;
@@ -59,7 +60,7 @@ std::optional<std::string> check_partition_of_unity(const CurveScheme& s, const 
     Rational sum = invariant_sum_at(s, sol, K);
     for (std::size_t h : special) sum += sol.types[h].at(K - n * s.types[h].position);
     if (sum != 1)
-      return "partition of unity fails at x = " + to_string(Rational(K, n)) + ": the sum is " + to_string(sum);
+      return "partition of unity fails at x = " + to_string(Rational(K, n)) + ": the sum is " + excerpt(to_string(sum));
   }
   return std::nullopt;
 }

@@ -1,3 +1,4 @@
+#include "stencil_runtime/error.hpp"
 #include "rate_choice.hpp"
 
 #include <algorithm>
@@ -26,12 +27,12 @@ std::vector<int> rates_from_file(const std::string& path, std::size_t faces) {
     std::istringstream ls(line);
     std::string word, extra;
     if (!(ls >> word)) continue;
-    if (ls >> extra) throw std::runtime_error(path + ":" + std::to_string(number) + ": one rate per line, got '" + line + "'");
+    if (ls >> extra) throw std::runtime_error(path + ":" + std::to_string(number) + ": one rate per line, got " + stencil_runtime::quoted_excerpt(line));
     std::size_t r = 0;
     try {
       r = parse_index(word, "rate");
     } catch (const std::exception&) {
-      throw std::runtime_error(path + ":" + std::to_string(number) + ": '" + word + "' is not a rate 1.." +
+      throw std::runtime_error(path + ":" + std::to_string(number) + ": " + stencil_runtime::quoted_excerpt(word) + " is not a rate 1.." +
                                std::to_string(limits::kMaxRate));
     }
     if (r < 1 || r > static_cast<std::size_t>(limits::kMaxRate))
@@ -96,9 +97,9 @@ Camera parse_camera(const std::string& text) {
   for (int k = 0; k < 6; ++k) {
     if (!(in >> v[static_cast<std::size_t>(k)]) || !std::isfinite(v[static_cast<std::size_t>(k)]) ||
         (k < 5 && !(in >> comma && comma == ',')))
-      throw std::runtime_error("--camera expects EX,EY,EZ,TX,TY,TZ (eye and target, finite numbers), got '" + text + "'");
+      throw std::runtime_error("--camera expects EX,EY,EZ,TX,TY,TZ (eye and target, finite numbers), got " + stencil_runtime::quoted_excerpt(text));
   }
-  if (in >> comma) throw std::runtime_error("--camera expects six numbers, got '" + text + "'");
+  if (in >> comma) throw std::runtime_error("--camera expects six numbers, got " + stencil_runtime::quoted_excerpt(text));
   Camera c;
   c.eye = {v[0], v[1], v[2]};
   c.target = {v[3], v[4], v[5]};

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "stencil_runtime/error.hpp"
 #include "stencil_runtime/mesh_io.hpp"
 #include "stencil_runtime/surface.hpp"
 #include "tool_support.hpp"
@@ -91,7 +92,7 @@ int main(int argc, char** argv) {
         std::string f, u, v, extra;
         if (!(ls >> f) || f[0] == '#') continue;
         try {
-          if (!(ls >> u >> v) || (ls >> extra)) throw std::runtime_error("expected `F U V`, got '" + line + "'");
+          if (!(ls >> u >> v) || (ls >> extra)) throw std::runtime_error("expected `F U V`, got " + stencil_runtime::quoted_excerpt(line));
           const Point p = evaluate(surface, mesh, stencil_tools::parse_index(f, "face"), stencil_tools::parse_parameter(u),
                                    stencil_tools::parse_parameter(v), tolerance)
                               .point;

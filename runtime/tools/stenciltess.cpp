@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "stencil_runtime/error.hpp"
 #include "rate_choice.hpp"
 #include "stencil_runtime/limits.hpp"
 #include "stencil_runtime/mesh_io.hpp"
@@ -116,7 +117,7 @@ int main(int argc, char** argv) {
     }
     // Animation: check every frame's connectivity before writing anything.
     const std::vector<std::string> files = stencil_tools::expand_pattern(frames);
-    if (files.size() > 1000000) throw std::runtime_error("'" + frames + "' names more than 1000000 frames");
+    if (files.size() > 1000000) throw std::runtime_error(stencil_runtime::quoted_excerpt(frames) + " names more than 1000000 frames");
     for (std::size_t k = 0; k < files.size(); ++k) {
       const Mesh frame = read_obj(files[k]);
       if (!topology->same_connectivity(frame.vertex_count(), frame.face_sizes, frame.face_vertices))

@@ -1,3 +1,4 @@
+#include "stencil_runtime/error.hpp"
 #include "tool_support.hpp"
 
 #include <glob.h>
@@ -64,14 +65,14 @@ ParameterText parse_parameter(const std::string& text) {
   const char* end = text.data() + text.size();
   const auto [stop, err] = std::from_chars(text.data(), end, p.value);
   if (err != std::errc() || stop != end || !std::isfinite(p.value))
-    throw std::runtime_error("parameter '" + text + "' is neither an exact rational such as 1/3 nor a finite decimal such as 0.3");
+    throw std::runtime_error("parameter " + stencil_runtime::quoted_excerpt(text) + " is neither an exact rational such as 1/3 nor a finite decimal such as 0.3");
   return p;
 }
 
 std::pair<std::string, std::string> split_pair(const std::string& text, const std::string& option) {
   const auto comma = text.find(',');
   if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos)
-    throw std::runtime_error(option + " expects U,V such as 1/3,1/2 or 0.3,0.7; got '" + text + "'");
+    throw std::runtime_error(option + " expects U,V such as 1/3,1/2 or 0.3,0.7; got " + stencil_runtime::quoted_excerpt(text));
   return {text.substr(0, comma), text.substr(comma + 1)};
 }
 
@@ -80,7 +81,7 @@ std::size_t parse_index(const std::string& text, const std::string& what) {
   const char* end = text.data() + text.size();
   const auto [stop, err] = std::from_chars(text.data(), end, value);
   if (text.empty() || err != std::errc() || stop != end)
-    throw std::runtime_error(what + " '" + text + "' is not a number 0, 1, 2, ... (numbered from 0)");
+    throw std::runtime_error(what + " " + stencil_runtime::quoted_excerpt(text) + " is not a number 0, 1, 2, ... (numbered from 0)");
   return static_cast<std::size_t>(value);
 }
 
@@ -97,12 +98,12 @@ void check_frame_pattern(const std::string& pattern) {
     std::size_t digits = 0;
     while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j]))) ++j, ++digits;
     if (j >= pattern.size() || pattern[j] != 'd' || digits > 2)
-      throw std::runtime_error("output pattern '" + pattern + "': only %d, %0Nd or %Nd (N < 100) and %% are allowed");
+      throw std::runtime_error("output pattern " + stencil_runtime::quoted_excerpt(pattern) + ": only %d, %0Nd or %Nd (N < 100) and %% are allowed");
     ++conversions;
     i = j;
   }
   if (conversions != 1)
-    throw std::runtime_error("output pattern '" + pattern + "' needs exactly one frame number such as %04d");
+    throw std::runtime_error("output pattern " + stencil_runtime::quoted_excerpt(pattern) + " needs exactly one frame number such as %04d");
 }
 
 std::string frame_name(const std::string& pattern, std::size_t frame) {
@@ -121,8 +122,8 @@ std::vector<std::string> expand_pattern(const std::string& pattern) {
   if (status == 0)
     for (std::size_t k = 0; k < found.gl_pathc; ++k) out.emplace_back(found.gl_pathv[k]);
   ::globfree(&found);
-  if (status == GLOB_NOMATCH || out.empty()) throw std::runtime_error("'" + pattern + "' names no file");
-  if (status != 0) throw std::runtime_error("'" + pattern + "': cannot list the files it names");
+  if (status == GLOB_NOMATCH || out.empty()) throw std::runtime_error(stencil_runtime::quoted_excerpt(pattern) + " names no file");
+  if (status != 0) throw std::runtime_error(stencil_runtime::quoted_excerpt(pattern) + ": cannot list the files it names");
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -3,6 +3,8 @@
 // stencil_runtime::Error (or one of the kinds below), with a complete message
 // that names the file, face, vertex or value at fault.
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 namespace stencil_runtime {
 
@@ -24,5 +26,15 @@ struct MeshError : Error {
 struct EvaluationError : Error {
   using Error::Error;
 };
+
+// User text as a message quotes it: 'text' when short, else its start and its
+// length, so that a 100,000-character argument does not make a message as long.
+inline std::string quoted_excerpt(std::string_view text) {
+  constexpr std::size_t kShown = 60;
+  std::string out(1, '\'');
+  out.append(text.substr(0, kShown));
+  if (text.size() <= kShown) return out.append(1, '\'');
+  return out.append("...' (").append(std::to_string(text.size())).append(" characters)");
+}
 
 }  // namespace stencil_runtime

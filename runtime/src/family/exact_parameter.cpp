@@ -44,8 +44,8 @@ Fraction parse_fraction(std::string_view text) {
   const auto slash = text.find('/');
   std::int64_t num = 0, den = 1;
   if (!whole(text.substr(0, slash), num) || (slash != std::string_view::npos && !whole(text.substr(slash + 1), den)))
-    throw EvaluationError("'" + std::string(text) + "' is not an exact rational p/q with 64-bit integers p and q");
-  if (den == 0) throw EvaluationError("'" + std::string(text) + "' has a zero denominator");
+    throw EvaluationError(quoted_excerpt(text) + " is not an exact rational p/q with 64-bit integers p and q");
+  if (den == 0) throw EvaluationError(quoted_excerpt(text) + " has a zero denominator");
   return Fraction::make(num, den);
 }
 

@@ -70,7 +70,7 @@ Mesh read_obj(const std::string& path) {
         if (err == std::errc::result_out_of_range)
           fail("coordinate " + std::string(t) + " is not a finite number of magnitude at most 1e37");
         if (t.empty() || err != std::errc() || end != t.data() + t.size())
-          fail("a vertex needs three numbers, got '" + std::string(t) + "'");
+          fail("a vertex needs three numbers, got " + quoted_excerpt(t));
         if (!std::isfinite(p[static_cast<std::size_t>(k)]) || std::fabs(p[static_cast<std::size_t>(k)]) > limits::kMaxCoordinate)
           fail("coordinate " + std::string(t) + " is not a finite number of magnitude at most 1e37");
       }
@@ -82,7 +82,7 @@ Mesh read_obj(const std::string& path) {
         long long index = 0;
         const auto [end, err] = std::from_chars(item.data(), item.data() + item.size(), index);
         if (err != std::errc() || end == item.data() || (end != item.data() + item.size() && *end != '/'))
-          fail("bad face index '" + std::string(item) + "'");
+          fail("bad face index " + quoted_excerpt(item));
         const auto n = static_cast<long long>(mesh.positions.size());
         if (index < 0) index += n + 1;
         if (index < 1 || index > n) fail("face index " + std::string(item) + " refers to no vertex defined so far");

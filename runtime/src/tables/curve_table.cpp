@@ -33,7 +33,7 @@ CurveTable load_curve_table(const std::string& path, std::uint64_t expected_hash
     f.position = r.get<std::int64_t>();
     f.first = r.get<std::int64_t>();
     const auto size = r.get<std::uint32_t>();
-    if (size > (bytes.size() - r.position()) / 8) r.fail("truncated value block in function '" + f.name + "'");
+    if (size > (bytes.size() - r.position()) / 8) r.fail("truncated value block in function " + quoted_excerpt(f.name));
     f.values.resize(size);
     for (auto& v : f.values) {
       v = r.get<double>();

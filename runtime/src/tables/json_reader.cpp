@@ -94,7 +94,7 @@ bool parse_integer(std::string_view s, Decimal& d) {
 double parse_ratio(std::string_view numerator, std::string_view denominator, const JsonFile& file, const std::string& field) {
   Decimal n, d;
   if (!parse_integer(numerator, n) || !parse_integer(denominator, d))
-    file.fail(field, "'" + std::string(numerator) + "/" + std::string(denominator) + "' is not an exact rational");
+    file.fail(field, quoted_excerpt(std::string(numerator) + "/" + std::string(denominator)) + " is not an exact rational");
   if (d.mantissa == 0) file.fail(field, "zero denominator");
   const double x = static_cast<double>(n.mantissa / d.mantissa * std::pow(10.0L, static_cast<long double>(n.exponent - d.exponent)));
   if (!std::isfinite(x)) file.fail(field, "value out of range");

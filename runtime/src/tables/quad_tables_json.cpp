@@ -36,7 +36,7 @@ long numbered_name(const std::string& name, char prefix, const std::string& suff
 QuadTables::VertexRule read_rule(const JsonFile& f, const std::string& key, const json& r, const std::string& field) {
   std::int64_t valence = 0;
   if (!detail::parse_int64(key, valence) || valence < 3 || valence > limits::kMaxValence)
-    f.fail(field, "valence '" + key + "' is not an integer in 3.." + std::to_string(limits::kMaxValence));
+    f.fail(field, "valence " + quoted_excerpt(key) + " is not an integer in 3.." + std::to_string(limits::kMaxValence));
   const json& a = f.array(r, field + "." + key);
   if (a.size() != 3) f.fail(field + "." + key, "expected three weights");
   double w[3];

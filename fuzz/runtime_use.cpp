@@ -1,0 +1,177 @@
+#include "runtime_use.hpp"
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "fuzz_support.hpp"
+#include "rate_choice.hpp"
+#include "stencil_runtime/mesh_io.hpp"
+#include "stencil_runtime/surface.hpp"
+#include "stencil_runtime/surface_topology.hpp"
+#include "stencil_runtime/tessellation.hpp"
+#include "tables/quad_tables.hpp"
+#include "tables/triangle_tables.hpp"
+
+namespace fuzz {
+
+namespace rt = stencil_runtime;
+
+namespace {
+
+// Weights looked up per input at most: keeps one input to milliseconds.
+constexpr long kWeightBudget = 4'000'000;
+
+// Counts the weights a lookup sweep will read; false once the budget is spent.
+class Budget {
+ public:
+  bool take(long weights) {
+    if (weights > left_) return false;
+    left_ -= weights;
+    return true;
+  }
+
+ private:
+  long left_ = kWeightBudget;
+};
+
+const rt::Mesh& bundled_mesh(const char* name) {
+  static std::map<std::string, rt::Mesh> meshes;
+  auto it = meshes.find(name);
+  if (it == meshes.end()) {
+    try {
+      it = meshes.emplace(name, rt::read_obj((source_dir() / "meshes" / name).string())).first;
+    } catch (const std::exception& e) {
+      harness_failure(e.what());
+    }
+  }
+  return it->second;
+}
+
+// As stenciltess does: topology from the connectivity, a plan at `rates`
+// (clamped to the tables by the plan), positions, then a few exact grid
+// parameters of the first faces evaluated (corners and an inner point at every
+// stored rate, within the budget). A valence or rule the tables lack is a
+// MeshError, reported by the tools the same way.
+void use_surface(const std::shared_ptr<const rt::Tables>& tables, const rt::Mesh& mesh, const std::vector<int>& rates,
+                 Budget& budget) {
+  try {
+    const auto topology = rt::SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
+    const rt::Surface surface(topology, mesh.positions);
+    rt::tessellate(surface, rates, {1});
+    const std::size_t faces = std::min<std::size_t>(topology->face_count(), 8);
+    for (int n : tables->rates()) {
+      const std::int64_t points[][2] = {{0, 0}, {n, 0}, {0, n}, {n / 3, n / 3}};
+      for (std::size_t f = 0; f < faces; ++f)
+        for (const auto& p : points) {
+          if (!budget.take(200)) return;
+          surface.evaluate(f, rt::ExactParameter{{p[0], n}, {p[1], n}});
+        }
+    }
+  } catch (const rt::MeshError&) {
+  }
+}
+
+// reflection(v) is documented as a permutation of the patch's points; the
+// runtime indexes control points with it unchecked.
+void check_permutation(const std::uint32_t* reflection, std::size_t points, int valence) {
+  std::vector<bool> seen(points, false);
+  for (std::size_t h = 0; h < points; ++h) {
+    if (reflection[h] >= points || seen[reflection[h]])
+      finding("valence " + std::to_string(valence) + ": the loader accepted a reflection that is not a permutation of 0.." +
+              std::to_string(points - 1) + " (entry " + std::to_string(h) + " is " + std::to_string(reflection[h]) + ")");
+    seen[reflection[h]] = true;
+  }
+}
+
+void sweep_quad(const rt::QuadTables& tables, Budget& budget) {
+  std::vector<int> valences = tables.valences();
+  valences.push_back(4);
+  for (int v : valences) {
+    std::vector<double> weights(static_cast<std::size_t>(rt::QuadTables::points(v)));
+    for (int n : tables.rates()) {
+      if (!budget.take(2L * (n + 1) * (n + 1) * static_cast<long>(weights.size()))) break;
+      for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+          tables.node_stencil(v, n, i, j, weights.data());
+          if (i < n && j < n) tables.centre_stencil(v, n, i, j, weights.data());
+        }
+      if (v == 4) continue;
+      // As the tessellation reads them: whole stored stencils, applied to the
+      // control points permuted by the reflection where mirrored.
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          bool mirrored = false;
+          const double* w = tables.centre_weights(v, n, i, j, mirrored);
+          std::copy(w, w + weights.size(), weights.begin());
+        }
+    }
+    if (v != 4) check_permutation(tables.reflection(v), weights.size(), v);
+  }
+}
+
+void sweep_triangle(const rt::TriangleTables& tables, Budget& budget) {
+  for (int v : tables.valences())
+    for (int region = 0; region < tables.regions(v); ++region) {
+      const long points = static_cast<long>(tables.layout(v, region).size());
+      for (int n : tables.rates()) {
+        if (!budget.take(2L * (n + 1) * (n + 2) * points)) break;
+        const rt::TriangleTables::Grid grid = tables.grid(v, n, region);
+        double sum = 0;
+        auto read = [&](const double* w) {
+          for (long h = 0; h < points; ++h) sum += w[h];
+        };
+        for (int j = 0; j <= n; ++j)
+          for (int i = 0; i + j <= n; ++i) {
+            read(grid.weights(rt::TriangleTables::GridPoint::Node, i, j));
+            if (region == 0) read(tables.node_weights(v, n, i, j));
+            if (i + j <= n - 1) read(grid.weights(rt::TriangleTables::GridPoint::Up, i, j));
+            if (i + j <= n - 2) read(grid.weights(rt::TriangleTables::GridPoint::Down, i, j));
+          }
+        if (!(sum == sum)) sum = 0;  // the sum is only read to keep the loads alive
+      }
+    }
+}
+
+}  // namespace
+
+void use_tables(const std::shared_ptr<const rt::Tables>& shared) {
+  Budget budget;
+  const rt::Tables& tables = *shared;
+  if (tables.family() == rt::SchemeFamily::Quad) {
+    sweep_quad(tables.quad(), budget);
+    for (const char* name : {"cube.obj", "icosahedron.obj"}) {
+      const rt::Mesh& mesh = bundled_mesh(name);
+      use_surface(shared, mesh, std::vector<int>(mesh.face_count(), 1), budget);
+    }
+  } else {
+    sweep_triangle(tables.triangle(), budget);
+    const rt::Mesh& mesh = bundled_mesh("icosahedron.obj");
+    use_surface(shared, mesh, std::vector<int>(mesh.face_count(), 1), budget);
+  }
+}
+
+void use_mesh(const rt::Mesh& mesh) {
+  auto fixture = [](const char* name) {
+    try {
+      return rt::Tables::load((fixtures_dir() / name).string());
+    } catch (const std::exception& e) {
+      harness_failure(e.what());
+    }
+  };
+  static const std::shared_ptr<const rt::Tables> quad_tables = fixture("nonpoly.sgs");
+  static const std::shared_ptr<const rt::Tables> triangle_tables = fixture("loop.sgt");
+  const bool triangles = std::all_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k == 3; });
+  // stenciltess --tolerance / --camera take the rates from the mesh before the
+  // surface checks it.
+  try {
+    stencil_tools::rates_for_tolerance(mesh, 1e-3);
+  } catch (const rt::MeshError&) {
+  }
+  const std::vector<int> view_rates = stencil_tools::rates_for_view(mesh, stencil_tools::Camera{}, 8);
+  Budget budget;
+  use_surface(triangles ? triangle_tables : quad_tables, mesh, view_rates, budget);
+}
+
+}  // namespace fuzz
