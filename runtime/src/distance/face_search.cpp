@@ -10,6 +10,10 @@ namespace {
 
 // Deep enough that a sub-patch is far below any tolerance a double can express.
 constexpr int kMaxDepth = 48;
+// Sub-patches examined per face and query at most: a guard against runaway
+// work (it has not been reached on the bundled meshes); what is left open then
+// is reported in the gap.
+constexpr std::size_t kMaxNodes = 200000;
 
 Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -25,15 +29,28 @@ struct Node {
 }  // namespace
 
 double FaceSearch::box_distance(const SubPatch& s, const Point& q) {
-  Point lo = s.points[0], hi = s.points[0];
+  // Two lower bounds on the distance from q to the convex hull of the control
+  // points: to their axis-aligned box, and the hull's extent towards q along
+  // the direction u from q to the points' centroid (every hull point x has
+  // |x - q| >= u.(x - q) >= min_i u.(p_i - q)). The second is what makes the
+  // bound converge as the square of the sub-patch size on a smooth surface, so
+  // that the search near a minimum stays small.
+  Point lo = s.points[0], hi = s.points[0], c{0, 0, 0};
   for (const Point& p : s.points)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]), c[k] += p[k];
   double d2 = 0;
   for (int k = 0; k < 3; ++k) {
     const double e = std::max({lo[k] - q[k], 0.0, q[k] - hi[k]});
     d2 += e * e;
   }
-  return std::sqrt(d2);
+  const double box = std::sqrt(d2);
+  Point u = minus(c, Point{q[0] * s.points.size(), q[1] * s.points.size(), q[2] * s.points.size()});
+  const double len = length(u);
+  if (!(len > 0)) return box;
+  for (double& x : u) x /= len;
+  double support = INFINITY;
+  for (const Point& p : s.points) support = std::min(support, dot(u, minus(p, q)));
+  return std::max(box, support);
 }
 
 bool FaceSearch::consider(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const {
@@ -86,8 +103,12 @@ bool FaceSearch::search(std::size_t face, const Point& q, FaceHit& best) const {
   open.push(std::move(root));
   SubPatch children[4];
   double unresolved = 0;  // the largest gap left by sub-patches too deep to split
-  while (!open.empty()) {
-    if (open.top().bound >= best.distance - tolerance_) break;
+  std::size_t examined = 0;
+  while (!open.empty() && open.top().bound < best.distance - tolerance_) {
+    if (++examined > kMaxNodes) {
+      unresolved = std::max(unresolved, best.distance - open.top().bound);
+      break;
+    }
     Node node = open.top();
     open.pop();
     const SubPatch& s = node.patch;
@@ -104,7 +125,8 @@ bool FaceSearch::search(std::size_t face, const Point& q, FaceHit& best) const {
       if (bound < best.distance - tolerance_) open.push({bound, node.depth + 1, std::move(children[c])});
     }
   }
-  if (best.distance < before) best.gap = std::min(tolerance_, std::max(unresolved, 0.0));
+  // What this face might still hide beyond the tolerance (0 when the search ran to its end).
+  best.gap = std::max(best.gap, unresolved - tolerance_);
   return best.distance < before;
 }
 

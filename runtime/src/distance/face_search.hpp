@@ -20,7 +20,7 @@ struct FaceHit {
   std::size_t face = 0;  // prepared face
   double x = 0, y = 0;   // patch parameter
   Point point{0, 0, 0};
-  double gap = 0;        // how much closer the surface might still be (below the tolerance)
+  double gap = 0;        // how much closer than distance - tolerance the surface might still be (0 normally)
   double evaluation = 0; // the evaluation bound of `point`
 };
 

@@ -1,0 +1,285 @@
+#include "stencil_runtime/closest_point.hpp"
+
+#include <embree3/rtcore.h>
+#include <nanoflann.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "distance/face_search.hpp"
+#include "stencil_runtime/error.hpp"
+
+namespace stencil_runtime {
+
+namespace {
+
+Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Point cross(const Point& a, const Point& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// A float no smaller (or no larger) than the double: Embree's boxes and radii
+// are floats, and must not shrink what they bound.
+float float_up(double x) {
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) >= x ? f : std::nextafter(f, INFINITY);
+}
+float float_down(double x) {
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) <= x ? f : std::nextafter(f, -INFINITY);
+}
+
+// Exact limit points with the prepared face and patch parameter they are at:
+// the seeds that give each query a first upper bound on its distance.
+struct Seeds {
+  std::vector<Point> points;
+  std::vector<std::size_t> faces;
+  std::vector<std::array<double, 2>> at;
+
+  std::size_t kdtree_get_point_count() const { return points.size(); }
+  double kdtree_get_pt(std::size_t i, std::size_t k) const { return points[i][k]; }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
+};
+using SeedTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Seeds>, Seeds, 3, std::size_t>;
+
+// Patch parameters of the seeds: the centre and the centres of the quarters.
+constexpr double kSeedAt[5][2] = {{0.5, 0.5}, {0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}};
+
+struct EmbreeDevice {
+  RTCDevice device = rtcNewDevice(nullptr);
+  ~EmbreeDevice() {
+    if (device) rtcReleaseDevice(device);
+  }
+};
+
+}  // namespace
+
+struct ClosestPointQuery::Impl {
+  std::shared_ptr<const SurfaceTopology> topology;
+  const Family* family = nullptr;
+  ClosestPointOptions options;
+  double tolerance = 0;
+  std::vector<Point> prepared;
+  std::vector<std::array<float, 6>> boxes;  // per prepared face: its control points' box
+  std::vector<signed char> orientation;      // +1 where patch (x, y) keeps the original face's orientation
+  Seeds seeds;
+  std::unique_ptr<SeedTree> seed_tree;
+  EmbreeDevice device;
+  RTCScene scene = nullptr;
+  double build_seconds = 0;
+
+  ~Impl() {
+    if (scene) rtcReleaseScene(scene);
+  }
+
+  void build(const Surface& surface);
+  ClosestPoint find(const Point& q) const;
+};
+
+namespace {
+
+struct QueryState {
+  const FaceSearch* search;
+  Point q;
+  FaceHit best;
+};
+
+void face_bounds(const RTCBoundsFunctionArguments* args) {
+  const auto& boxes = *static_cast<const std::vector<std::array<float, 6>>*>(args->geometryUserPtr);
+  const auto& b = boxes[args->primID];
+  args->bounds_o->lower_x = b[0], args->bounds_o->lower_y = b[1], args->bounds_o->lower_z = b[2];
+  args->bounds_o->upper_x = b[3], args->bounds_o->upper_y = b[4], args->bounds_o->upper_z = b[5];
+}
+
+bool visit_face(RTCPointQueryFunctionArguments* args) {
+  auto* state = static_cast<QueryState*>(args->userPtr);
+  if (!state->search->search(args->primID, state->q, state->best)) return false;
+  const float r = float_up(state->best.distance);
+  if (r >= args->query->radius) return false;
+  args->query->radius = r;
+  return true;
+}
+
+}  // namespace
+
+void ClosestPointQuery::Impl::build(const Surface& surface) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!surface.has_positions()) throw EvaluationError("closest points: the surface has no control positions yet");
+  if (!family->hull_bounds())
+    throw EvaluationError("closest points: the tables of '" + topology->tables().scheme() +
+                          "' have negative subdivision weights, so control points do not bound the surface");
+  prepared = surface.prepared_positions();
+  const std::size_t faces = topology->prepared_face_count();
+  if (faces > 0xffffffffu) throw EvaluationError("closest points: more than 2^32 prepared faces");
+
+  // Control boxes (Embree's primitives) and the extent that fixes the default tolerance.
+  boxes.assign(faces, {});
+  Point lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  for (const Point& p : prepared)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const double diagonal = std::sqrt(dot(minus(hi, lo), minus(hi, lo)));
+  tolerance = options.tolerance > 0 ? options.tolerance : 1e-9 * std::max(diagonal, 1e-300);
+  std::vector<SubPatch> roots(faces);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t f = r.begin(); f < r.end(); ++f) {
+      family->root(f, prepared.data(), roots[f]);
+      Point a = roots[f].points[0], b = a;
+      for (const Point& p : roots[f].points)
+        for (int k = 0; k < 3; ++k) a[k] = std::min(a[k], p[k]), b[k] = std::max(b[k], p[k]);
+      boxes[f] = {float_down(a[0]), float_down(a[1]), float_down(a[2]), float_up(b[0]), float_up(b[1]), float_up(b[2])};
+    }
+  });
+
+  // Seeds, and each prepared face's orientation against its original face.
+  seeds.points.assign(faces * 5, {});
+  seeds.faces.assign(faces * 5, 0);
+  seeds.at.assign(faces * 5, {});
+  orientation.assign(faces, 1);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces, 64), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t f = r.begin(); f < r.end(); ++f) {
+      for (int s = 0; s < 5; ++s) {
+        const std::size_t i = 5 * f + s;
+        seeds.points[i] = family->evaluate(roots[f], kSeedAt[s][0], kSeedAt[s][1], tolerance).point;
+        seeds.faces[i] = f;
+        seeds.at[i] = {kSeedAt[s][0], kSeedAt[s][1]};
+      }
+      const FaceParameterReal a = family->original(f, 0.25, 0.25), b = family->original(f, 0.75, 0.25),
+                              c = family->original(f, 0.25, 0.75);
+      const double det = (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u);
+      orientation[f] = det < 0 ? -1 : 1;
+    }
+  });
+  seed_tree = std::make_unique<SeedTree>(3, seeds, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  seed_tree->buildIndex();
+
+  if (!device.device) throw EvaluationError("closest points: Embree could not create a device");
+  if (scene) rtcReleaseScene(scene);
+  scene = rtcNewScene(device.device);
+  RTCGeometry geometry = rtcNewGeometry(device.device, RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(faces));
+  rtcSetGeometryUserData(geometry, &boxes);
+  rtcSetGeometryBoundsFunction(geometry, face_bounds, &boxes);
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(scene, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(scene);
+  if (rtcGetDeviceError(device.device) != RTC_ERROR_NONE) throw EvaluationError("closest points: Embree failed to build its BVH");
+  build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+ClosestPoint ClosestPointQuery::Impl::find(const Point& q) const {
+  for (double c : q)
+    if (!std::isfinite(c)) throw EvaluationError("closest points: a query point has a coordinate that is not finite");
+  const FaceSearch search(*family, prepared, tolerance);
+  QueryState state{&search, q, {}};
+  state.best.distance = options.max_distance;
+
+  // A first upper bound: the nearest seed, an exact limit point.
+  std::size_t nearest = 0;
+  double nearest_d2 = 0;
+  seed_tree->knnSearch(q.data(), 1, &nearest, &nearest_d2);
+  const double seed_distance = std::sqrt(nearest_d2);
+  if (seed_distance < state.best.distance) {
+    const auto& at = seeds.at[nearest];
+    state.best = {seed_distance, seeds.faces[nearest], at[0], at[1], seeds.points[nearest], 0, 0};
+  }
+
+  // Every face whose control box lies within the best distance is searched
+  // (Embree visits the boxes the shrinking sphere still touches).
+  RTCPointQuery query;
+  query.x = static_cast<float>(q[0]), query.y = static_cast<float>(q[1]), query.z = static_cast<float>(q[2]);
+  query.time = 0;
+  // The float query centre may sit up to half an ulp away from q: widen the radius by that much.
+  const double centre_slack = 1e-7 * (std::fabs(q[0]) + std::fabs(q[1]) + std::fabs(q[2]));
+  query.radius = std::isfinite(state.best.distance) ? float_up(state.best.distance + centre_slack) : INFINITY;
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  rtcPointQuery(scene, &query, &context, visit_face, &state);
+
+  ClosestPoint out;
+  if (!(state.best.distance < options.max_distance)) return out;  // nothing nearer than max_distance
+  out.found = true;
+  const FaceHit& h = state.best;
+  const FaceParameterReal original = family->original(h.face, h.x, h.y);
+  out.face = original.face, out.u = original.u, out.v = original.v;
+  out.point = h.point;
+  out.distance = h.distance;
+  out.accuracy = tolerance + h.gap + h.evaluation;
+  // The normal: du x dv of the patch (differences of exact evaluations), in
+  // the original face's orientation.
+  SubPatch root;
+  family->root(h.face, prepared.data(), root);
+  Point f{}, du{}, dv{};
+  search.derivatives(root, h.x, h.y, f, du, dv);
+  Point n = cross(du, dv);
+  double len = std::sqrt(dot(n, n));
+  if (!(len > 0)) {  // a degenerate parametrisation at this point: the normal a little inside the patch
+    const double x = std::clamp(h.x, 1e-6, 1 - 1e-6), y = std::clamp(h.y, 1e-6, 1 - 1e-6);
+    search.derivatives(root, 0.999 * x + 0.0005, 0.999 * y + 0.0005, f, du, dv);
+    n = cross(du, dv);
+    len = std::sqrt(dot(n, n));
+  }
+  if (len > 0)
+    for (int k = 0; k < 3; ++k) out.normal[k] = orientation[h.face] * n[k] / len;
+  const double side = dot(minus(q, out.point), out.normal);
+  out.signed_distance = side < 0 ? -out.distance : out.distance;
+  return out;
+}
+
+ClosestPointQuery::ClosestPointQuery(const Surface& surface, const ClosestPointOptions& options) : impl_(new Impl) {
+  if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
+    throw EvaluationError("closest points: the tolerance must be a finite number >= 0");
+  if (!(options.max_distance >= 0)) throw EvaluationError("closest points: the maximum distance must be >= 0");
+  if (options.threads < 0 || options.threads > 256) throw EvaluationError("closest points: threads must be 0..256");
+  impl_->topology = surface.shared_topology();
+  impl_->family = &impl_->topology->family();
+  impl_->options = options;
+  impl_->build(surface);
+}
+
+ClosestPointQuery::~ClosestPointQuery() = default;
+
+void ClosestPointQuery::update(const Surface& surface) {
+  if (surface.shared_topology() != impl_->topology)
+    throw EvaluationError("closest points: update() needs a surface of the topology the query was built for");
+  impl_->build(surface);
+}
+
+ClosestPoint ClosestPointQuery::find(const Point& q) const { return impl_->find(q); }
+
+std::vector<ClosestPoint> ClosestPointQuery::find(const std::vector<Point>& queries) const {
+  std::vector<ClosestPoint> out(queries.size());
+  tbb::task_arena arena(impl_->options.threads > 0 ? impl_->options.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, queries.size(), 16), [&](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t i = r.begin(); i < r.end(); ++i) out[i] = impl_->find(queries[i]);
+    });
+  });
+  return out;
+}
+
+double ClosestPointQuery::tolerance() const { return impl_->tolerance; }
+
+std::size_t ClosestPointQuery::memory_bytes() const {
+  const Impl& i = *impl_;
+  std::size_t bytes = i.prepared.capacity() * sizeof(Point) + i.boxes.capacity() * sizeof(i.boxes[0]) +
+                      i.orientation.capacity() + i.seeds.points.capacity() * sizeof(Point) +
+                      i.seeds.faces.capacity() * sizeof(std::size_t) + i.seeds.at.capacity() * sizeof(i.seeds.at[0]);
+  if (i.seed_tree) bytes += i.seed_tree->usedMemory(*i.seed_tree);
+  // Embree's BVH over the boxes: about two nodes of 64 bytes per primitive (no API to ask).
+  bytes += i.boxes.size() * 128;
+  return bytes;
+}
+
+double ClosestPointQuery::build_seconds() const { return impl_->build_seconds; }
+
+}  // namespace stencil_runtime

@@ -1,0 +1,190 @@
+#include "points_file.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+#include "stencil_runtime/error.hpp"
+#include "stencil_runtime/limits.hpp"
+#include "tool_support.hpp"
+
+namespace stencil_tools {
+
+namespace {
+
+using stencil_runtime::Point;
+namespace limits = stencil_runtime::limits;
+
+// Points files are limited like meshes (limits.hpp).
+constexpr std::size_t kMaxPointsFileBytes = std::size_t{4} << 30;
+
+double checked_coordinate(double x, const std::string& where) {
+  if (!std::isfinite(x) || std::fabs(x) > limits::kMaxCoordinate)
+    throw std::runtime_error(where + ": coordinate " + std::to_string(x) + " is not a finite number of magnitude at most 1e37");
+  return x;
+}
+
+std::vector<Point> read_xyz(const std::string& path, const std::string& text) {
+  std::vector<Point> points;
+  std::size_t line_number = 0, start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string_view line(text.data() + start, end - start);
+    start = end + 1;
+    ++line_number;
+    const std::string where = path + ":" + std::to_string(line_number);
+    if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    std::vector<std::string_view> words;
+    std::size_t i = 0;
+    while (i < line.size()) {
+      while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+      std::size_t j = i;
+      while (j < line.size() && !std::isspace(static_cast<unsigned char>(line[j]))) ++j;
+      if (j > i) words.push_back(line.substr(i, j - i));
+      i = j;
+    }
+    if (words.empty()) continue;
+    if (words.size() != 3)
+      throw std::runtime_error(where + ": expected three numbers `x y z`, got " + std::to_string(words.size()) + " columns");
+    Point p{};
+    for (int k = 0; k < 3; ++k) {
+      const auto w = words[static_cast<std::size_t>(k)];
+      const auto [stop, err] = std::from_chars(w.data(), w.data() + w.size(), p[static_cast<std::size_t>(k)]);
+      if (err != std::errc() || stop != w.data() + w.size())
+        throw std::runtime_error(where + ": " + stencil_runtime::quoted_excerpt(w) + " is not a number");
+      checked_coordinate(p[static_cast<std::size_t>(k)], where);
+    }
+    points.push_back(p);
+  }
+  if (points.empty()) throw std::runtime_error(path + ": no points (expected lines `x y z`)");
+  return points;
+}
+
+std::vector<Point> read_ply(const std::string& path, const std::string& data) {
+  const std::size_t header_end = data.find("end_header\n");
+  if (data.compare(0, 4, "ply\n") != 0 || header_end == std::string::npos)
+    throw std::runtime_error(path + ": not a PLY file (no 'ply' line or no 'end_header')");
+  std::istringstream header(data.substr(0, header_end));
+  std::string line, format;
+  std::size_t line_number = 0, count = 0;
+  bool in_vertex = false, seen_vertex = false;
+  struct Property {
+    std::string name;
+    int bytes = 0;  // 4 float, 8 double
+  };
+  std::vector<Property> properties;
+  while (std::getline(header, line)) {
+    ++line_number;
+    const std::string where = path + ":" + std::to_string(line_number);
+    std::istringstream words(line);
+    std::string key;
+    words >> key;
+    if (key == "format") {
+      std::string version;
+      words >> format >> version;
+      if (format != "ascii" && format != "binary_little_endian")
+        throw std::runtime_error(where + ": PLY format " + stencil_runtime::quoted_excerpt(format) +
+                                 " is not supported (ascii or binary_little_endian)");
+    } else if (key == "element") {
+      std::string name, n;
+      words >> name >> n;
+      if (seen_vertex) {
+        in_vertex = false;
+        continue;  // later elements (faces) are not read
+      }
+      if (name != "vertex") throw std::runtime_error(where + ": the first element must be 'vertex', got " + stencil_runtime::quoted_excerpt(name));
+      count = parse_index(n, where + ": vertex count");
+      if (count > limits::kMaxMeshElements) throw std::runtime_error(where + ": more than 2^30 points");
+      in_vertex = seen_vertex = true;
+    } else if (key == "property" && in_vertex) {
+      std::string type, name;
+      words >> type >> name;
+      int bytes = 0;
+      if (type == "float" || type == "float32") bytes = 4;
+      else if (type == "double" || type == "float64") bytes = 8;
+      else if (type == "list") throw std::runtime_error(where + ": list properties of vertices are not supported");
+      else if (type == "uchar" || type == "char" || type == "uint8" || type == "int8") bytes = 1;
+      else if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") bytes = 2;
+      else if (type == "int" || type == "uint" || type == "int32" || type == "uint32") bytes = -4;  // integer, skipped
+      else throw std::runtime_error(where + ": unknown property type " + stencil_runtime::quoted_excerpt(type));
+      properties.push_back({name, bytes});
+    }
+  }
+  if (format.empty()) throw std::runtime_error(path + ": no 'format' line in the PLY header");
+  if (!seen_vertex || count == 0) throw std::runtime_error(path + ": no points (the PLY file has no vertex element or 0 vertices)");
+  int slot[3] = {-1, -1, -1};
+  for (std::size_t i = 0; i < properties.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (properties[i].name == std::string(1, "xyz"[k])) {
+        if (properties[i].bytes != 4 && properties[i].bytes != 8)
+          throw std::runtime_error(path + ": vertex property " + properties[i].name + " must be float or double");
+        slot[k] = static_cast<int>(i);
+      }
+  if (slot[0] < 0 || slot[1] < 0 || slot[2] < 0) throw std::runtime_error(path + ": the vertices have no x, y and z properties");
+
+  std::vector<Point> points(count);
+  const std::size_t body = header_end + std::strlen("end_header\n");
+  if (format == "ascii") {
+    std::size_t start = body;
+    for (std::size_t p = 0; p < count; ++p) {
+      ++line_number;
+      const std::string where = path + ":" + std::to_string(line_number + 1);
+      if (start >= data.size()) throw std::runtime_error(where + ": the file ends after " + std::to_string(p) + " of " + std::to_string(count) + " points");
+      std::size_t end = data.find('\n', start);
+      if (end == std::string::npos) end = data.size();
+      std::istringstream values(data.substr(start, end - start));
+      start = end + 1;
+      for (std::size_t i = 0; i < properties.size(); ++i) {
+        std::string word;
+        if (!(values >> word)) throw std::runtime_error(where + ": expected " + std::to_string(properties.size()) + " values");
+        double x = 0;
+        const auto [stop, err] = std::from_chars(word.data(), word.data() + word.size(), x);
+        if (err != std::errc() || stop != word.data() + word.size())
+          throw std::runtime_error(where + ": " + stencil_runtime::quoted_excerpt(word) + " is not a number");
+        for (int k = 0; k < 3; ++k)
+          if (slot[k] == static_cast<int>(i)) points[p][static_cast<std::size_t>(k)] = checked_coordinate(x, where);
+      }
+    }
+    return points;
+  }
+  std::size_t stride = 0;
+  for (const Property& q : properties) stride += static_cast<std::size_t>(std::abs(q.bytes));
+  if ((data.size() - body) / stride < count)
+    throw std::runtime_error(path + ": truncated: " + std::to_string(count) + " points of " + std::to_string(stride) +
+                             " bytes need more than the file holds");
+  for (std::size_t p = 0; p < count; ++p) {
+    std::size_t offset = body + p * stride;
+    for (std::size_t i = 0; i < properties.size(); ++i) {
+      const int bytes = std::abs(properties[i].bytes);
+      for (int k = 0; k < 3; ++k)
+        if (slot[k] == static_cast<int>(i)) {
+          double x = 0;
+          if (bytes == 4) {
+            float f = 0;
+            std::memcpy(&f, data.data() + offset, 4);
+            x = f;
+          } else {
+            std::memcpy(&x, data.data() + offset, 8);
+          }
+          points[p][static_cast<std::size_t>(k)] = checked_coordinate(x, path + ": point " + std::to_string(p));
+        }
+      offset += static_cast<std::size_t>(bytes);
+    }
+  }
+  return points;
+}
+
+}  // namespace
+
+std::vector<Point> read_points(const std::string& path) {
+  const std::string text = read_text_file(path, kMaxPointsFileBytes);
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".ply") return read_ply(path, text);
+  return read_xyz(path, text);
+}
+
+}  // namespace stencil_tools

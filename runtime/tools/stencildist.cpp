@@ -1,0 +1,115 @@
+// stencildist: closest points on, and distances to, the exact limit surface of
+// a control mesh, for a file of query points.
+#include <chrono>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "points_file.hpp"
+#include "stencil_runtime/closest_point.hpp"
+#include "stencil_runtime/error.hpp"
+#include "stencil_runtime/mesh_io.hpp"
+#include "stencil_runtime/surface.hpp"
+#include "tool_support.hpp"
+
+namespace {
+
+using namespace stencil_runtime;
+
+// The result lines, written to `path.partial` and moved into place when whole.
+void write_results(const std::vector<ClosestPoint>& results, bool normals, bool signed_distance, FILE* out) {
+  for (const ClosestPoint& r : results) {
+    if (!r.found) {
+      std::fprintf(out, "none\n");
+      continue;
+    }
+    std::fprintf(out, "%zu %.17g %.17g %.17g %.17g %.17g %.17g", r.face, r.u, r.v, r.point[0], r.point[1], r.point[2],
+                 signed_distance ? r.signed_distance : r.distance);
+    if (normals) std::fprintf(out, " %.17g %.17g %.17g", r.normal[0], r.normal[1], r.normal[2]);
+    std::fputc('\n', out);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "stencildist: closest points on the exact limit surface of a closed control mesh, and the distances to it,\n"
+      "from stencilgen's tables (a quad scheme's .sgs with a polygon mesh, a triangle scheme's .sgt with a triangle\n"
+      "mesh). One line per query point, in input order: `face u v x y z distance` (face numbered from 0 in file\n"
+      "order, (u, v) in that face's domain as stencileval --help describes), plus `nx ny nz` (the unit normal) with\n"
+      "--normals; `none` for a point farther than --max-distance. A summary goes to stderr. Each distance is at\n"
+      "most --tolerance above the true distance to the limit surface (docs/runtime.md, \"Closest points\").\n\n"
+      "  stencildist --tables tables/catmull-clark --mesh meshes/chess-piece.obj --points queries.xyz --out d.txt\n"
+      "  stencildist --tables tables/nonpoly --mesh meshes/cube.obj --points scan.ply --signed --normals",
+      "stencildist"};
+  std::string tables_spec, mesh_path, points_path, out_path;
+  bool signed_distance = false, normals = false;
+  double tolerance = 1e-9, max_distance = INFINITY;
+  int threads = 0;
+  app.add_option("--tables", tables_spec, "a .sgs or .sgt table file, or the directory stencilgen wrote it to")->required();
+  app.add_option("--mesh", mesh_path, "closed control mesh (.obj)")->required();
+  app.add_option("--points", points_path, "query points: .xyz/.txt (`x y z` lines) or .ply (vertices)")->required();
+  app.add_option("--out", out_path, "result file (default: standard output)");
+  app.add_flag("--signed", signed_distance, "signed distances: negative inside the surface (outward-oriented faces)");
+  app.add_flag("--normals", normals, "append the unit normal at the closest point");
+  app.add_option("--tolerance", tolerance,
+                 "largest amount a distance may exceed the true one, as a fraction of the control mesh's bounding-box "
+                 "diagonal (default 1e-9)");
+  app.add_option("--max-distance", max_distance, "points farther than this (absolute) give `none` (default: no limit)");
+  app.add_option("--threads", threads, "threads for the queries (default 0: all cores)");
+  return stencil_tools::run_tool(app, argc, argv, [&] {
+    if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive number");
+    if (!(max_distance > 0)) throw std::runtime_error("--max-distance must be a positive number");
+    if (threads < 0 || threads > 256) throw std::runtime_error("--threads must be 1..256 (or 0 for all cores)");
+    const auto tables = Tables::load(tables_spec);
+    const Mesh mesh = read_obj(mesh_path);
+    const std::vector<Point> queries = stencil_tools::read_points(points_path);
+    Point lo = mesh.positions.at(0), hi = lo;
+    for (const Point& p : mesh.positions)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+
+    const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
+    const Surface surface(topology, mesh.positions);
+    ClosestPointOptions options;
+    options.tolerance = tolerance * diagonal;
+    options.max_distance = max_distance;
+    options.threads = threads;
+    const ClosestPointQuery query(surface, options);
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<ClosestPoint> results = query.find(queries);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    if (out_path.empty()) {
+      write_results(results, normals, signed_distance, stdout);
+    } else {
+      const std::string temp = out_path + ".partial";
+      FILE* f = std::fopen(temp.c_str(), "w");
+      if (!f) throw std::runtime_error(out_path + ": cannot write");
+      write_results(results, normals, signed_distance, f);
+      const bool ok = std::ferror(f) == 0;
+      if (std::fclose(f) != 0 || !ok) {
+        std::remove(temp.c_str());
+        throw std::runtime_error(out_path + ": write failed");
+      }
+      std::error_code ec;
+      std::filesystem::rename(temp, out_path, ec);
+      if (ec) {
+        std::remove(temp.c_str());
+        throw std::runtime_error(out_path + ": cannot move the finished file into place: " + ec.message());
+      }
+    }
+    double largest = 0, sum = 0;
+    std::size_t found = 0;
+    for (const ClosestPoint& r : results)
+      if (r.found) largest = std::max(largest, r.distance), sum += r.distance, ++found;
+    std::fprintf(stderr,
+                 "%zu points (%zu within the maximum distance), %.3f s (%.0f queries/s; query structure built in %.3f s, "
+                 "%.1f MB), distance max %.9g mean %.9g, tolerance %.3g\n",
+                 queries.size(), found, seconds, seconds > 0 ? queries.size() / seconds : 0.0, query.build_seconds(),
+                 query.memory_bytes() / 1e6, largest, found ? sum / found : 0.0, query.tolerance());
+    return 0;
+  });
+}

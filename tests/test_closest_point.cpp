@@ -1,0 +1,243 @@
+// Closest points on the exact limit surface (ClosestPointQuery) against
+// independent oracles: for Catmull-Clark, a brute force on OpenSubdiv's Bfr
+// (every face sampled densely, the best samples polished by projected
+// Gauss-Newton with Bfr's own derivatives, the minimum over all faces); for
+// nonpoly, dense exact limit points. Signs against the mesh's inside.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <iomanip>
+#include <fstream>
+#include <random>
+
+#include "bfr_reference.hpp"
+#include "cli.hpp"
+#include "runtime_api.hpp"
+#include "stencil_runtime/closest_point.hpp"
+#include "stencil_runtime/mesh_io.hpp"
+
+using namespace stencil_runtime;
+using test_runtime::surface_of;
+namespace osd = OpenSubdiv::OPENSUBDIV_VERSION;
+
+namespace {
+
+const std::filesystem::path kMeshes = std::filesystem::path(STENCIL_SOURCE_DIR) / "meshes";
+
+double distance(const Point& a, const Point& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
+
+// Every face of a mesh as a cached Bfr surface with its patch points.
+class BfrOracle {
+ public:
+  explicit BfrOracle(const Mesh& mesh)
+      : refiner_(bfr_reference::make_refiner(static_cast<int>(mesh.vertex_count()), mesh.face_sizes, mesh.face_vertices,
+                                             osd::Sdc::SCHEME_CATMARK)) {
+    osd::Bfr::SurfaceFactory::Options options;
+    options.SetApproxLevelSmooth(bfr_reference::kApproxLevel).SetApproxLevelSharp(bfr_reference::kApproxLevel);
+    osd::Bfr::RefinerSurfaceFactory<> factory(*refiner_, options);
+    std::vector<double> flat;
+    for (const Point& p : mesh.positions) flat.insert(flat.end(), p.begin(), p.end());
+    faces_.resize(mesh.face_count());
+    for (std::size_t f = 0; f < faces_.size(); ++f) {
+      REQUIRE(factory.InitVertexSurface(static_cast<int>(f), &faces_[f].surface));
+      faces_[f].patch.resize(static_cast<std::size_t>(faces_[f].surface.GetNumPatchPoints()) * 3);
+      faces_[f].surface.PreparePatchPoints(flat.data(), 3, faces_[f].patch.data(), 3);
+    }
+  }
+
+  void evaluate(std::size_t f, double u, double v, Point& p, Point& du, Point& dv) const {
+    const double uv[2] = {u, v};
+    faces_[f].surface.Evaluate(uv, faces_[f].patch.data(), 3, p.data(), du.data(), dv.data());
+  }
+
+  // The distance from q to the surface: 24 x 24 samples per face, the best
+  // three of each face polished.
+  double distance_to(const Point& q) const {
+    double best = INFINITY;
+    constexpr int kSamples = 24;
+    for (std::size_t f = 0; f < faces_.size(); ++f) {
+      std::vector<std::pair<double, std::pair<double, double>>> samples;
+      Point p{}, du{}, dv{};
+      for (int j = 0; j <= kSamples; ++j)
+        for (int i = 0; i <= kSamples; ++i) {
+          evaluate(f, double(i) / kSamples, double(j) / kSamples, p, du, dv);
+          samples.push_back({distance(p, q), {double(i) / kSamples, double(j) / kSamples}});
+        }
+      std::partial_sort(samples.begin(), samples.begin() + 3, samples.end());
+      for (int s = 0; s < 3; ++s) best = std::min(best, polish(f, samples[s].second.first, samples[s].second.second, q));
+    }
+    return best;
+  }
+
+ private:
+  // Projected Gauss-Newton with backtracking: a step is taken only where it
+  // brings the point nearer (far from the surface plain Gauss-Newton can
+  // climb away from the minimum).
+  double polish(std::size_t f, double u, double v, const Point& q) const {
+    Point p{}, du{}, dv{};
+    evaluate(f, u, v, p, du, dv);
+    double d = distance(p, q);
+    for (int step = 0; step < 400; ++step) {
+      const Point r{p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+      auto dot = [](const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+      const double a = dot(du, du), b = dot(du, dv), c = dot(dv, dv), gu = dot(r, du), gv = dot(r, dv);
+      const double det = a * c - b * b;
+      // Directions to try: Gauss-Newton, then steepest descent (scaled to a Gauss-Newton-like length).
+      std::vector<std::array<double, 2>> directions;
+      if (det > 0) directions.push_back({-(c * gu - b * gv) / det, -(a * gv - b * gu) / det});
+      const double g = std::hypot(gu, gv);
+      if (g > 0) directions.push_back({-gu / g * 0.1, -gv / g * 0.1});
+      bool moved = false;
+      for (const auto& s : directions) {
+        for (double t = 1; t > 1e-12 && !moved; t /= 2) {
+          const double nu = std::clamp(u + t * s[0], 0.0, 1.0), nv = std::clamp(v + t * s[1], 0.0, 1.0);
+          Point np{}, ndu{}, ndv{};
+          evaluate(f, nu, nv, np, ndu, ndv);
+          const double nd = distance(np, q);
+          if (nd < d) {
+            moved = true;
+            u = nu, v = nv, p = np, du = ndu, dv = ndv, d = nd;
+          }
+        }
+        if (moved) break;
+      }
+      if (!moved) break;
+    }
+    return d;
+  }
+
+  struct Face {
+    osd::Bfr::Surface<double> surface;
+    std::vector<double> patch;
+  };
+  std::unique_ptr<osd::Far::TopologyRefiner> refiner_;
+  std::vector<Face> faces_;
+};
+
+double diagonal_of(const Mesh& mesh) {
+  Point lo = mesh.positions[0], hi = lo;
+  for (const Point& p : mesh.positions)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  return distance(lo, hi);
+}
+
+}  // namespace
+
+TEST_CASE("Catmull-Clark closest points equal a brute force on OpenSubdiv Bfr", "[runtime][distance]") {
+  const auto cc = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 16", "sgs").string());
+  for (const char* name : {"cube.obj", "torus-3-5.obj"}) {
+    const Mesh mesh = read_obj((kMeshes / name).string());
+    const Surface surface = surface_of(cc, mesh);
+    const ClosestPointQuery query(surface);
+    const BfrOracle oracle(mesh);
+    const double diagonal = diagonal_of(mesh);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::vector<Point> queries;
+    // Near the surface, far away, on it, next to the valence-3 corners of the cube, and on the medial axis (the centre).
+    for (int i = 0; i < 12; ++i) {
+      const std::size_t f = static_cast<std::size_t>(i) % mesh.face_count();
+      const Point on = surface.evaluate(f, (1 + i % 5) / 7.0, (2 + i % 3) / 9.0, 1e-14 * diagonal).point;
+      queries.push_back(on);
+      queries.push_back({on[0] + 0.05 * diagonal * unit(rng), on[1] + 0.05 * diagonal * unit(rng), on[2] + 0.05 * diagonal * unit(rng)});
+      queries.push_back({3 * diagonal * unit(rng), 3 * diagonal * unit(rng), 3 * diagonal * unit(rng)});
+      const Point corner = surface.evaluate(f, 1.0 / 512, 1.0 / 1024, 1e-14 * diagonal).point;
+      queries.push_back({corner[0] * (1 + 0.02 * unit(rng)), corner[1] * (1 + 0.02 * unit(rng)), corner[2] * (1 + 0.02 * unit(rng))});
+    }
+    queries.push_back({0, 0, 0});
+    const std::vector<ClosestPoint> got = query.find(queries);
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      const double expected = oracle.distance_to(queries[i]);
+      INFO(name << " query " << i << " (" << queries[i][0] << ", " << queries[i][1] << ", " << queries[i][2] << ")");
+      REQUIRE(got[i].found);
+      INFO(std::setprecision(17) << "ours " << got[i].distance << " oracle " << expected << " accuracy " << got[i].accuracy);
+      CHECK(std::fabs(got[i].distance - expected) <= 1e-9 * diagonal);
+      // The reported point is the surface at the reported parameter, at the reported distance.
+      const Evaluation at = surface.evaluate(got[i].face, got[i].u, got[i].v, 1e-13 * diagonal);
+      CHECK(distance(at.point, got[i].point) <= 1e-11 * diagonal);
+      CHECK(std::fabs(distance(got[i].point, queries[i]) - got[i].distance) <= 1e-12 * diagonal);
+    }
+  }
+}
+
+TEST_CASE("nonpoly closest points are never farther than dense exact limit points, and lie on the surface",
+          "[runtime][distance]") {
+  const auto np = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 16", "sgs").string());
+  const Mesh mesh = read_obj((kMeshes / "icosahedron.obj").string());
+  const Surface surface = surface_of(np, mesh);
+  const ClosestPointQuery query(surface);
+  const double diagonal = diagonal_of(mesh);
+  // Dense exact limit points: every face at rate 8.
+  std::vector<Point> dense;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const FaceDomain d = surface.topology().domain(f);
+    for (int j = 0; j <= 16; ++j)
+      for (int i = 0; i <= 16; ++i)
+        if (d.contains(ExactParameter{Fraction::make(i, 16), Fraction::make(j, 16)}))
+          dense.push_back(surface.evaluate(f, ExactParameter{Fraction::make(i, 16), Fraction::make(j, 16)}));
+  }
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  for (int i = 0; i < 40; ++i) {
+    const Point q{0.8 * diagonal * unit(rng), 0.8 * diagonal * unit(rng), 0.8 * diagonal * unit(rng)};
+    const ClosestPoint r = query.find(q);
+    REQUIRE(r.found);
+    double nearest = INFINITY;
+    for (const Point& p : dense) nearest = std::min(nearest, distance(p, q));
+    CHECK(r.distance <= nearest + query.tolerance());
+    const Evaluation at = surface.evaluate(r.face, r.u, r.v, 1e-13 * diagonal);
+    CHECK(distance(at.point, r.point) <= 1e-11 * diagonal);
+    // The icosahedron's limit surface is closed and convex-ish around the origin: signs by a ray to the centre.
+    if (distance(q, {0, 0, 0}) < 0.1 * diagonal) CHECK(r.signed_distance < 0);
+    if (distance(q, {0, 0, 0}) > diagonal) CHECK(r.signed_distance > 0);
+  }
+}
+
+TEST_CASE("stencildist answers as the library does and refuses bad points files by line", "[runtime][distance][cli]") {
+  const std::string tables = generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string();
+  const std::string cube = (kMeshes / "cube.obj").string();
+  const auto dir = std::filesystem::temp_directory_path() / "stencildist-test";
+  std::filesystem::create_directories(dir);
+  auto write = [&](const char* name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return (dir / name).string();
+  };
+  auto dist = [&](const std::string& points, const std::string& extra) {
+    return run_command(STENCILDIST_EXE, "--tables " + tables + " --mesh " + cube + " --points " + points + " " + extra);
+  };
+  const std::string good = write("q.xyz", "# queries\n0.1 0.2 0.9\n\n3 -1 0.5\n0 0 0\n");
+  const std::string out = (dir / "r.txt").string();
+  const CliResult r = dist(good, "--signed --normals --out " + out);
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  CHECK(r.output.find("3 points") != std::string::npos);
+  std::ifstream lines(out);
+  const Surface surface = surface_of(Tables::load(tables), read_obj(cube));
+  const ClosestPointQuery query(surface);
+  for (const Point& q : {Point{0.1, 0.2, 0.9}, Point{3, -1, 0.5}, Point{0, 0, 0}}) {
+    std::size_t face = 0;
+    double u = 0, v = 0, d = 0;
+    Point p{}, n{};
+    REQUIRE(lines >> face >> u >> v >> p[0] >> p[1] >> p[2] >> d >> n[0] >> n[1] >> n[2]);
+    const ClosestPoint expected = query.find(q);
+    CHECK(face == expected.face);
+    CHECK(d == Approx(expected.signed_distance).margin(1e-12));
+    CHECK(distance(n, expected.normal) < 1e-9);
+  }
+  CHECK(query.find(Point{0, 0, 0}).signed_distance < 0);  // inside the cube
+  CHECK(query.find(Point{3, -1, 0.5}).signed_distance > 0);
+  std::filesystem::remove(out);
+  auto refused = [&](const std::string& points, const std::string& message) {
+    const CliResult bad = dist(points, "--out " + out);
+    INFO(bad.output);
+    CHECK(bad.status == 1);
+    CHECK(bad.output.find(message) != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(out));
+  };
+  refused(write("nan.xyz", "0 0 0\nnan 1 2\n"), "nan.xyz:2");
+  refused(write("cols.xyz", "0 0 0\n1 2\n"), "cols.xyz:2: expected three numbers");
+  refused(write("empty.xyz", "# nothing\n\n"), "no points");
+  refused(write("trunc.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\nend_header\nabc"),
+          "truncated");
+  std::filesystem::remove_all(dir);
+}
