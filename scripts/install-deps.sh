@@ -2,9 +2,10 @@
 # Installs the Debian packages the project builds with, if any are missing.
 # Safe to run repeatedly; needs root (or sudo) only when something is missing.
 set -euo pipefail
-# clang and libclang-rt-14-dev: libFuzzer for the fuzz stage of scripts/test.sh.
+# clang and libclang-rt-14-dev: libFuzzer for the fuzz stage of scripts/test.sh;
+# libembree-dev, libnanoflann-dev: the closest-point queries (stencil_runtime_distance).
 packages=(cmake g++ make libeigen3-dev libboost-dev libgmp-dev libmpfr-dev nlohmann-json3-dev catch2 libcli11-dev libtbb-dev libosd-dev
-          clang libclang-rt-14-dev python3)
+          clang libclang-rt-14-dev python3 libembree-dev libnanoflann-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
