@@ -1,7 +1,8 @@
 # Installs the runtime from the build tree into a fresh prefix, builds the
 # outside project in examples/ against the installed package (find_package,
 # every installed header on its own), and runs it on generated tables.
-# Variables: BUILD_DIR, SOURCE_DIR, WORK_DIR, STENCILGEN.
+# Variables: BUILD_DIR, SOURCE_DIR, WORK_DIR, STENCILGEN, CONSUMER_FLAGS (compile and
+# link flags of the outside project: the sanitizers when the runtime has them).
 file(REMOVE_RECURSE ${WORK_DIR})
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -19,7 +20,8 @@ endforeach()
 if(EXISTS ${WORK_DIR}/prefix/include/stencil_runtime/quad)
   message(FATAL_ERROR "internal headers were installed")
 endif()
-run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples -B ${WORK_DIR}/build -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release)
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples -B ${WORK_DIR}/build -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release
+    "-DCMAKE_CXX_FLAGS=${CONSUMER_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${CONSUMER_FLAGS}")
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build -j2)
 run(${STENCILGEN} --scheme nonpoly --valence 3-8 --n 8 --out ${WORK_DIR}/tables -q)
 run(${WORK_DIR}/build/animate_surface ${WORK_DIR}/tables/nonpoly ${SOURCE_DIR}/meshes/chess-piece.obj ${WORK_DIR}/piece.ply 5)
