@@ -4,13 +4,16 @@
 // code 1, and nothing is written. One regression test per class found.
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <cstring>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
 #include "runtime_api.hpp"
 #include "stencil_runtime/binary_format.hpp"
+#include "tables/triangle_tables.hpp"
 
 using namespace stencil_runtime;
 namespace fs = std::filesystem;
@@ -234,5 +237,39 @@ TEST_CASE("tool options and parameters outside their limits are refused, not wra
                                       (dir / "p.ply").string());
   INFO(r.output);
   CHECK(r.status == 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("triangle tables' children and regular polynomial are checked at load", "[runtime][robustness][triangle]") {
+  const fs::path dir = scratch_dir("robust-children");
+  std::ifstream in(generated_table("loop", "--valence 3 --n 1", "sgt"), std::ios::binary);
+  const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string body = file.substr(0, file.size() - 8);
+  // Valence 3's children: 4 cells, the first the EV's own (valence 3, region 0, rotation 0).
+  std::string pattern;
+  for (std::uint32_t x : {4u, 3u, 0u, 0u}) put(pattern, x);
+  const std::size_t at = body.find(pattern);
+  REQUIRE(at != std::string::npos);
+  auto refused = [&](std::size_t offset, std::uint32_t value, const std::string& message) {
+    std::string bytes = body;
+    std::memcpy(bytes.data() + offset, &value, sizeof value);
+    write_file(dir / "bad.sgt", with_checksum(bytes));
+    CHECK_THROWS_WITH(Tables::load((dir / "bad.sgt").string()), Catch::Contains(message));
+  };
+  refused(at, 5, "5 children (the scheme's step makes 4)");
+  refused(at + 4, 7, "a child of valence 7");
+  refused(at + 8, 2, "a child of a region the tables lack");
+  refused(at + 12, 3, "child 0 has an invalid kind");
+  refused(at + 20, 1, "child 0: invalid entry 0");                    // the first entry's row must be 0
+  refused(at + 24, 100000, "child 0: invalid entry 0");               // a column beyond the layout
+  refused(at + 16, 0x7fffffff, "child 0: truncated rows");
+  // The regular polynomial's coefficients end the file: one less is truncated.
+  write_file(dir / "short.sgt", with_checksum(body.substr(0, body.size() - 8)));
+  CHECK_THROWS_WITH(Tables::load((dir / "short.sgt").string()), Catch::Contains("truncated"));
+  // The unchanged file loads, with its subdivision and Loop's quartic basis.
+  write_file(dir / "good.sgt", with_checksum(body));
+  const auto good = Tables::load((dir / "good.sgt").string());
+  CHECK(good->triangle().has_descent());
+  CHECK(good->triangle().polynomial_degree() == 4);
   fs::remove_all(dir);
 }

@@ -128,21 +128,26 @@ class Rules {
 }  // namespace
 
 template <class T>
+SparseRow<T> refined_point(TriangleRefinement refinement, const SectorChart& chart, const TriangleWeights<T>& weights,
+                           const SectorPoint& p) {
+  const Rules<T> rules(chart, weights);
+  RowBuilder<T> row;
+  row.add(refinement == TriangleRefinement::Loop ? rules.loop_point(p.sector, p.a, p.b) : rules.sqrt3_point(p.sector, p.a, p.b),
+          T(1));
+  return row.finish();
+}
+
+template <class T>
 std::vector<SparseRow<T>> refinement_matrix(TriangleRefinement refinement, const SectorChart& chart,
                                             const TriangleWeights<T>& weights) {
-  const Rules<T> rules(chart, weights);
   std::vector<SparseRow<T>> rows(chart.size());
-  for (std::size_t id = 0; id < chart.size(); ++id) {
-    const SectorPoint p = chart.point(id);
-    RowBuilder<T> row;
-    row.add(refinement == TriangleRefinement::Loop ? rules.loop_point(p.sector, p.a, p.b)
-                                                   : rules.sqrt3_point(p.sector, p.a, p.b),
-            T(1));
-    rows[id] = row.finish();
-  }
+  for (std::size_t id = 0; id < chart.size(); ++id) rows[id] = refined_point(refinement, chart, weights, chart.point(id));
   return rows;
 }
 
+template SparseRow<Rational> refined_point(TriangleRefinement, const SectorChart&, const TriangleWeights<Rational>&,
+                                           const SectorPoint&);
+template SparseRow<Real> refined_point(TriangleRefinement, const SectorChart&, const TriangleWeights<Real>&, const SectorPoint&);
 template std::vector<SparseRow<Rational>> refinement_matrix(TriangleRefinement, const SectorChart&,
                                                             const TriangleWeights<Rational>&);
 template std::vector<SparseRow<Real>> refinement_matrix(TriangleRefinement, const SectorChart&,

@@ -17,6 +17,12 @@ namespace sg {
 template <class T>
 using SparseRow = std::vector<std::pair<std::size_t, T>>;
 
+// The refined point p (fine lattice units, sector p.sector's frame) in the
+// coarse points. Throws sg::Error when it needs a coarse point beyond the chart's rings.
+template <class T>
+SparseRow<T> refined_point(TriangleRefinement refinement, const SectorChart& chart, const TriangleWeights<T>& weights,
+                           const SectorPoint& p);
+
 // One row per chart point (chart.size() rows). Throws sg::Error when a row
 // needs a coarse point beyond the chart's rings.
 template <class T>

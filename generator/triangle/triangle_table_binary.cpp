@@ -7,6 +7,7 @@
 #include "base/error.hpp"
 #include "common/byte_writer.hpp"
 #include "stencil_runtime/binary_format.hpp"
+#include "triangle/triangle_children.hpp"
 
 namespace sg {
 namespace fmt = stencil_runtime::format;
@@ -25,9 +26,49 @@ std::vector<double> weights_over(const TriangleTable& t, const TriangleTable::Re
   return w;
 }
 
+// The union of the rates' layouts of each valence and region, in chart order
+// (ring a, then sector, then b), with the points the children need besides.
+TriangleLayouts union_layouts(const TriangleScheme& scheme, const TriangleTableSet& set) {
+  TriangleLayouts out;
+  for (std::size_t vi = 0; vi < set.valences.size(); ++vi) {
+    const auto& tables = set.tables[vi];
+    std::vector<std::vector<SectorPoint>> regions;
+    for (std::size_t g = 0; g < tables.front().regions.size(); ++g) {
+      std::set<std::tuple<long, int, long>> chart_order;
+      for (const TriangleTable& t : tables)
+        for (const SectorPoint& p : t.regions.at(g).layout) chart_order.emplace(p.a, p.sector, p.b);
+      std::vector<SectorPoint> layout;
+      for (const auto& [a, s, b] : chart_order) layout.push_back({s, a, b});
+      regions.push_back(std::move(layout));
+    }
+    out.emplace_back(set.valences[vi], std::move(regions));
+  }
+  close_layouts(scheme, out);
+  return out;
+}
+
+void put_children(std::string& out, const std::vector<TriangleChild>& children) {
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(children.size()));
+  for (const TriangleChild& c : children) {
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(c.valence));
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(c.region));
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(c.rotation));
+    std::size_t entries = 0;
+    for (const auto& row : c.rows) entries += row.size();
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(entries));
+    for (std::size_t r = 0; r < c.rows.size(); ++r)
+      for (const auto& [column, w] : c.rows[r]) {
+        put<std::uint32_t>(out, static_cast<std::uint32_t>(r));
+        put<std::uint32_t>(out, static_cast<std::uint32_t>(column));
+        put<double>(out, w);
+      }
+  }
+}
+
 }  // namespace
 
 std::string triangle_tables_to_binary(const TriangleScheme& scheme, const TriangleTableSet& set, BinaryPrecision precision) {
+  const TriangleLayouts layouts = union_layouts(scheme, set);
   std::string out(fmt::kTriangleMagic, sizeof fmt::kTriangleMagic);
   put<std::uint32_t>(out, fmt::kTriangleVersion);
   put<std::uint32_t>(out, static_cast<std::uint32_t>(precision));
@@ -52,12 +93,8 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
     const std::size_t regions = tables.front().regions.size();
     put<std::uint32_t>(out, static_cast<std::uint32_t>(regions));
     for (std::size_t g = 0; g < regions; ++g) {
-      // The union of the rates' layouts, in chart order (ring a, then sector, then b).
-      std::set<std::tuple<long, int, long>> chart_order;
-      for (const TriangleTable& t : tables)
-        for (const SectorPoint& p : t.regions.at(g).layout) chart_order.emplace(p.a, p.sector, p.b);
       std::map<std::tuple<int, long, long>, std::size_t> position;
-      for (const auto& [a, s, b] : chart_order) position.emplace(std::tuple{s, a, b}, position.size());
+      for (const SectorPoint& p : layouts[vi].second[g]) position.emplace(std::tuple{p.sector, p.a, p.b}, position.size());
       put<std::uint32_t>(out, static_cast<std::uint32_t>(position.size()));
       std::vector<std::tuple<int, long, long>> ordered(position.size());
       for (const auto& [p, at] : position) ordered[at] = p;
@@ -88,8 +125,17 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
         for (double x : w) put_scalar(out, x, precision);
       for (const auto& rate : index)
         for (std::uint32_t k : rate) put<std::uint32_t>(out, k);
+      put_children(out, triangle_children(scheme, v, static_cast<int>(g), layouts));
     }
   }
+  // The regular patch's polynomial basis, where it is one (Loop).
+  for (const auto& [v, regions] : layouts)
+    if (v == 6) {
+      const RegularPolynomial poly = regular_polynomial(scheme, regions.front());
+      put<std::uint32_t>(out, static_cast<std::uint32_t>(poly.degree));
+      for (const auto& point : poly.coefficients)
+        for (double c : point) put<double>(out, c);
+    }
   put<std::uint64_t>(out, fmt::fnv1a64(reinterpret_cast<const unsigned char*>(out.data()), out.size()));
   return out;
 }

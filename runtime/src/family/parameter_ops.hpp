@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <type_traits>
 
 #include "stencil_runtime/exact_parameter.hpp"
 
@@ -25,6 +26,18 @@ inline double scale_minus(double x, std::int64_t k, std::int64_t c) { return sta
 // c - x
 inline Fraction from(std::int64_t c, const Fraction& x) { return subtract(Fraction{c, 1}, x); }
 inline double from(std::int64_t c, double x) { return static_cast<double>(c) - x; }
+
+// The Fraction arithmetic of exact_parameter.hpp for doubles, so that one
+// template serves both (the triangle family's child maps).
+inline double add(double a, double b) { return a + b; }
+inline double subtract(double a, double b) { return a - b; }
+inline double multiply(double a, std::int64_t k) { return a * static_cast<double>(k); }
+inline int compare(double a, double b) { return a < b ? -1 : (a > b ? 1 : 0); }
+template <class P>
+P integer(std::int64_t c) {
+  if constexpr (std::is_same_v<P, Fraction>) return Fraction{c, 1};
+  else return static_cast<double>(c);
+}
 
 // A double as the exact dyadic fraction it is, when its denominator fits in 62 bits.
 inline std::optional<Fraction> exact_fraction(double x) {

@@ -19,26 +19,6 @@ double norm(const Point& a, const Point& b) {
   return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
 
-double largest_magnitude(const std::vector<Point>& q) {
-  double m = 0;
-  for (const Point& p : q)
-    for (double c : p) m = std::max(m, std::fabs(c));
-  return m;
-}
-
-// out = rows * q, and the rounding this may add (sum of |w| * |q| times the entries, times epsilon).
-double apply(const SparseRows& rows, const std::vector<Point>& q, std::vector<Point>& out) {
-  out.assign(rows.rows(), Point{0, 0, 0});
-  std::size_t widest = 0;
-  for (std::size_t r = 0; r < rows.rows(); ++r) {
-    Point& p = out[r];
-    for (std::size_t e = rows.offsets[r]; e != rows.offsets[r + 1]; ++e)
-      for (int k = 0; k < 3; ++k) p[static_cast<std::size_t>(k)] += rows.weights[e] * q[rows.columns[e]][static_cast<std::size_t>(k)];
-    widest = std::max(widest, rows.offsets[r + 1] - rows.offsets[r]);
-  }
-  return static_cast<double>(widest + 2) * kEpsilon * largest_magnitude(q);
-}
-
 // A stored rate's grid holding (x, y) exactly (both coordinates on 1/(2n) with equal parity).
 bool held(const QuadTables& t, const Fraction& x, const Fraction& y, int& n, std::int64_t& a, std::int64_t& b) {
   for (int rate : t.rates()) {

@@ -9,19 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "sparse_rows.hpp"
 #include "stencil_runtime/error.hpp"
 
 namespace stencil_runtime {
-
-// A small sparse matrix of exact weights rounded to double: row r is
-// sum over e in [offsets[r], offsets[r+1]) of weights[e] * input[columns[e]].
-struct SparseRows {
-  std::size_t columns_count = 0;
-  std::vector<std::size_t> offsets{0};
-  std::vector<std::uint32_t> columns;
-  std::vector<double> weights;
-  std::size_t rows() const { return offsets.size() - 1; }
-};
 
 // The scheme's own subdivision of a patch (version 4 tables), for evaluation at
 // any parameter: see QuadTables::descent() and docs/runtime.md.

@@ -15,6 +15,38 @@ std::size_t nodes_of(long n) { return static_cast<std::size_t>((n + 1) * (n + 2)
 std::size_t ups_of(long n) { return static_cast<std::size_t>(n * (n + 1) / 2); }
 std::size_t downs_of(long n) { return static_cast<std::size_t>(n * (n - 1) / 2); }
 
+// A region's children (version 3): `dilation`^2 cells, each with its kind and
+// sparse rows over the region's `points` layout points, written row by row.
+void read_children(detail::BinaryReader& r, std::size_t left, int dilation, std::uint32_t points, const std::string& where,
+                   std::vector<TriangleChild>& out) {
+  const auto count = r.get<std::uint32_t>();
+  if (count != static_cast<std::uint32_t>(dilation * dilation))
+    r.fail(where + ": " + std::to_string(count) + " children (the scheme's step makes " + std::to_string(dilation * dilation) + ")");
+  for (std::uint32_t k = 0; k < count; ++k) {
+    TriangleChild c;
+    const auto valence = r.get<std::uint32_t>(), region = r.get<std::uint32_t>(), rotation = r.get<std::uint32_t>();
+    if (valence > static_cast<std::uint32_t>(limits::kMaxValence) || region > 3 || rotation > 2)
+      r.fail(where + ": child " + std::to_string(k) + " has an invalid kind");
+    c.valence = static_cast<int>(valence), c.region = static_cast<int>(region), c.rotation = static_cast<int>(rotation);
+    const auto entries = r.get<std::uint32_t>();
+    if (entries == 0 || entries > left / 16) r.fail(where + ": child " + std::to_string(k) + ": truncated rows");
+    c.rows.columns_count = points;
+    std::uint32_t row = 0;
+    for (std::uint32_t e = 0; e < entries; ++e) {
+      const auto at = r.get<std::uint32_t>(), column = r.get<std::uint32_t>();
+      const double w = r.get<double>();
+      const bool in_order = e == 0 ? at == 0 : (at == row || at == row + 1);  // every row has an entry
+      if (!in_order || column >= points || !std::isfinite(w))
+        r.fail(where + ": child " + std::to_string(k) + ": invalid entry " + std::to_string(e));
+      if (e > 0 && at == row + 1) c.rows.offsets.push_back(e), row = at;
+      c.rows.columns.push_back(column);
+      c.rows.weights.push_back(w);
+    }
+    c.rows.offsets.push_back(entries);
+    out.push_back(std::move(c));
+  }
+}
+
 }  // namespace
 
 TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expected_hash) {
@@ -22,8 +54,8 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
   detail::BinaryReader r(bytes, path);
   detail::check_envelope(bytes, r, format::kTriangleMagic, "binary triangle table");
   const auto version = r.get<std::uint32_t>();
-  if (version != format::kTriangleVersion)
-    r.fail("format version " + std::to_string(version) + " is not supported (expected " +
+  if (version != 2 && version != format::kTriangleVersion)
+    r.fail("format version " + std::to_string(version) + " is not supported (expected 2 or " +
            std::to_string(format::kTriangleVersion) + "; regenerate the tables with this stencilgen)");
   const auto scalar = r.get<std::uint32_t>();
   if (scalar != 4 && scalar != 8) r.fail("invalid scalar size " + std::to_string(scalar));
@@ -33,10 +65,12 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
   const auto refinement = r.get<std::uint8_t>();
   if (refinement > 1) r.fail("unknown refinement " + std::to_string(refinement));
   t.refinement_ = static_cast<TriangleRefinement>(refinement);
+  t.descent_ = version >= 3;
   t.edge_end_ = r.get<double>();
   t.edge_opposite_ = r.get<double>();
   const double neighbour_regular = r.get<double>();
-  auto left = [&] { return bytes.size() - r.position(); };
+  // Bytes left before the checksum.
+  auto left = [&] { return bytes.size() - 8 - std::min(bytes.size() - 8, r.position()); };
   const auto rate_count = r.get<std::uint32_t>();
   if (rate_count == 0 || rate_count > left() / 4) r.fail("invalid rate list");
   for (std::uint32_t k = 0; k < rate_count; ++k) {
@@ -90,10 +124,39 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
         }
         region.index.push_back(std::move(index));
       }
+      if (t.descent_) read_children(r, left(), t.dilation(), points, where, region.children);
       v.regions.push_back(std::move(region));
     }
     if (v.valence == 6 && regions != 1) r.fail("the regular patch (valence 6) has band regions");
     t.valences_.push_back(std::move(v));
+  }
+  if (t.descent_) {
+    const Valence* regular = t.find(6);
+    if (!regular) r.fail("holds no valence 6 (the regular patch)");
+    t.degree_ = static_cast<int>(r.get<std::uint32_t>());
+    if (t.degree_ > 8) r.fail("the regular polynomial's degree " + std::to_string(t.degree_) + " is above 8");
+    const std::size_t terms = static_cast<std::size_t>((t.degree_ + 1) * (t.degree_ + 2) / 2);
+    const std::size_t count = t.degree_ == 0 ? 0 : terms * regular->regions[0].layout.size();
+    if (count > left() / 8) r.fail("truncated regular polynomial");
+    t.polynomial_.resize(count);
+    for (double& c : t.polynomial_) {
+      c = r.get<double>();
+      if (!std::isfinite(c)) r.fail("a regular polynomial coefficient is not finite");
+    }
+    // Every child's kind is a patch the tables hold, and its rows cover the kind's layout.
+    for (const Valence& v : t.valences_)
+      for (std::size_t g = 0; g < v.regions.size(); ++g)
+        for (const TriangleChild& c : v.regions[g].children) {
+          const std::string where = "valence " + std::to_string(v.valence) + ", region " + std::to_string(g) + ": a child";
+          if (c.valence != v.valence && c.valence != 6) r.fail(where + " of valence " + std::to_string(c.valence));
+          const Valence* kind = t.find(c.valence);
+          if (!kind || static_cast<std::size_t>(c.region) >= kind->regions.size())
+            r.fail(where + " of a region the tables lack");
+          if (c.rows.rows() != kind->regions[static_cast<std::size_t>(c.region)].layout.size())
+            r.fail(where + " with " + std::to_string(c.rows.rows()) + " rows for a layout of " +
+                   std::to_string(kind->regions[static_cast<std::size_t>(c.region)].layout.size()) + " points");
+          for (double w : c.rows.weights) t.children_nonnegative_ = t.children_nonnegative_ && w >= 0;
+        }
   }
   if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
   if (!std::isfinite(t.edge_end_) || !std::isfinite(t.edge_opposite_)) r.fail("an edge rule weight is not finite");

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "sparse_rows.hpp"
 #include "stencil_runtime/error.hpp"
 
 namespace stencil_runtime {
@@ -25,6 +26,16 @@ enum class TriangleRefinement { Loop = 0, Sqrt3 = 1 };
 struct ChartPoint {
   int sector = 0;
   int a = 0, b = 0;  // a (1,0) + b (1,1) in sector `sector`'s frame; [0,0,0] is the EV
+};
+
+// One cell of a patch after one composite step of the scheme (version 3
+// tables; docs/table-format.md): the patch kind that evaluates it, and its
+// control points (rows: one per point of the kind's layout) over the parent's.
+struct TriangleChild {
+  int valence = 6;
+  int region = 0;
+  int rotation = 0;  // the cell's corner at the kind's corner 0 (as TrianglePatch::rotation)
+  SparseRows rows;
 };
 
 class TriangleTables {
@@ -61,6 +72,20 @@ class TriangleTables {
   const double* up_weights(int valence, int n, int i, int j) const;
   const double* down_weights(int valence, int n, int i, int j) const;
 
+  // The patch subdivision, for evaluation at any parameter (version 3 tables;
+  // false for version 2). Each region of each valence splits into
+  // dilation()^2 cells (Loop 4, sqrt(3) 9), in the order of docs/table-format.md.
+  bool has_descent() const { return descent_; }
+  int dilation() const { return refinement_ == TriangleRefinement::Loop ? 2 : 3; }
+  const std::vector<TriangleChild>& children(int valence, int region) const { return region_data(valence, region).children; }
+  // Whether every child weight is >= 0 (with the rules' weights: the limit over a cell lies in the hull of its points).
+  bool children_nonnegative() const { return children_nonnegative_; }
+  // The regular patch's basis as polynomials (Loop: degree 4), 0 when it is
+  // not one; per point h of layout(6), the coefficients of u^e v^f at
+  // polynomial()[h * terms + k], k running over f = 0..d, e = 0..d-f.
+  int polynomial_degree() const { return degree_; }
+  const std::vector<double>& polynomial() const { return polynomial_; }
+
   // The same lookups with the valence and rate resolved once (a face's
   // tessellation asks for n^2 stencils of one grid).
   enum class GridPoint { Node = 0, Up = 1, Down = 2 };
@@ -84,6 +109,7 @@ class TriangleTables {
     std::vector<ChartPoint> layout;
     std::vector<double> weights;                // stencil_count * layout.size()
     std::vector<std::vector<std::uint32_t>> index;  // per rate slot: nodes, ups, downs
+    std::vector<TriangleChild> children;
   };
   struct Valence {
     int valence = 0;
@@ -102,6 +128,9 @@ class TriangleTables {
   std::vector<int> rates_;
   std::vector<int> slot_of_rate_;
   std::vector<Valence> valences_;
+  bool descent_ = false, children_nonnegative_ = true;
+  int degree_ = 0;
+  std::vector<double> polynomial_;
 };
 
 }  // namespace stencil_runtime

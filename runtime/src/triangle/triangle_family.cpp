@@ -1,6 +1,8 @@
 #include "triangle_family.hpp"
 
+#include <algorithm>
 #include <string>
+#include <type_traits>
 
 #include "family/parameter_ops.hpp"
 #include "triangle_steps.hpp"
@@ -30,12 +32,13 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
 }
 
 // Child of a face split by a Loop step (loop_step) holding (u, v), and the parameter there.
-std::pair<int, ExactParameter> loop_child(const ExactParameter& p) {
+template <class P>
+std::pair<int, std::array<P, 2>> loop_child(const P& u, const P& v) {
   // Barycentric coordinates times 2: (k, a, b) on corners 0, 1, 2. The child at
   // corner c holds the points where corner c's weight is at least 1/2.
-  const Fraction one{1, 1};
-  const Fraction a = multiply(p.u, 2), b = multiply(p.v, 2);
-  const Fraction k = subtract(subtract(Fraction{2, 1}, a), b);
+  const P one = integer<P>(1);
+  const P a = multiply(u, 2), b = multiply(v, 2);
+  const P k = subtract(subtract(integer<P>(2), a), b);
   if (compare(k, one) >= 0) return {0, {a, b}};
   if (compare(a, one) >= 0) return {1, {b, k}};
   if (compare(b, one) >= 0) return {2, {k, a}};
@@ -43,17 +46,33 @@ std::pair<int, ExactParameter> loop_child(const ExactParameter& p) {
 }
 
 // Cell of the 1-to-9 split (ternary_cells) holding (u, v), and the parameter there.
-std::pair<int, ExactParameter> ternary_child(const ExactParameter& p) {
-  const Fraction x = multiply(p.u, 3), y = multiply(p.v, 3), zero{0, 1}, one{1, 1};
+template <class P>
+std::pair<int, std::array<P, 2>> ternary_child(const P& u, const P& v) {
+  const P x = multiply(u, 3), y = multiply(v, 3), zero = integer<P>(0), one = integer<P>(1);
   int c = 0;
   for (const TernaryCell& cell : ternary_cells()) {
-    ExactParameter q;
-    if (cell.down) q = {subtract(add(x, y), Fraction{cell.a + cell.b + 1, 1}), subtract(Fraction{cell.a + 1, 1}, x)};
-    else q = {subtract(x, Fraction{cell.a, 1}), subtract(y, Fraction{cell.b, 1})};
-    if (compare(q.u, zero) >= 0 && compare(q.v, zero) >= 0 && compare(add(q.u, q.v), one) <= 0) return {c, q};
+    std::array<P, 2> q;
+    if (cell.down) q = {subtract(add(x, y), integer<P>(cell.a + cell.b + 1)), subtract(integer<P>(cell.a + 1), x)};
+    else q = {subtract(x, integer<P>(cell.a)), subtract(y, integer<P>(cell.b))};
+    if (compare(q[0], zero) >= 0 && compare(q[1], zero) >= 0 && compare(add(q[0], q[1]), one) <= 0) return {c, q};
     ++c;
   }
-  throw EvaluationError("parameter " + p.str() + " lies outside the triangle");
+  if constexpr (std::is_same_v<P, double>) {  // rounding put it just outside every cell: the nearest
+    int best = 0;
+    double distance = 1e300;
+    std::array<double, 2> at{};
+    c = 0;
+    for (const TernaryCell& cell : ternary_cells()) {
+      std::array<double, 2> q = cell.down ? std::array<double, 2>{x + y - (cell.a + cell.b + 1), cell.a + 1 - x}
+                                          : std::array<double, 2>{x - cell.a, y - cell.b};
+      const double outside = std::max({0.0, -q[0], -q[1], q[0] + q[1] - 1});
+      if (outside < distance) distance = outside, best = c, at = q;
+      ++c;
+    }
+    return {best, at};
+  } else {
+    throw EvaluationError("parameter (" + u.str() + ", " + v.str() + ") lies outside the triangle");
+  }
 }
 
 }  // namespace
@@ -95,27 +114,56 @@ TriangleFamily::TriangleFamily(std::shared_ptr<const Tables> tables, Prepared pr
       steps_(prepared.steps),
       topology_(prepared.mesh),
       patches_(std::move(prepared.patches)) {
+  if (tables_.has_descent()) descent_.emplace(tables_);
   refinement_ = std::move(prepared.refinement);
   hierarchy_ = std::move(prepared.hierarchy);
   prepared_ = std::move(prepared.mesh);
 }
 
-Approximation TriangleFamily::evaluate(std::size_t face, const ExactParameter& at, double, const Point* prepared) const {
+template <class P>
+Approximation TriangleFamily::descend(std::size_t face, P u, P v, double tolerance, const Point* prepared) const {
+  const TrianglePatchDescent& descent = checked_descent();
+  const auto [pf, p] = locate_any(face, u, v);
+  const TrianglePatch& patch = patches_[pf];
+  // Into the patch's own coordinates (TrianglePatch::to_patch).
+  std::array<P, 2> q = p;
+  const P w = subtract(subtract(integer<P>(1), p[0]), p[1]);
+  if (patch.rotation == 1) q = {p[1], w};
+  else if (patch.rotation == 2) q = {w, p[0]};
+  std::vector<Point> points(patch.points.size());
+  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
+  return descent.evaluate(patch.valence, patch.region, points, q[0], q[1], tolerance);
+}
+
+const TrianglePatchDescent& TriangleFamily::checked_descent() const {
+  if (!descent_)
+    throw EvaluationError("these triangle tables hold no patch subdivision (version 2 .sgt): evaluation at parameters "
+                          "they do not hold needs tables from this stencilgen");
+  return *descent_;
+}
+
+Approximation TriangleFamily::evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const {
   PatchStencil s;
-  if (!stencil(face, at, s))
-    throw EvaluationError("the parameter " + at.str() + " of face " + std::to_string(face) +
-                          " is on no grid the tables hold, and triangle schemes are evaluated only where they do");
-  Approximation out;
-  for (std::size_t h = 0; h < s.size; ++h)
-    for (int k = 0; k < 3; ++k) out.point[static_cast<std::size_t>(k)] += s.weights[h] * prepared[s.points[h]][static_cast<std::size_t>(k)];
-  return out;
+  if (stencil(face, at, s)) {  // held by the tables: no descent needed (nor patch subdivision data)
+    Approximation out;
+    for (std::size_t h = 0; h < s.size; ++h)
+      for (std::size_t k = 0; k < 3; ++k) out.point[k] += s.weights[h] * prepared[s.points[h]][k];
+    return out;
+  }
+  try {
+    return descend(face, at.u, at.v, tolerance, prepared);
+  } catch (const ParameterOverflow&) {  // beyond 64-bit fractions: the nearest double
+    Approximation a = descend(face, at.u.to_double(), at.v.to_double(), tolerance, prepared);
+    a.exact = false;
+    return a;
+  }
 }
 
 Approximation TriangleFamily::evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const {
+  // A double is an exact dyadic fraction: evaluated exactly where the tables reach it.
   const auto fu = exact_fraction(u), fv = exact_fraction(v);
-  if (!fu || !fv)
-    throw EvaluationError("triangle schemes are evaluated only at parameters their tables hold");
-  return evaluate(face, ExactParameter{*fu, *fv}, tolerance, prepared);
+  if (fu && fv) return evaluate(face, ExactParameter{*fu, *fv}, tolerance, prepared);
+  return descend(face, u, v, tolerance, prepared);
 }
 
 std::string TriangleFamily::preparation() const {
@@ -124,14 +172,24 @@ std::string TriangleFamily::preparation() const {
 
 FaceDomain TriangleFamily::domain(std::size_t) const { return FaceDomain::of(SchemeFamily::Triangle, 3); }
 
-std::pair<std::size_t, ExactParameter> TriangleFamily::locate(std::size_t face, const ExactParameter& at) const {
-  ExactParameter p = at;
+template <class P>
+std::pair<std::size_t, std::array<P, 2>> TriangleFamily::locate_any(std::size_t face, P u, P v) const {
+  std::array<P, 2> p{u, v};
   for (const FaceHierarchy::Level& level : hierarchy_.levels) {
-    const auto [c, child] = level.scale == 3 ? ternary_child(p) : loop_child(p);
+    const auto [c, child] = level.scale == 3 ? ternary_child(p[0], p[1]) : loop_child(p[0], p[1]);
     face = level.child_offsets[face] + static_cast<std::size_t>(c);
     p = child;
   }
   return {face, p};
+}
+
+std::pair<std::size_t, ExactParameter> TriangleFamily::locate(std::size_t face, const ExactParameter& at) const {
+  const auto [prepared, p] = locate_any(face, at.u, at.v);
+  return {prepared, {p[0], p[1]}};
+}
+
+std::pair<std::size_t, std::array<double, 2>> TriangleFamily::locate(std::size_t face, double u, double v) const {
+  return locate_any(face, u, v);
 }
 
 bool TriangleFamily::stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const {

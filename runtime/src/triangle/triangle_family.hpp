@@ -5,7 +5,9 @@
 // an extraordinary vertex's, or sqrt(3)'s band region) can be gathered by
 // chart walks; exact evaluation from the tables and the tessellation kernels
 // (triangle_tessellation.cpp).
+#include <array>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -15,6 +17,7 @@
 #include "stencil_runtime/tables.hpp"
 #include "tables/triangle_tables.hpp"
 #include "chart_patch.hpp"
+#include "triangle_descent.hpp"
 
 namespace stencil_runtime {
 
@@ -46,11 +49,18 @@ class TriangleFamily final : public Family {
   bool sqrt3() const { return tables_.refinement() == TriangleRefinement::Sqrt3; }
   // Where an exact parameter of an original face lands: a prepared face and its parameter there.
   std::pair<std::size_t, ExactParameter> locate(std::size_t face, const ExactParameter& at) const;
+  // The same for a real parameter.
+  std::pair<std::size_t, std::array<double, 2>> locate(std::size_t face, double u, double v) const;
 
  private:
   [[noreturn]] static void unavailable() {
     throw EvaluationError("closest points on triangle schemes need the triangle patch subdivision, which these tables lack");
   }
+  template <class P>
+  std::pair<std::size_t, std::array<P, 2>> locate_any(std::size_t face, P u, P v) const;
+  template <class P>
+  Approximation descend(std::size_t face, P u, P v, double tolerance, const Point* prepared) const;
+  const TrianglePatchDescent& checked_descent() const;
   struct Prepared;
   static Prepared prepare(const Tables& tables, const Connectivity& mesh);
   TriangleFamily(std::shared_ptr<const Tables> tables, Prepared prepared);
@@ -60,6 +70,7 @@ class TriangleFamily final : public Family {
   int steps_ = 0;
   TriangleTopology topology_;
   std::vector<TrianglePatch> patches_;
+  std::optional<TrianglePatchDescent> descent_;  // when the tables hold the patch subdivision
 };
 
 // Index of up centre (i, j) and down centre (i, j) among a face's n^2 tessellation

@@ -1,0 +1,45 @@
+#pragma once
+// A triangle patch evaluated at any parameter by the scheme's own subdivision
+// of the patch (docs/runtime.md, "Evaluation at any parameter"): the control
+// points descend into the cell that holds the parameter (the tables' children:
+// Loop 4 cells, sqrt(3) 9 per composite step), each cell a patch of a kind the
+// tables hold (the EV's own patch, a band region, or the regular patch). The
+// descent stops
+//  - exactly, where a stored rate holds the cell's parameter;
+//  - exactly up to rounding, in a regular patch whose basis is polynomial
+//    (Loop's quartic box spline), evaluated directly;
+//  - otherwise once the bound is within the tolerance: the approximation is the
+//    exact limit point f(s) at the sample s of the finest stored grid nearest to
+//    the parameter x. Every subdivision weight is non-negative, so the limit over
+//    a cell lies in the convex hull of its control points: for the smallest
+//    cell (descending further) whose closure holds both x and s,
+//    |f(x) - f(s)| <= max_j |P_j - f(s)| (plus rounding). That cell is about as
+//    small as |x - s|, which keeps the bound within a small factor of the error.
+#include <vector>
+
+#include "family/family.hpp"
+#include "tables/triangle_tables.hpp"
+
+namespace stencil_runtime {
+
+class TrianglePatchDescent {
+ public:
+  // Throws EvaluationError when the tables hold no patch subdivision (version 2).
+  explicit TrianglePatchDescent(const TriangleTables& tables);
+
+  // `points`: the patch's control points over layout(valence, region), consumed;
+  // (x, y): the patch parameter. P is Fraction or double.
+  template <class P>
+  Approximation evaluate(int valence, int region, std::vector<Point>& points, P x, P y, double tolerance) const;
+
+ private:
+  Approximation nearest_sample(int valence, int region, const std::vector<Point>& q, double x, double y, double& sx,
+                               double& sy) const;
+  double common_cell_bound(int valence, int region, std::vector<Point> q, double x, double y, double sx, double sy,
+                           const Point& at, double bound) const;
+  Point polynomial(const std::vector<Point>& q, double x, double y) const;
+
+  const TriangleTables& tables_;
+};
+
+}  // namespace stencil_runtime
