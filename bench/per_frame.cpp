@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
               "OSD EvalPatches (ms) | OSD Bfr (ms) | ratio to best OSD | per frame / static | max diff / size |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int s = 0; s < 2; ++s) {
+    if (paths[s] == "-") continue;  // "-" skips that scheme (e.g. to re-measure Catmull-Clark alone)
     const auto tables = Tables::load(paths[s]);
     Mesh mesh = read_obj(mesh_path);
     while (mesh.face_count() < 100000) mesh = subdivide(*tables, mesh);
