@@ -27,6 +27,12 @@ struct Sample {
   ExactParameter at;
 };
 
+// A face and a real parameter on it.
+struct RealSample {
+  std::size_t face = 0;
+  double u = 0, v = 0;
+};
+
 class SurfaceTopology {
  public:
   // Checks the faces (sizes 3..limits::kMaxFaceSize, indices below
@@ -60,11 +66,18 @@ class SurfaceTopology {
   std::size_t prepared_vertex_count() const;
 
   // The limit point at an exact parameter as a sparse row over the control
-  // vertices, when the tables hold that parameter; throws EvaluationError
-  // naming the face or parameter otherwise (see Surface::evaluate).
+  // vertices, wherever it is exact: the tables hold the parameter, or the
+  // patch's descent through the scheme's own subdivision reaches a parameter
+  // they hold or a regular patch whose basis is polynomial (Catmull-Clark and
+  // Loop: every parameter). Throws EvaluationError naming the face and
+  // parameter otherwise (a non-polynomial scheme between its grids: evaluate
+  // within a tolerance with Surface::evaluate instead).
   StencilRows stencil(std::size_t face, const ExactParameter& at) const;
   // One row per sample (rows computed in parallel).
   StencilRows stencils(const std::vector<Sample>& samples) const;
+  // The same at real parameters (a double is an exact binary fraction).
+  StencilRows stencil(std::size_t face, double u, double v) const;
+  StencilRows stencils(const std::vector<RealSample>& samples) const;
 
   const Family& family() const { return *family_; }
   ~SurfaceTopology();

@@ -5,6 +5,7 @@
 
 #include <numeric>
 #include <string>
+#include <type_traits>
 
 #include "exact_stencil.hpp"
 
@@ -103,22 +104,41 @@ PatchStencil exact_stencil(const SurfaceTopology& topology, std::size_t face, co
   return checked_stencil(topology, face, at);
 }
 
-StencilRows SurfaceTopology::stencil(std::size_t face, const ExactParameter& at) const { return stencils({{face, at}}); }
+namespace {
 
-StencilRows SurfaceTopology::stencils(const std::vector<Sample>& samples) const {
-  // Each row: the patch stencil over prepared vertices, folded through R.
+// The stencil at a real parameter, checked, or an EvaluationError that says why not.
+PatchStencil checked_stencil(const SurfaceTopology& topology, std::size_t face, double u, double v) {
+  const FaceDomain domain = topology.domain(face);
+  const std::string at = "(" + std::to_string(u) + ", " + std::to_string(v) + ")";
+  if (!domain.contains(u, v))
+    throw EvaluationError("the parameter " + at + " lies outside face " + std::to_string(face) + " (its domain is " +
+                          domain.describe() + ")");
+  PatchStencil s;
+  if (!topology.family().stencil(face, u, v, s))
+    throw EvaluationError("the limit point at " + at + " of face " + std::to_string(face) +
+                          " has no exact row: the tables do not hold the parameter, nor does the patch's descent reach one "
+                          "they hold, and the scheme's regular patches are not polynomial; evaluate it within a tolerance "
+                          "(Surface::evaluate) instead");
+  return s;
+}
+
+// Each row: the patch stencil over prepared vertices, folded through R.
+template <class SampleT>
+StencilRows rows_of(const SurfaceTopology& topology, const Family& family, const std::vector<SampleT>& samples) {
   std::vector<SparseEntries> rows(samples.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.size(), 64), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t k = r.begin(); k != r.end(); ++k) {
-      const PatchStencil s = checked_stencil(*this, samples[k].face, samples[k].at);
+      PatchStencil s;
+      if constexpr (std::is_same_v<SampleT, Sample>) s = checked_stencil(topology, samples[k].face, samples[k].at);
+      else s = checked_stencil(topology, samples[k].face, samples[k].u, samples[k].v);
       SparseEntries& row = rows[k];
       row.reserve(s.size);
       for (std::size_t h = 0; h < s.size; ++h) row.emplace_back(static_cast<std::uint32_t>(s.points[h]), s.weights[h]);
-      family_->refinement().fold(row);
+      family.refinement().fold(row);
     }
   });
   StencilRows out;
-  out.columns = vertex_count_;
+  out.columns = topology.vertex_count();
   for (const SparseEntries& row : rows) {
     for (const auto& [c, w] : row) {
       out.vertices.push_back(c);
@@ -128,6 +148,17 @@ StencilRows SurfaceTopology::stencils(const std::vector<Sample>& samples) const 
   }
   return out;
 }
+
+}  // namespace
+
+StencilRows SurfaceTopology::stencil(std::size_t face, const ExactParameter& at) const {
+  return stencils(std::vector<Sample>{{face, at}});
+}
+StencilRows SurfaceTopology::stencils(const std::vector<Sample>& samples) const { return rows_of(*this, *family_, samples); }
+StencilRows SurfaceTopology::stencil(std::size_t face, double u, double v) const {
+  return stencils(std::vector<RealSample>{{face, u, v}});
+}
+StencilRows SurfaceTopology::stencils(const std::vector<RealSample>& samples) const { return rows_of(*this, *family_, samples); }
 
 std::vector<Point> StencilRows::apply(const std::vector<Point>& control) const {
   if (control.size() != columns)

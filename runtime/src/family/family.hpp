@@ -23,8 +23,19 @@ struct PatchStencil {
   std::size_t face = 0;             // the prepared face
   const int* points = nullptr;      // its patch's prepared vertices
   std::size_t size = 0;
-  const double* weights = nullptr;  // `size` weights: into the tables, or into `storage`
+  const double* weights = nullptr;  // `size` weights: into the tables, `storage` or `computed`
   std::array<double, 2 * limits::kMaxValence + 8> storage{};
+  std::vector<double> computed;     // weights found by the patch descent (weights_by_linearity)
+
+  PatchStencil() = default;
+  // Copies and moves keep `weights` pointing at their own storage.
+  PatchStencil(const PatchStencil& o) { *this = o; }
+  PatchStencil& operator=(const PatchStencil& o) {
+    if (this == &o) return *this;
+    face = o.face, points = o.points, size = o.size, storage = o.storage, computed = o.computed;
+    weights = o.weights == o.storage.data() ? storage.data() : (o.weights == o.computed.data() && !o.computed.empty() ? computed.data() : o.weights);
+    return *this;
+  }
 };
 
 // A limit point and how far it may be from the exact one (surface.hpp's Evaluation).
@@ -76,8 +87,12 @@ class Family {
   virtual FaceDomain domain(std::size_t face) const = 0;
 
   // The weights at an exact parameter (inside domain(face)) of an original
-  // face, over prepared vertices; false when no stored rate holds it.
+  // face, over prepared vertices: from a stored rate that holds it, or from the
+  // patch descent where that is exact (it reaches a stored rate's grid, or a
+  // regular patch whose basis is polynomial); false otherwise.
   virtual bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const = 0;
+  // The same at a real parameter (a double is an exact binary fraction).
+  virtual bool stencil(std::size_t face, double u, double v, PatchStencil& out) const = 0;
 
   // The limit point at any parameter (inside domain(face)) from the prepared
   // positions: exact where the tables hold the parameter, directly or after
@@ -110,6 +125,25 @@ class Family {
   FaceHierarchy hierarchy_;
   Connectivity prepared_;
 };
+
+// The weights of a patch evaluation that is linear in the patch's `count`
+// control points and exact: its images of unit vectors, three points at a time
+// (one per coordinate). `evaluate(points)` consumes the points and returns an
+// Approximation; false when one is not exact (the descent then stopped on a
+// bound that depends on the positions, and no row over the points exists).
+template <class Evaluate>
+bool weights_by_linearity(std::size_t count, const Evaluate& evaluate, std::vector<double>& weights) {
+  weights.assign(count, 0.0);
+  std::vector<Point> unit;
+  for (std::size_t first = 0; first < count; first += 3) {
+    unit.assign(count, Point{0, 0, 0});
+    for (std::size_t k = 0; k < 3 && first + k < count; ++k) unit[first + k][k] = 1;
+    const Approximation a = evaluate(unit);
+    if (!a.exact) return false;
+    for (std::size_t k = 0; k < 3 && first + k < count; ++k) weights[first + k] = a.point[k];
+  }
+  return true;
+}
 
 // The valence check every family makes before preparing, with messages that
 // say what to do: valences below 3 and above limits::kMaxValence are refused as

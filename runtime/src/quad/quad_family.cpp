@@ -172,21 +172,51 @@ std::pair<std::size_t, std::array<double, 2>> QuadFamily::locate(std::size_t fac
 }
 
 template <class P>
-Approximation QuadFamily::descend(std::size_t face, P u, P v, double tolerance, const Point* prepared) const {
-  checked_descent();
+std::pair<std::size_t, std::array<P, 2>> QuadFamily::patch_parameter(std::size_t face, P u, P v) const {
   const auto [pf, p] = locate_any(face, u, v);
-  const QuadPatch& patch = patches_[pf];
   // Into the patch's own coordinates (the extraordinary vertex at (0, 0)).
   std::array<P, 2> q;
-  switch (patch.rotation) {
+  switch (patches_[pf].rotation) {
     case 0: q = p; break;
     case 1: q = {p[1], from(1, p[0])}; break;
     case 2: q = {from(1, p[0]), from(1, p[1])}; break;
     default: q = {from(1, p[1]), p[0]}; break;
   }
+  return {pf, q};
+}
+
+template <class P>
+Approximation QuadFamily::descend(std::size_t face, P u, P v, double tolerance, const Point* prepared) const {
+  const QuadPatchDescent& descent = checked_descent();
+  const auto [pf, q] = patch_parameter(face, u, v);
+  const QuadPatch& patch = patches_[pf];
   std::vector<Point> points(patch.points.size());
   for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
-  return checked_descent().evaluate(patch.valence, points, q[0], q[1], tolerance);
+  return descent.evaluate(patch.valence, points, q[0], q[1], tolerance);
+}
+
+template <class P>
+bool QuadFamily::descent_stencil(std::size_t face, P u, P v, PatchStencil& out) const {
+  if (!descent_) return false;
+  try {
+    const auto [pf, q] = patch_parameter(face, u, v);
+    const QuadPatch& patch = patches_[pf];
+    auto evaluate = [&](std::vector<Point>& unit) { return descent_->evaluate(patch.valence, unit, q[0], q[1], 0.0); };
+    if (!weights_by_linearity(patch.points.size(), evaluate, out.computed)) return false;
+    out.face = pf;
+    out.points = patch.points.data();
+    out.size = patch.points.size();
+    out.weights = out.computed.data();
+    return true;
+  } catch (const ParameterOverflow&) {  // beyond 64-bit fractions: no exact row
+    return false;
+  }
+}
+
+bool QuadFamily::stencil(std::size_t face, double u, double v, PatchStencil& out) const {
+  const auto fu = exact_fraction(u), fv = exact_fraction(v);
+  if (fu && fv) return stencil(face, ExactParameter{*fu, *fv}, out);
+  return descent_stencil(face, u, v, out);
 }
 
 const QuadPatchDescent& QuadFamily::checked_descent() const {
@@ -299,7 +329,7 @@ bool QuadFamily::stencil(std::size_t face, const ExactParameter& at, PatchStenci
     out.weights = out.storage.data();
     return true;
   }
-  return false;
+  return descent_stencil(face, at.u, at.v, out);
 }
 
 // The n^2 cell centres of a regular face, tensor-product form: rows R[q][i] =

@@ -27,6 +27,7 @@ class QuadFamily final : public Family {
   int refinement_steps() const override { return steps_ + (polygon_step_ ? 1 : 0); }
   FaceDomain domain(std::size_t face) const override;
   bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const override;
+  bool stencil(std::size_t face, double u, double v, PatchStencil& out) const override;
   Approximation evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const override;
   Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const override;
   bool hull_bounds() const override;
@@ -68,6 +69,11 @@ class QuadFamily final : public Family {
   std::pair<std::size_t, std::array<P, 2>> locate_any(std::size_t face, P u, P v) const;
   template <class P>
   Approximation descend(std::size_t face, P u, P v, double tolerance, const Point* prepared) const;
+  // The prepared face holding (u, v) of original face `face`, and the parameter in its patch's own coordinates.
+  template <class P>
+  std::pair<std::size_t, std::array<P, 2>> patch_parameter(std::size_t face, P u, P v) const;
+  template <class P>
+  bool descent_stencil(std::size_t face, P u, P v, PatchStencil& out) const;
 };
 
 }  // namespace stencil_runtime

@@ -121,18 +121,48 @@ TriangleFamily::TriangleFamily(std::shared_ptr<const Tables> tables, Prepared pr
 }
 
 template <class P>
-Approximation TriangleFamily::descend(std::size_t face, P u, P v, double tolerance, const Point* prepared) const {
-  const TrianglePatchDescent& descent = checked_descent();
+std::pair<std::size_t, std::array<P, 2>> TriangleFamily::patch_parameter(std::size_t face, P u, P v) const {
   const auto [pf, p] = locate_any(face, u, v);
-  const TrianglePatch& patch = patches_[pf];
   // Into the patch's own coordinates (TrianglePatch::to_patch).
   std::array<P, 2> q = p;
   const P w = subtract(subtract(integer<P>(1), p[0]), p[1]);
-  if (patch.rotation == 1) q = {p[1], w};
-  else if (patch.rotation == 2) q = {w, p[0]};
+  if (patches_[pf].rotation == 1) q = {p[1], w};
+  else if (patches_[pf].rotation == 2) q = {w, p[0]};
+  return {pf, q};
+}
+
+template <class P>
+Approximation TriangleFamily::descend(std::size_t face, P u, P v, double tolerance, const Point* prepared) const {
+  const TrianglePatchDescent& descent = checked_descent();
+  const auto [pf, q] = patch_parameter(face, u, v);
+  const TrianglePatch& patch = patches_[pf];
   std::vector<Point> points(patch.points.size());
   for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
   return descent.evaluate(patch.valence, patch.region, points, q[0], q[1], tolerance);
+}
+
+template <class P>
+bool TriangleFamily::descent_stencil(std::size_t face, P u, P v, PatchStencil& out) const {
+  if (!descent_) return false;
+  try {
+    const auto [pf, q] = patch_parameter(face, u, v);
+    const TrianglePatch& patch = patches_[pf];
+    auto evaluate = [&](std::vector<Point>& unit) { return descent_->evaluate(patch.valence, patch.region, unit, q[0], q[1], 0.0); };
+    if (!weights_by_linearity(patch.points.size(), evaluate, out.computed)) return false;
+    out.face = pf;
+    out.points = patch.points.data();
+    out.size = patch.points.size();
+    out.weights = out.computed.data();
+    return true;
+  } catch (const ParameterOverflow&) {  // beyond 64-bit fractions: no exact row
+    return false;
+  }
+}
+
+bool TriangleFamily::stencil(std::size_t face, double u, double v, PatchStencil& out) const {
+  const auto fu = exact_fraction(u), fv = exact_fraction(v);
+  if (fu && fv) return stencil(face, ExactParameter{*fu, *fv}, out);
+  return descent_stencil(face, u, v, out);
 }
 
 const TrianglePatchDescent& TriangleFamily::checked_descent() const {
@@ -144,7 +174,7 @@ const TrianglePatchDescent& TriangleFamily::checked_descent() const {
 
 Approximation TriangleFamily::evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const {
   PatchStencil s;
-  if (stencil(face, at, s)) {  // held by the tables: no descent needed (nor patch subdivision data)
+  if (held_stencil(face, at, s)) {  // held by the tables: no descent needed (nor patch subdivision data)
     Approximation out;
     for (std::size_t h = 0; h < s.size; ++h)
       for (std::size_t k = 0; k < 3; ++k) out.point[k] += s.weights[h] * prepared[s.points[h]][k];
@@ -193,6 +223,10 @@ std::pair<std::size_t, std::array<double, 2>> TriangleFamily::locate(std::size_t
 }
 
 bool TriangleFamily::stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const {
+  return held_stencil(face, at, out) || descent_stencil(face, at.u, at.v, out);
+}
+
+bool TriangleFamily::held_stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const {
   const auto [prepared, p] = locate(face, at);
   const TrianglePatch& patch = patches_[prepared];
   const ExactParameter q = patch.to_patch(p);
