@@ -52,8 +52,8 @@ const rt::Mesh& bundled_mesh(const char* name) {
 // As stenciltess does: topology from the connectivity, a plan at `rates`
 // (clamped to the tables by the plan), positions, then a few exact grid
 // parameters of the first faces evaluated (corners and an inner point at every
-// stored rate, within the budget). A valence or rule the tables lack is a
-// MeshError, reported by the tools the same way.
+// stored rate, within the budget), then a few real ones. A valence or rule the
+// tables lack is a MeshError, reported by the tools the same way.
 void use_surface(const std::shared_ptr<const rt::Tables>& tables, const rt::Mesh& mesh, const std::vector<int>& rates,
                  Budget& budget) {
   try {
@@ -69,6 +69,18 @@ void use_surface(const std::shared_ptr<const rt::Tables>& tables, const rt::Mesh
           surface.evaluate(f, rt::ExactParameter{{p[0], n}, {p[1], n}});
         }
     }
+    // Between the grids: the patch descent through the tables' subdivision
+    // (hostile rules may have no bound: an EvaluationError that says so), and
+    // rows by linearity where the descent is exact.
+    for (std::size_t f = 0; f < faces; ++f)
+      for (const auto& [u, v] : {std::pair{0.3, 0.2}, std::pair{1.0 / 29, 1e-7}, std::pair{1e-30, 0.5}}) {
+        if (!budget.take(2000)) return;
+        try {
+          surface.evaluate(f, u, v, 1e-9);
+          topology->stencil(f, u, v);
+        } catch (const rt::EvaluationError&) {
+        }
+      }
   } catch (const rt::MeshError&) {
   }
 }

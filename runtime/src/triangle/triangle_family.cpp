@@ -145,7 +145,9 @@ template <class P>
 bool TriangleFamily::descent_stencil(std::size_t face, P u, P v, PatchStencil& out) const {
   if (!descent_) return false;
   try {
-    const auto [pf, q] = patch_parameter(face, u, v);
+    const auto located = patch_parameter(face, u, v);  // not a structured binding: lambdas capture it (clang 14)
+    const std::size_t pf = located.first;
+    const std::array<P, 2> q = located.second;
     const TrianglePatch& patch = patches_[pf];
     auto evaluate = [&](std::vector<Point>& unit) { return descent_->evaluate(patch.valence, patch.region, unit, q[0], q[1], 0.0); };
     if (!weights_by_linearity(patch.points.size(), evaluate, out.computed)) return false;
