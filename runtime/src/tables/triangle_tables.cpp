@@ -133,8 +133,9 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
   if (t.descent_) {
     const Valence* regular = t.find(6);
     if (!regular) r.fail("holds no valence 6 (the regular patch)");
-    t.degree_ = static_cast<int>(r.get<std::uint32_t>());
-    if (t.degree_ > 8) r.fail("the regular polynomial's degree " + std::to_string(t.degree_) + " is above 8");
+    const auto degree = r.get<std::uint32_t>();
+    if (degree > 8) r.fail("the regular polynomial's degree " + std::to_string(degree) + " is above 8");
+    t.degree_ = static_cast<int>(degree);
     const std::size_t terms = static_cast<std::size_t>((t.degree_ + 1) * (t.degree_ + 2) / 2);
     const std::size_t count = t.degree_ == 0 ? 0 : terms * regular->regions[0].layout.size();
     if (count > left() / 8) r.fail("truncated regular polynomial");
