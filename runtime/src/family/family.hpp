@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "face_hierarchy.hpp"
+#include "parameter_ops.hpp"
 #include "mesh/connectivity.hpp"
 #include "range_runner.hpp"
 #include "refinement.hpp"
@@ -92,7 +93,11 @@ class Family {
   // regular patch whose basis is polynomial); false otherwise.
   virtual bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const = 0;
   // The same at a real parameter (a double is an exact binary fraction).
-  virtual bool stencil(std::size_t face, double u, double v, PatchStencil& out) const = 0;
+  bool stencil(std::size_t face, double u, double v, PatchStencil& out) const {
+    const auto fu = exact_fraction(u), fv = exact_fraction(v);
+    if (fu && fv) return stencil(face, ExactParameter{*fu, *fv}, out);
+    return real_stencil(face, u, v, out);
+  }
 
   // The limit point at any parameter (inside domain(face)) from the prepared
   // positions: exact where the tables hold the parameter, directly or after
@@ -121,6 +126,9 @@ class Family {
                       std::array<float, 3>* out) const = 0;
 
  protected:
+  // stencil() at a double that is no fraction of 64-bit integers: the descent in doubles.
+  virtual bool real_stencil(std::size_t face, double u, double v, PatchStencil& out) const = 0;
+
   Refinement refinement_;
   FaceHierarchy hierarchy_;
   Connectivity prepared_;
@@ -142,6 +150,18 @@ bool weights_by_linearity(std::size_t count, const Evaluate& evaluate, std::vect
     if (!a.exact) return false;
     for (std::size_t k = 0; k < 3 && first + k < count; ++k) weights[first + k] = a.point[k];
   }
+  return true;
+}
+
+// The stencil of prepared face `face` whose patch has the control points
+// `points`, by linearity from `evaluate` (above); false when it is not exact.
+template <class Evaluate>
+bool linear_stencil(std::size_t face, const std::vector<int>& points, const Evaluate& evaluate, PatchStencil& out) {
+  if (!weights_by_linearity(points.size(), evaluate, out.computed)) return false;
+  out.face = face;
+  out.points = points.data();
+  out.size = points.size();
+  out.weights = out.computed.data();
   return true;
 }
 

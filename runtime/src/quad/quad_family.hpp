@@ -27,7 +27,7 @@ class QuadFamily final : public Family {
   int refinement_steps() const override { return steps_ + (polygon_step_ ? 1 : 0); }
   FaceDomain domain(std::size_t face) const override;
   bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const override;
-  bool stencil(std::size_t face, double u, double v, PatchStencil& out) const override;
+  using Family::stencil;  // and at a real parameter
   Approximation evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const override;
   Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const override;
   bool hull_bounds() const override;
@@ -72,6 +72,7 @@ class QuadFamily final : public Family {
   // The prepared face holding (u, v) of original face `face`, and the parameter in its patch's own coordinates.
   template <class P>
   std::pair<std::size_t, std::array<P, 2>> patch_parameter(std::size_t face, P u, P v) const;
+  bool real_stencil(std::size_t face, double u, double v, PatchStencil& out) const override;
   template <class P>
   bool descent_stencil(std::size_t face, P u, P v, PatchStencil& out) const;
 };

@@ -149,21 +149,13 @@ bool TriangleFamily::descent_stencil(std::size_t face, P u, P v, PatchStencil& o
     const std::size_t pf = located.first;
     const std::array<P, 2> q = located.second;
     const TrianglePatch& patch = patches_[pf];
-    auto evaluate = [&](std::vector<Point>& unit) { return descent_->evaluate(patch.valence, patch.region, unit, q[0], q[1], 0.0); };
-    if (!weights_by_linearity(patch.points.size(), evaluate, out.computed)) return false;
-    out.face = pf;
-    out.points = patch.points.data();
-    out.size = patch.points.size();
-    out.weights = out.computed.data();
-    return true;
+    return linear_stencil(pf, patch.points, [&](std::vector<Point>& unit) { return descent_->evaluate(patch.valence, patch.region, unit, q[0], q[1], 0.0); }, out);
   } catch (const ParameterOverflow&) {  // beyond 64-bit fractions: no exact row
     return false;
   }
 }
 
-bool TriangleFamily::stencil(std::size_t face, double u, double v, PatchStencil& out) const {
-  const auto fu = exact_fraction(u), fv = exact_fraction(v);
-  if (fu && fv) return stencil(face, ExactParameter{*fu, *fv}, out);
+bool TriangleFamily::real_stencil(std::size_t face, double u, double v, PatchStencil& out) const {
   return descent_stencil(face, u, v, out);
 }
 
