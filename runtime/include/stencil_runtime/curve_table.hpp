@@ -17,7 +17,8 @@ struct CurveFunction {
   std::int64_t first = 0;       // grid index of values[0]
   std::vector<double> values;   // phi(k/n) for k = first, first+1, ...
   double at(std::int64_t k) const {
-    const std::int64_t i = k - first;
+    std::int64_t i = 0;
+    if (__builtin_sub_overflow(k, first, &i)) return 0.0;  // far outside the support, either way
     return (i >= 0 && i < static_cast<std::int64_t>(values.size())) ? values[static_cast<std::size_t>(i)] : 0.0;
   }
 };

@@ -32,6 +32,11 @@ CurveTable load_curve_table(const std::string& path, std::uint64_t expected_hash
     f.placement = static_cast<format::Placement>(placement);
     f.position = r.get<std::int64_t>();
     f.first = r.get<std::int64_t>();
+    // Grid indices of a real table are small (support times rate); far larger
+    // ones would only make index arithmetic overflow.
+    constexpr std::int64_t kMaxIndex = std::int64_t{1} << 40;
+    if (f.position < -kMaxIndex || f.position > kMaxIndex || f.first < -kMaxIndex || f.first > kMaxIndex)
+      r.fail("function " + quoted_excerpt(f.name) + ": position or first grid index outside +-2^40");
     const auto size = r.get<std::uint32_t>();
     if (size > (bytes.size() - r.position()) / 8) r.fail("truncated value block in function " + quoted_excerpt(f.name));
     f.values.resize(size);
@@ -49,7 +54,11 @@ double evaluate_uniform_curve(const CurveTable& table, const std::vector<double>
   if (table.functions.size() != 1) throw EvaluationError("evaluate_uniform_curve needs a uniform (one-function) table");
   const CurveFunction& phi = table.functions.front();
   double sum = 0;
-  for (std::size_t j = 0; j < points.size(); ++j) sum += points[j] * phi.at(k - static_cast<std::int64_t>(j) * table.n);
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    std::int64_t at = 0;
+    if (__builtin_sub_overflow(k, static_cast<std::int64_t>(j) * table.n, &at)) continue;  // beyond every support
+    sum += points[j] * phi.at(at);
+  }
   return sum;
 }
 
