@@ -22,6 +22,19 @@ Q cox_de_boor(const Knot& knot, long i, int p, const Q& t) {
   return value;
 }
 
+// The derivative of order `order` of N_{i,p}(t) (de Boor's formula
+// N'_{i,p} = p/(t_{i+p} - t_i) N_{i,p-1} - p/(t_{i+p+1} - t_{i+1}) N_{i+1,p-1}, applied `order` times).
+template <class Knot>
+Q cox_de_boor_derivative(const Knot& knot, long i, int p, const Q& t, int order) {
+  if (order == 0) return cox_de_boor(knot, i, p, t);
+  if (p == 0) return 0;
+  Q value = 0;
+  const Q d1 = knot(i + p) - knot(i), d2 = knot(i + p + 1) - knot(i + 1);
+  if (d1 != 0) value += Q(p) / d1 * cox_de_boor_derivative(knot, i, p - 1, t, order - 1);
+  if (d2 != 0) value -= Q(p) / d2 * cox_de_boor_derivative(knot, i + 1, p - 1, t, order - 1);
+  return value;
+}
+
 // A sequence p[i] on integers, zero outside the map.
 using Sequence = std::map<long, Q>;
 

@@ -57,7 +57,11 @@ bool verify_file(const std::string& file, const std::string& scheme_spec, const 
     std::size_t values = 0;
     for (const auto& f : curve.functions) values += f.values.size();
     std::cout << file << ": OK (" << curve.scheme << ", n = " << curve.n << ", " << values
-              << " exact values; scaling relations, partition of unity and symmetry hold exactly)\n";
+              << " exact values; scaling relations, partition of unity and symmetry hold exactly"
+              << (curve.derivative_orders == 0 ? std::string(", no derivatives")
+                                               : "; derivatives of order 1" + std::string(curve.derivative_orders > 1 ? " and 2" : "") +
+                                                     ": scaled scaling relations and polynomial moments hold exactly")
+              << ")\n";
   }
   for (const auto& f : failures) std::cout << file << ": FAIL: " << f << "\n";
   return failures.empty();

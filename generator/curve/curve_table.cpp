@@ -2,6 +2,7 @@
 
 #include "base/error.hpp"
 #include "common/hash.hpp"
+#include "curve/difference_scheme.hpp"
 
 namespace sg {
 
@@ -24,13 +25,34 @@ CurveTable make_table(const CurveScheme& scheme, const CurveSolution& solution) 
   t.n = solution.n;
   for (std::size_t h = 0; h < scheme.types.size(); ++h) {
     const ScalingType& type = scheme.types[h];
-    CurveTable::Function f{type.name, type.placement, type.position, type.support_lo, type.support_hi, {}};
+    CurveTable::Function f{type.name, type.placement, type.position, type.support_lo, type.support_hi, {}, {}};
     const TypeValues& tv = solution.types[h];
     for (long k = tv.range.first; k <= tv.range.last; ++k)
       if (tv.at(k) != 0) f.values[k] = tv.at(k);
     t.functions.push_back(std::move(f));
   }
   return t;
+}
+
+void add_derivatives(CurveTable& table, const std::vector<CurveSolution>& psi, const std::string& stop) {
+  if (table.functions.size() != 1 || (!psi.empty() && psi.size() > static_cast<std::size_t>(kMaxDerivativeOrder)))
+    throw Error("derivatives are added to uniform curve tables only, up to order " + std::to_string(kMaxDerivativeOrder));
+  CurveTable::Function& f = table.functions[0];
+  f.derivatives.assign(psi.size(), {});
+  for (std::size_t r = 1; r <= psi.size(); ++r) {
+    const TypeValues& p = psi[r - 1].types.at(0);
+    if (psi[r - 1].n != table.n) throw Error("derivative scheme solved at another rate than the table's");
+    const std::vector<long> w = difference_weights(static_cast<int>(r));
+    // phi^(r)(k/n) = sum_i w_i psi_r(k/n - i): psi_r's grid shifted by i n.
+    const long n = table.n, last_shift = static_cast<long>(r) * n;
+    for (long k = p.range.first; k <= p.range.last + last_shift; ++k) {
+      Rational value = 0;
+      for (std::size_t i = 0; i < w.size(); ++i) value += w[i] * p.at(k - static_cast<long>(i) * n);
+      if (value != 0) f.derivatives[r - 1][k] = value;
+    }
+  }
+  table.derivative_orders = static_cast<int>(psi.size());
+  table.derivatives_stop = stop;
 }
 
 CurveSolution table_to_solution(const CurveTable& table, const CurveScheme& scheme) {

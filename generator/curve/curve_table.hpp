@@ -18,6 +18,8 @@ struct CurveTable {
     long position = 0;
     Rational support_lo, support_hi;
     std::map<long, Rational> values;  // nonzero values only, keyed by k (parameter k/n)
+    // derivatives[r - 1]: the nonzero values of phi^(r) on the grid, r = 1..derivative_orders
+    std::vector<std::map<long, Rational>> derivatives;
   };
   std::string scheme;
   std::string scheme_hash;  // hex of CurveScheme::hash
@@ -25,9 +27,17 @@ struct CurveTable {
   int arity = 2;
   long n = 1;
   std::vector<Function> functions;
+  int derivative_orders = 0;     // how many derivatives every function carries
+  std::string derivatives_stop;  // why there are no more (empty when the generator's maximum was reached)
 };
 
+// The largest derivative order stencilgen writes (curves: second derivatives).
+inline constexpr int kMaxDerivativeOrder = 2;
+
 CurveTable make_table(const CurveScheme& scheme, const CurveSolution& solution);
+// Adds the derivatives of a uniform scheme's table from psi[r - 1], the solution
+// of derivative scheme r (difference_scheme.hpp) at the table's rate.
+void add_derivatives(CurveTable& table, const std::vector<CurveSolution>& psi, const std::string& stop);
 // Back to the dense solution form (for checks), using the scheme's supports.
 CurveSolution table_to_solution(const CurveTable& table, const CurveScheme& scheme);
 

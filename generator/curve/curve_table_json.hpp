@@ -7,7 +7,7 @@
 namespace sg {
 
 inline constexpr const char* kCurveTableFormat = "stencilgen-curve-table";
-inline constexpr int kCurveTableVersion = 1;
+inline constexpr int kCurveTableVersion = 2;  // 2: derivatives
 
 std::string curve_table_to_json(const CurveTable& table);
 // Reads a table back; errors name `origin` (the file) and the JSON path of the

@@ -2,9 +2,80 @@
 
 #include "base/error.hpp"
 #include "common/hash.hpp"
+#include "curve/difference_scheme.hpp"
 #include "curve/partition_of_unity.hpp"
 
 namespace sg {
+
+namespace {
+
+Rational at_grid(const std::map<long, Rational>& m, long k) {
+  const auto it = m.find(k);
+  return it == m.end() ? Rational(0) : it->second;
+}
+
+// Derivative values of a uniform table: no more orders than the scheme has (its
+// difference schemes), zero outside the support, the scaled scaling relation
+//     phi^(r)(k/n) = a^r sum_i s_i phi^(r)((a k - n i)/n)
+// at every grid point, and the moments sum_j j^m phi^(r)(x - j) = r! [m == r]
+// (m = 0..r, the r-th derivative of the reproduced x^m) at every residue.
+void verify_derivatives(const CurveTable& table, const CurveScheme& scheme, std::vector<std::string>& failures) {
+  const int orders = static_cast<int>(derivative_schemes(scheme, kMaxDerivativeOrder).schemes.size());
+  // Fewer orders than the scheme has are allowed (a table made without them, such
+  // as a quad scheme's regular curve); more are not.
+  if (table.derivative_orders > orders) {
+    failures.push_back("the table has " + std::to_string(table.derivative_orders) +
+                       " derivative orders; the scheme has only " + std::to_string(orders));
+    return;
+  }
+  if (table.derivative_orders == 0) return;
+  const ScalingType& type = scheme.types[0];
+  const CurveTable::Function& f = table.functions[0];
+  const long n = table.n, a = scheme.arity;
+  const GridRange g = open_support_grid(type, n);
+  Rational factorial = 1, power = 1;
+  for (int r = 1; r <= table.derivative_orders; ++r) {
+    const auto& d = f.derivatives.at(static_cast<std::size_t>(r - 1));
+    factorial *= r;
+    power *= a;
+    const std::string name = "derivative " + std::to_string(r) + " of '" + type.name + "'";
+    // The closed support: a derivative may be nonzero at its ends.
+    for (const auto& [k, v] : d)
+      if (k < g.first - 1 || k > g.last + 1) {
+        failures.push_back(name + " is nonzero at x = " + to_string(Rational(k, n)) + ", outside the support");
+        return;
+      }
+    for (long k = g.first - n; k <= g.last + n; ++k) {
+      Rational rhs = 0;
+      for (const Term& term : type.terms) rhs += term.coeff * at_grid(d, a * k - n * term.shift);
+      rhs *= power;
+      if (rhs != at_grid(d, k)) {
+        failures.push_back("scaling relation of " + name + " fails at x = " + to_string(Rational(k, n)) + ": value " +
+                           excerpt(to_string(at_grid(d, k))) + ", relation gives " + excerpt(to_string(rhs)));
+        if (failures.size() > 20) return;
+      }
+    }
+    // Control points j with x - j in the support, for x = k0/n in [0, 1).
+    const long j_lo = floor_to_long(-type.support_hi) - 1, j_hi = ceil_to_long(1 - type.support_lo) + 1;
+    for (long k0 = 0; k0 < n; ++k0)
+      for (int m = 0; m <= r; ++m) {
+        Rational sum = 0;
+        for (long j = j_lo; j <= j_hi; ++j) {
+          Rational jm = 1;
+          for (int e = 0; e < m; ++e) jm *= j;
+          sum += jm * at_grid(d, k0 - j * n);
+        }
+        const Rational expected = m == r ? factorial : Rational(0);
+        if (sum != expected) {
+          failures.push_back(name + ": sum_j j^" + std::to_string(m) + " phi^(" + std::to_string(r) + ")(x - j) at x = " +
+                             to_string(Rational(k0, n)) + " is " + excerpt(to_string(sum)) + ", not " + to_string(expected));
+          return;
+        }
+      }
+  }
+}
+
+}  // namespace
 
 std::vector<std::string> verify_curve_table(const CurveTable& table, const CurveScheme& scheme) {
   std::vector<std::string> failures;
@@ -40,6 +111,7 @@ std::vector<std::string> verify_curve_table(const CurveTable& table, const Curve
     }
   }
   if (const auto pou = check_partition_of_unity(scheme, sol)) failures.push_back(*pou);
+  verify_derivatives(table, scheme, failures);
   // A uniform mask symmetric about its centre gives phi symmetric about (l + r) / (2 (a - 1)).
   if (scheme.is_uniform()) {
     const auto& terms = scheme.types[0].terms;

@@ -10,6 +10,7 @@
 #include "curve/curve_table_binary.hpp"
 #include "curve/curve_table_json.hpp"
 #include "curve/curve_table_verify.hpp"
+#include "curve/difference_scheme.hpp"
 #include "curve/eigen_solver.hpp"
 #include "curve/residue_solver.hpp"
 
@@ -20,15 +21,30 @@ std::vector<CurveTable> generate_curve_tables(const CurveScheme& scheme, const s
                                               const std::function<void(const std::string&)>& progress) {
   check_rates(rates, limits::kMaxCurveRate, "the largest rate for curve schemes");
   std::vector<CurveTable> tables(rates.size());
+  const DerivativeSchemes derivatives = derivative_schemes(scheme, kMaxDerivativeOrder);
+  if (progress)
+    progress(scheme.name + ": " +
+             (derivatives.schemes.empty() ? std::string("values only")
+                                          : "values and derivatives of order 1" +
+                                                std::string(derivatives.schemes.size() > 1 ? " and 2" : "")) +
+             (derivatives.stop.empty() ? "" : "; " + derivatives.stop));
   std::mutex report;
   std::size_t done = 0;
+  // One scheme at one rate by the chosen route(s), both compared for exact equality.
+  auto solve = [&](const CurveScheme& s, long n) {
+    CurveSolution sol = routes == RouteChoice::Eigen ? solve_by_eigenvector(s, n) : solve_by_residues(s, n);
+    if (routes == RouteChoice::Both && !(solve_by_eigenvector(s, n) == sol))
+      throw Error("scheme '" + s.name + "', n = " + std::to_string(n) +
+                  ": the residue-class route and the eigenvector route disagree (a generator bug; please report)");
+    return sol;
+  };
   tbb::parallel_for(std::size_t(0), rates.size(), [&](std::size_t i) {
     const long n = rates[i];
-    CurveSolution sol = routes == RouteChoice::Eigen ? solve_by_eigenvector(scheme, n) : solve_by_residues(scheme, n);
-    if (routes == RouteChoice::Both && !(solve_by_eigenvector(scheme, n) == sol))
-      throw Error("scheme '" + scheme.name + "', n = " + std::to_string(n) +
-                  ": the residue-class route and the eigenvector route disagree (a generator bug; please report)");
-    tables[i] = make_table(scheme, sol);
+    tables[i] = make_table(scheme, solve(scheme, n));
+    std::vector<CurveSolution> psi;
+    for (const CurveScheme& d : derivatives.schemes) psi.push_back(solve(d, n));
+    if (scheme.is_uniform()) add_derivatives(tables[i], psi, derivatives.stop);
+    else tables[i].derivatives_stop = derivatives.stop;
     const auto failures = verify_curve_table(tables[i], scheme);
     if (!failures.empty())
       throw Error("scheme '" + scheme.name + "', n = " + std::to_string(n) + ": verification failed: " + failures.front());
