@@ -62,6 +62,19 @@ class BfrLimit {
     return out;
   }
 
+  // The limit point and its partial derivatives d/du, d/dv (Bfr's Evaluate with derivatives).
+  std::array<std::array<double, 3>, 3> derivatives(int face, double u, double v) {
+    osd::Bfr::Surface<double> surface;
+    if (!factory_->InitVertexSurface(face, &surface) || !surface.IsValid())
+      throw std::runtime_error("Bfr has no surface for face " + std::to_string(face));
+    std::vector<double> patch(static_cast<std::size_t>(surface.GetNumPatchPoints()) * 3);
+    surface.PreparePatchPoints(flat_.data(), 3, patch.data(), 3);
+    const double uv[2] = {u, v};
+    std::array<std::array<double, 3>, 3> out{};
+    surface.Evaluate(uv, patch.data(), 3, out[0].data(), out[1].data(), out[2].data());
+    return out;
+  }
+
   // The limit point's weights over the mesh's control vertices (Bfr's
   // EvaluateStencil over the surface's control points, gathered by vertex).
   std::map<int, double> stencil(int face, double u, double v) {
