@@ -11,6 +11,7 @@
 #include "common/table_set_pipeline.hpp"
 #include "curve/curve_table.hpp"
 #include "curve/curve_table_json.hpp"
+#include "curve/difference_scheme.hpp"
 #include "curve/residue_solver.hpp"
 #include "quad/ev_patch_solver.hpp"
 #include "quad/quad_descent.hpp"
@@ -30,8 +31,16 @@ QuadTableSet generate_quad_tables(const QuadScheme& scheme, const std::vector<in
   set.rates = rates;
   set.valences = valences;
   set.regular.resize(rates.size());
-  tbb::parallel_for(std::size_t(0), rates.size(),
-                    [&](std::size_t r) { set.regular[r] = solve_by_residues(scheme.curve, 2 * rates[r]); });
+  set.regular_tables.resize(rates.size());
+  // phi' of the regular curve where it is C1: the regular patch's derivatives (docs/table-format.md).
+  const DerivativeSchemes derivative = derivative_schemes(scheme.curve, 1);
+  tbb::parallel_for(std::size_t(0), rates.size(), [&](std::size_t r) {
+    set.regular[r] = solve_by_residues(scheme.curve, 2 * rates[r]);
+    set.regular_tables[r] = make_table(scheme.curve, set.regular[r]);
+    std::vector<CurveSolution> psi;
+    for (const CurveScheme& d : derivative.schemes) psi.push_back(solve_by_residues(d, 2 * rates[r]));
+    add_derivatives(set.regular_tables[r], psi, derivative.stop);
+  });
 
   set.tables.assign(valences.size(), std::vector<QuadTable>(rates.size()));
   const auto jobs = valence_rate_jobs(valences, rates);
@@ -61,7 +70,7 @@ std::size_t write_quad_tables(const QuadScheme& scheme, const QuadTableSet& set,
   OutputTransaction tx(out_dir / scheme.name);
   for (std::size_t r = 0; r < set.rates.size(); ++r)
     tx.add("regular/n" + std::to_string(2 * set.rates[r]) + ".json",
-           curve_table_to_json(make_table(scheme.curve, set.regular[r])));
+           curve_table_to_json(set.regular_tables[r]));
   add_table_files(tx, set.tables, quad_table_to_json);
   tx.add("descent.json", quad_descent_to_json(scheme, *set.descent));
   std::string binary = quad_tables_to_binary(scheme, set, precision);

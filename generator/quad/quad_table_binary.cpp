@@ -88,6 +88,20 @@ std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& 
     put<std::uint32_t>(out, static_cast<std::uint32_t>(phi.range.size()));
     for (const Rational& x : phi.values) put_scalar(out, to_double(x), precision);
   }
+  // Version 5: phi' of the regular curve per rate, dense from its first nonzero
+  // grid index (count 0 where the curve has no continuous derivative).
+  for (const CurveTable& t : set.regular_tables) {
+    const auto& f = t.functions.at(0);
+    const std::map<long, Rational> none;
+    const auto& d = f.derivatives.empty() ? none : f.derivatives[0];
+    const long first = d.empty() ? 0 : d.begin()->first, last = d.empty() ? -1 : d.rbegin()->first;
+    put<std::int32_t>(out, static_cast<std::int32_t>(first));
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(last - first + 1));
+    for (long k = first; k <= last; ++k) {
+      const auto it = d.find(k);
+      put_scalar(out, it == d.end() ? 0.0 : to_double(it->second), precision);
+    }
+  }
   // Valence 4 is the regular patch, evaluated from the curve values above.
   std::vector<std::size_t> stored;
   for (std::size_t vi = 0; vi < set.valences.size(); ++vi)

@@ -5,6 +5,7 @@
 
 #include "common/table_encoding.hpp"
 #include "curve/curve_solution.hpp"
+#include "curve/curve_table.hpp"
 #include "quad/quad_scheme.hpp"
 #include "quad/quad_table.hpp"
 
@@ -19,6 +20,7 @@ struct QuadTableSet {
   std::shared_ptr<const QuadDescent> descent;
   std::vector<long> rates;
   std::vector<CurveSolution> regular;             // per rate n: the curve on the grid 2n
+  std::vector<CurveTable> regular_tables;         // the same as tables, with phi' where the curve is C1
   std::vector<int> valences;
   std::vector<std::vector<QuadTable>> tables;  // [valence][rate]
 };

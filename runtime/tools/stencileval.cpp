@@ -40,6 +40,29 @@ Evaluation evaluate(const Surface& surface, const Mesh& mesh, std::size_t face, 
   return surface.evaluate(face, u.value, v.value, tolerance);
 }
 
+Derivatives derivatives(const Surface& surface, const Mesh& mesh, std::size_t face, const ParameterText& u,
+                        const ParameterText& v) {
+  if (face >= mesh.face_count())
+    throw EvaluationError("face " + std::to_string(face) + " does not exist (the mesh has " + std::to_string(mesh.face_count()) +
+                          " faces, numbered from 0)");
+  if (u.exact && v.exact) return surface.derivatives(face, ExactParameter{u.fraction, v.fraction});
+  return surface.derivatives(face, u.value, v.value);
+}
+
+// The last line of a query: the point, then du and dv (--derivatives), then the unit normal (--normal).
+std::string result_line(const Derivatives& d, bool with_derivatives, bool with_normal) {
+  std::string out;
+  char text[80];
+  auto put = [&](const Point& p) {
+    std::snprintf(text, sizeof text, "%s%.17g %.17g %.17g", out.empty() ? "" : " ", p[0], p[1], p[2]);
+    out += text;
+  };
+  put(d.point);
+  if (with_derivatives) put(d.du), put(d.dv);
+  if (with_normal) put(d.normal());
+  return out + "\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -55,10 +78,16 @@ int main(int argc, char** argv) {
       "U and V are exact rationals (1/3) or decimals (0.3). Exact where the tables hold the parameter, directly or\n"
       "after the scheme's own subdivision of the patch (most decimals are exact binary fractions and are reached);\n"
       "otherwise within --tolerance times the face's control-point extent, and the line before the point says\n"
-      "how far it may be from the exact one. Prints the point as `x y z` on the last line.\n\n"
+      "how far it may be from the exact one. Prints the point as `x y z` on the last line.\n"
+      "--derivatives adds d/du and d/dv along the face's (u, v), --normal the unit normal (du x dv, outward for\n"
+      "counter-clockwise faces); quad schemes only so far. They are exact to rounding on polynomial schemes\n"
+      "(Catmull-Clark) and, for any scheme, at exact rationals k/n of a stored rate n; at an extraordinary vertex\n"
+      "the surface has no parametric derivative and the query is refused. The last line then holds\n"
+      "`x y z dux duy duz dvx dvy dvz` (and/or `nx ny nz`), the lines before it each vector by name.\n\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --face 0 --uv 1/3,1/2\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --batch queries.txt   (lines: F U V)\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --face 0 --uv 0.3,0.7\n"
+      "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --face 0 --uv 1/3,1/2 --derivatives --normal\n"
       "  stencileval --tables tables/loop --mesh meshes/tri-torus.obj --face 0 --uv 1/3,1/3",
       "stencileval"};
   std::string tables_spec, mesh_path, uv, batch, face_text;
@@ -70,7 +99,11 @@ int main(int argc, char** argv) {
   app.add_option("--tolerance", tolerance,
                  "where the tables do not reach the parameter: largest error as a fraction of the face's control-point "
                  "extent (default 1e-12)");
-  app.add_option("--batch", batch, "file of `F U V` lines; prints one `x y z` line per query");
+  app.add_option("--batch", batch, "file of `F U V` lines; prints one `x y z` line per query (with the columns "
+                                   "--derivatives and --normal add)");
+  bool with_derivatives = false, with_normal = false;
+  app.add_flag("--derivatives", with_derivatives, "also d/du and d/dv (quad schemes)");
+  app.add_flag("--normal", with_normal, "also the unit normal (quad schemes)");
   return stencil_tools::run_tool(app, argc, argv, [&] {
     if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive number");
     if (batch.empty() && (face_text.empty() || uv.empty()))
@@ -93,12 +126,15 @@ int main(int argc, char** argv) {
         if (!(ls >> f) || f[0] == '#') continue;
         try {
           if (!(ls >> u >> v) || (ls >> extra)) throw std::runtime_error("expected `F U V`, got " + stencil_runtime::quoted_excerpt(line));
-          const Point p = evaluate(surface, mesh, stencil_tools::parse_index(f, "face"), stencil_tools::parse_parameter(u),
-                                   stencil_tools::parse_parameter(v), tolerance)
-                              .point;
-          char text[96];
-          std::snprintf(text, sizeof text, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
-          out += text;
+          const std::size_t face = stencil_tools::parse_index(f, "face");
+          const ParameterText pu = stencil_tools::parse_parameter(u), pv = stencil_tools::parse_parameter(v);
+          if (with_derivatives || with_normal) {
+            out += result_line(derivatives(surface, mesh, face, pu, pv), with_derivatives, with_normal);
+          } else {
+            Derivatives d;
+            d.point = evaluate(surface, mesh, face, pu, pv, tolerance).point;
+            out += result_line(d, false, false);
+          }
         } catch (const std::exception& e) {
           throw std::runtime_error(batch + ":" + std::to_string(number) + ": " + e.what());
         }
@@ -108,6 +144,17 @@ int main(int argc, char** argv) {
     }
     const std::size_t face = stencil_tools::parse_index(face_text, "--face");
     const auto [u, v] = stencil_tools::split_pair(uv, "--uv");
+    if (with_derivatives || with_normal) {
+      const Derivatives d = derivatives(surface, mesh, face, stencil_tools::parse_parameter(u), stencil_tools::parse_parameter(v));
+      std::printf("face %zu at (%s): limit point of '%s'%s%s\n", face, uv.c_str(), tables->scheme().c_str(),
+                  with_derivatives ? ", its derivatives d/du and d/dv" : "", with_normal ? ", the unit normal" : "");
+      auto line = [](const char* name, const Point& p) { std::printf("%s %.17g %.17g %.17g\n", name, p[0], p[1], p[2]); };
+      line("point", d.point);
+      if (with_derivatives) line("du", d.du), line("dv", d.dv);
+      if (with_normal) line("normal", d.normal());
+      std::fputs(result_line(d, with_derivatives, with_normal).c_str(), stdout);
+      return 0;
+    }
     const Evaluation e = evaluate(surface, mesh, face, stencil_tools::parse_parameter(u), stencil_tools::parse_parameter(v), tolerance);
     if (e.exact)
       std::printf("face %zu at (%s): limit point of '%s'\n", face, uv.c_str(), tables->scheme().c_str());

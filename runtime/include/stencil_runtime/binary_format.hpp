@@ -26,7 +26,7 @@ namespace stencil_runtime::format {
 
 // Compact binary surface tables (*.sgs): every valence and rate of one quad scheme.
 inline constexpr char kSurfaceMagic[8] = {'S', 'G', 'S', 'U', 'R', 'F', '\0', '\0'};
-inline constexpr std::uint32_t kSurfaceVersion = 4;  // 2: subdivision rules after the hash; 3: polygon rules; 4: scheme name, patch subdivision
+inline constexpr std::uint32_t kSurfaceVersion = 5;  // 2: subdivision rules after the hash; 3: polygon rules; 4: scheme name, patch subdivision; 5: phi' of the regular curve
 
 }  // namespace stencil_runtime::format
 

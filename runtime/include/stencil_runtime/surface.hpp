@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "derivatives.hpp"
 #include "exact_parameter.hpp"
 #include "mesh.hpp"
 #include "surface_topology.hpp"
@@ -60,6 +61,18 @@ class Surface {
   // scheme whose tables give no rigorous bound there (docs/runtime.md).
   Evaluation evaluate(std::size_t face, const ExactParameter& at, double tolerance) const;
   Evaluation evaluate(std::size_t face, double u, double v, double tolerance) const;
+
+  // The limit point and its first partial derivatives along the face's (u, v)
+  // (for an N-gon's sub-faces, along the face's own (u, v): each sub-face's
+  // coordinates are the tile's doubled). Quad schemes only so far. Computed by
+  // the scheme's own subdivision of the patch down to a regular patch: exact
+  // to rounding where that patch is polynomial (Catmull-Clark), and for any
+  // scheme at exact rationals whose descent reaches a stored grid (k/n of a
+  // stored rate n). Throws EvaluationError at an extraordinary vertex (no
+  // parametric derivative there), for a non-polynomial scheme at a parameter
+  // between its grids, and for a face or parameter outside the surface.
+  Derivatives derivatives(std::size_t face, const ExactParameter& at) const;
+  Derivatives derivatives(std::size_t face, double u, double v) const;
 
  private:
   std::shared_ptr<const SurfaceTopology> topology_;

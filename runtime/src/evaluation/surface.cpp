@@ -89,3 +89,36 @@ Evaluation Surface::evaluate(std::size_t face, double u, double v, double tolera
 }
 
 }  // namespace stencil_runtime
+
+namespace stencil_runtime {
+
+namespace {
+
+Derivatives checked(const Derivatives& d) {
+  for (const Point* p : {&d.point, &d.du, &d.dv})
+    for (double x : *p)
+      if (!std::isfinite(x)) throw EvaluationError("the limit point or a derivative is not finite (coordinates too large)");
+  return d;
+}
+
+}  // namespace
+
+Derivatives Surface::derivatives(std::size_t face, const ExactParameter& at) const {
+  check_request(*this, 0);
+  const FaceDomain domain = topology_->domain(face);
+  if (!domain.contains(at))
+    throw EvaluationError("the parameter " + at.str() + " lies outside face " + std::to_string(face) + " (its domain is " +
+                          domain.describe() + ")");
+  return checked(topology_->family().derivatives(face, at, prepared_.data()));
+}
+
+Derivatives Surface::derivatives(std::size_t face, double u, double v) const {
+  check_request(*this, 0);
+  const FaceDomain domain = topology_->domain(face);
+  if (!domain.contains(u, v))
+    throw EvaluationError("the parameter (" + std::to_string(u) + ", " + std::to_string(v) + ") lies outside face " +
+                          std::to_string(face) + " (its domain is " + domain.describe() + ")");
+  return checked(topology_->family().derivatives(face, u, v, prepared_.data()));
+}
+
+}  // namespace stencil_runtime

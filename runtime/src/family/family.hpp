@@ -13,6 +13,7 @@
 #include "mesh/connectivity.hpp"
 #include "range_runner.hpp"
 #include "refinement.hpp"
+#include "stencil_runtime/derivatives.hpp"
 #include "stencil_runtime/exact_parameter.hpp"
 #include "stencil_runtime/face_domain.hpp"
 #include "stencil_runtime/limits.hpp"
@@ -106,6 +107,13 @@ class Family {
   // scheme's tables give no rigorous bound.
   virtual Approximation evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const = 0;
   virtual Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const = 0;
+
+  // The limit point and its derivatives along the original face's (u, v), from
+  // the prepared positions, wherever the family computes them exactly (quads:
+  // quad_family.hpp); throws EvaluationError elsewhere. The default: a family
+  // without derivatives yet.
+  virtual Derivatives derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const;
+  virtual Derivatives derivatives(std::size_t face, double u, double v, const Point* prepared) const;
 
   // Sub-patches (closest points, fitting): the whole patch of a prepared face,
   // its children under one step of the scheme, the limit point at a patch

@@ -171,6 +171,99 @@ Approximation QuadPatchDescent::evaluate(int valence, std::vector<Point>& q, P x
   }
 }
 
+void QuadPatchDescent::polynomial_basis(double t, double* w, double* dw) const {
+  for (int p = 0; p < 4; ++p) {
+    double value = 0, slope = 0;
+    const auto& c = d_.basis[static_cast<std::size_t>(p)];
+    for (int e = d_.degree; e >= 0; --e) {
+      slope = slope * t + value;  // Horner for the value and its derivative together
+      value = value * t + c[static_cast<std::size_t>(e)];
+    }
+    w[p] = value, dw[p] = slope;
+  }
+}
+
+void QuadPatchDescent::regular_basis(const Fraction& t, int n, double* w, double* dw) const {
+  const std::int64_t g = 2 * static_cast<std::int64_t>(n);
+  const std::int64_t a = t.num * (g / t.den);
+  tables_.regular_weights(n, a, w);
+  tables_.regular_derivative_weights(n, a, dw);
+}
+
+namespace {
+
+bool at_origin(const Fraction& x, const Fraction& y) { return x.num == 0 && y.num == 0; }
+bool at_origin(double x, double y) { return x == 0 && y == 0; }
+
+// A stored rate whose grid 1/(2n) holds t (no parity condition: the regular
+// patch's basis is a product of one-dimensional values); 0 when none does.
+int holding_rate(const QuadTables& t, const Fraction& x, const Fraction& y) {
+  for (int rate : t.rates()) {
+    const std::int64_t g = 2 * static_cast<std::int64_t>(rate);
+    if (g % x.den == 0 && g % y.den == 0) return rate;
+  }
+  return 0;
+}
+int holding_rate(const QuadTables&, double, double) { return 0; }
+
+}  // namespace
+
+template <class P>
+PatchDerivatives QuadPatchDescent::derivatives(int valence, std::vector<Point>& q, P x, P y) const {
+  double scale = 1;  // d(child parameter) / d(patch parameter): 2 per halving
+  std::vector<Point> next;
+  for (int level = 0; level <= kMaxLevels; ++level) {
+    if (valence == 4) {
+      double wx[4], wy[4], dx[4], dy[4];
+      if (d_.degree > 0) {
+        polynomial_basis(to_real(x), wx, dx);
+        polynomial_basis(to_real(y), wy, dy);
+      } else {
+        int n = 0;
+        if constexpr (std::is_same_v<P, Fraction>) n = holding_rate(tables_, x, y);
+        if (n == 0)
+          throw EvaluationError("this scheme's regular patches are not polynomial, so derivatives are exact only at parameters "
+                                "whose descent reaches a stored grid (give exact rationals k/n of a stored rate n)");
+        if (!tables_.has_regular_derivatives())
+          throw EvaluationError("these tables hold no derivative of the regular curve (its curve is not C1, or the tables "
+                                "predate derivatives: regenerate them with this stencilgen)");
+        if constexpr (std::is_same_v<P, Fraction>) {
+          regular_basis(x, n, wx, dx);
+          regular_basis(y, n, wy, dy);
+        }
+      }
+      PatchDerivatives out;
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+          const Point& p = q[static_cast<std::size_t>(j * 4 + i)];
+          for (std::size_t c = 0; c < 3; ++c) {
+            out.point[c] += wx[i] * wy[j] * p[c];
+            out.du[c] += scale * dx[i] * wy[j] * p[c];
+            out.dv[c] += scale * wx[i] * dy[j] * p[c];
+          }
+        }
+      return out;
+    }
+    if (at_origin(x, y))
+      throw EvaluationError("the patch has no parametric derivative at its extraordinary vertex (valence " +
+                            std::to_string(valence) + ")");
+    const QuadDescent::Valence& sub = tables_.descent(valence);
+    const bool right = greater(x, 1, 2), top = greater(y, 1, 2);
+    if (!right && !top) {
+      apply(sub.ev_child, q, next);
+      x = scale_minus(x, 2, 0), y = scale_minus(y, 2, 0);
+    } else {
+      const int c = right && !top ? 0 : (!right ? 1 : 2);  // offsets (1,0), (0,1), (1,1)
+      apply(sub.regular_children[c], q, next);
+      x = scale_minus(x, 2, right ? 1 : 0), y = scale_minus(y, 2, top ? 1 : 0);
+      valence = 4;
+    }
+    scale *= 2;
+    q.swap(next);
+  }
+  throw EvaluationError("the parameter is too close to the extraordinary vertex for a derivative in doubles");
+}
+
 void QuadPatchDescent::child(int valence, const std::vector<Point>& q, int cx, int cy, std::vector<Point>& out,
                              int& out_valence) const {
   if (valence == 4) {
@@ -198,5 +291,7 @@ bool QuadPatchDescent::nonnegative() const {
 
 template Approximation QuadPatchDescent::evaluate<Fraction>(int, std::vector<Point>&, Fraction, Fraction, double) const;
 template Approximation QuadPatchDescent::evaluate<double>(int, std::vector<Point>&, double, double, double) const;
+template PatchDerivatives QuadPatchDescent::derivatives<Fraction>(int, std::vector<Point>&, Fraction, Fraction) const;
+template PatchDerivatives QuadPatchDescent::derivatives<double>(int, std::vector<Point>&, double, double) const;
 
 }  // namespace stencil_runtime

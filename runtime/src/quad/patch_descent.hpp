@@ -18,9 +18,13 @@
 #include <vector>
 
 #include "family/family.hpp"
+#include "stencil_runtime/derivatives.hpp"
 #include "tables/quad_tables.hpp"
 
 namespace stencil_runtime {
+
+// A limit point with its partial derivatives along the patch's two parameters.
+using PatchDerivatives = Derivatives;
 
 class QuadPatchDescent {
  public:
@@ -32,6 +36,20 @@ class QuadPatchDescent {
   template <class P>
   Approximation evaluate(int valence, std::vector<Point>& points, P x, P y, double tolerance) const;
 
+  // The limit point and its partial derivatives in the patch's own (x, y), at
+  // any parameter but the extraordinary vertex (0, 0) of a patch of valence
+  // other than 4, where the patch has no parametric derivative. The control
+  // points descend (consumed) as in evaluate() but on into a regular patch,
+  // each halving doubling the derivatives (no derivative stencils of the
+  // extraordinary patch are stored); there the derivatives come from the
+  // polynomial basis (Catmull-Clark: exact to rounding) or from the stored
+  // phi and phi' where a rate's grid 1/(2n) holds both coordinates. Throws
+  // EvaluationError at the vertex, and where neither holds (a non-polynomial
+  // regular patch at a parameter between the stored grids, or tables
+  // without phi': a curve that is not C1).
+  template <class P>
+  PatchDerivatives derivatives(int valence, std::vector<Point>& points, P x, P y) const;
+
   // The child in quadrant (cx, cy) of a patch of kind `valence` (4: regular):
   // for an extraordinary patch quadrant (0,0) is the extraordinary child (A0),
   // the others its regular children; a regular patch's quadrants are regular.
@@ -42,6 +60,11 @@ class QuadPatchDescent {
  private:
   Approximation regular_bound(const std::vector<Point>& q, double x, double y) const;
   Point polynomial(const std::vector<Point>& q, double x, double y) const;
+  // The regular patch's basis along one axis at t, and its derivative: from the
+  // polynomial pieces, or from the stored phi and phi' of a rate whose grid
+  // holds t (a rate n with t on 1/(2n)).
+  void regular_basis(const Fraction& t, int n, double* w, double* dw) const;
+  void polynomial_basis(double t, double* w, double* dw) const;
   void regular_child(std::vector<Point>& q, int cx, int cy) const;
 
   const QuadTables& tables_;

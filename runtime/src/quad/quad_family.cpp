@@ -144,20 +144,52 @@ std::string QuadFamily::preparation() const {
 
 FaceDomain QuadFamily::domain(std::size_t face) const { return FaceDomain::of(SchemeFamily::Quad, original_sizes_[face]); }
 
+namespace {
+
+// J <- L J for the linear part L = [[a, b], [c, d]] of one step.
+void compose(std::array<double, 4>* j, double a, double b, double c, double d) {
+  if (!j) return;
+  const std::array<double, 4> m = *j;
+  *j = {a * m[0] + b * m[2], a * m[1] + b * m[3], c * m[0] + d * m[2], c * m[1] + d * m[3]};
+}
+
+// The linear part of quadrant()'s child c (child coordinates in the parent's) and of a patch rotation r.
+void compose_quadrant(std::array<double, 4>* j, int c) {
+  switch (c) {
+    case 0: compose(j, 2, 0, 0, 2); break;    // (2u, 2v)
+    case 1: compose(j, 0, 2, -2, 0); break;   // (2v, 2 - 2u)
+    case 2: compose(j, -2, 0, 0, -2); break;  // (2 - 2u, 2 - 2v)
+    default: compose(j, 0, -2, 2, 0); break;  // (2 - 2v, 2u)
+  }
+}
+void compose_rotation(std::array<double, 4>* j, int r) {
+  switch (r) {
+    case 0: break;
+    case 1: compose(j, 0, 1, -1, 0); break;   // (v, 1 - u)
+    case 2: compose(j, -1, 0, 0, -1); break;  // (1 - u, 1 - v)
+    default: compose(j, 0, -1, 1, 0); break;  // (1 - v, u)
+  }
+}
+
+}  // namespace
+
 template <class P>
-std::pair<std::size_t, std::array<P, 2>> QuadFamily::locate_any(std::size_t face, P u, P v) const {
+std::pair<std::size_t, std::array<P, 2>> QuadFamily::locate_any(std::size_t face, P u, P v, Jacobian* jacobian) const {
   std::array<P, 2> p{u, v};
+  if (jacobian) *jacobian = {1, 0, 0, 1};
   for (std::size_t level = 0; level < hierarchy_.levels.size(); ++level) {
     const std::size_t first = hierarchy_.levels[level].child_offsets[face];
     if (level == 0 && polygon_step_ && original_sizes_[face] != 4) {
       std::array<P, 2> local;
       face = first + static_cast<std::size_t>(subface(domain(face), p[0], p[1], local));
       p = local;
+      compose(jacobian, 2, 0, 0, 2);  // the tile, doubled
       continue;
     }
     const auto [c, child] = quadrant(p[0], p[1]);
     face = first + static_cast<std::size_t>(c);
     p = child;
+    compose_quadrant(jacobian, c);
   }
   return {face, p};
 }
@@ -172,8 +204,9 @@ std::pair<std::size_t, std::array<double, 2>> QuadFamily::locate(std::size_t fac
 }
 
 template <class P>
-std::pair<std::size_t, std::array<P, 2>> QuadFamily::patch_parameter(std::size_t face, P u, P v) const {
-  const auto [pf, p] = locate_any(face, u, v);
+std::pair<std::size_t, std::array<P, 2>> QuadFamily::patch_parameter(std::size_t face, P u, P v, Jacobian* jacobian) const {
+  const auto [pf, p] = locate_any(face, u, v, jacobian);
+  compose_rotation(jacobian, patches_[pf].rotation);
   // Into the patch's own coordinates (the extraordinary vertex at (0, 0)).
   std::array<P, 2> q;
   switch (patches_[pf].rotation) {
@@ -302,6 +335,39 @@ Approximation QuadFamily::evaluate(std::size_t face, double u, double v, double 
   const auto fu = exact_fraction(u), fv = exact_fraction(v);
   if (fu && fv) return descend(face, *fu, *fv, tolerance, prepared);
   return descend(face, u, v, tolerance, prepared);
+}
+
+template <class P>
+Derivatives QuadFamily::derivatives_any(std::size_t face, P u, P v, const Point* prepared) const {
+  const QuadPatchDescent& descent = checked_descent();
+  Jacobian j{};
+  const auto located = patch_parameter(face, u, v, &j);
+  const QuadPatch& patch = patches_[located.first];
+  std::vector<Point> points(patch.points.size());
+  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
+  const Derivatives d = descent.derivatives(patch.valence, points, located.second[0], located.second[1]);
+  // Chain rule: d/du = f_x dx/du + f_y dy/du, d/dv likewise.
+  Derivatives out;
+  out.point = d.point;
+  for (std::size_t c = 0; c < 3; ++c) {
+    out.du[c] = d.du[c] * j[0] + d.dv[c] * j[2];
+    out.dv[c] = d.du[c] * j[1] + d.dv[c] * j[3];
+  }
+  return out;
+}
+
+Derivatives QuadFamily::derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const {
+  try {
+    return derivatives_any(face, at.u, at.v, prepared);
+  } catch (const ParameterOverflow&) {
+    throw EvaluationError("the parameter " + at.str() + " needs fractions beyond 64 bits on the way to a regular patch");
+  }
+}
+
+Derivatives QuadFamily::derivatives(std::size_t face, double u, double v, const Point* prepared) const {
+  const auto fu = exact_fraction(u), fv = exact_fraction(v);
+  if (fu && fv) return derivatives(face, ExactParameter{*fu, *fv}, prepared);
+  return derivatives_any(face, u, v, prepared);
 }
 
 bool QuadFamily::stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const {

@@ -30,6 +30,8 @@ class QuadFamily final : public Family {
   using Family::stencil;  // and at a real parameter
   Approximation evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const override;
   Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const override;
+  Derivatives derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
+  Derivatives derivatives(std::size_t face, double u, double v, const Point* prepared) const override;
   bool hull_bounds() const override;
   void root(std::size_t prepared_face, const Point* prepared, SubPatch& out) const override;
   int split(const SubPatch& in, SubPatch* children) const override;
@@ -65,13 +67,18 @@ class QuadFamily final : public Family {
   std::unique_ptr<const QuadPatchDescent> descent_;  // null for tables without the patch subdivision
 
   const QuadPatchDescent& checked_descent() const;  // throws EvaluationError without descent data
+  // d(patch x, y)/d(u, v), row-major: the product of every step's linear part
+  // (2 per level, and the quadrant's or the patch's rotation).
+  using Jacobian = std::array<double, 4>;
   template <class P>
-  std::pair<std::size_t, std::array<P, 2>> locate_any(std::size_t face, P u, P v) const;
+  std::pair<std::size_t, std::array<P, 2>> locate_any(std::size_t face, P u, P v, Jacobian* jacobian = nullptr) const;
+  template <class P>
+  Derivatives derivatives_any(std::size_t face, P u, P v, const Point* prepared) const;
   template <class P>
   Approximation descend(std::size_t face, P u, P v, double tolerance, const Point* prepared) const;
   // The prepared face holding (u, v) of original face `face`, and the parameter in its patch's own coordinates.
   template <class P>
-  std::pair<std::size_t, std::array<P, 2>> patch_parameter(std::size_t face, P u, P v) const;
+  std::pair<std::size_t, std::array<P, 2>> patch_parameter(std::size_t face, P u, P v, Jacobian* jacobian = nullptr) const;
   bool real_stencil(std::size_t face, double u, double v, PatchStencil& out) const override;
   template <class P>
   bool descent_stencil(std::size_t face, P u, P v, PatchStencil& out) const;

@@ -122,6 +122,11 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
     const auto count = r.get<std::uint32_t>();
     t.regular_.push_back(read_scalars(r, count, scalar, left()));
   }
+  for (std::uint32_t k = 0; k < rate_count; ++k) {  // version 5: phi' (count 0: no derivative)
+    t.regular_derivative_first_.push_back(r.get<std::int32_t>());
+    const auto count = r.get<std::uint32_t>();
+    t.regular_derivative_.push_back(read_scalars(r, count, scalar, left()));
+  }
   const auto valence_count = r.get<std::uint32_t>();
   if (valence_count > left() / 12) r.fail("truncated valence list");
   for (std::uint32_t k = 0; k < valence_count; ++k) {
@@ -180,6 +185,21 @@ void QuadTables::validate(const std::string& origin) {
     if (regular_[k].size() > static_cast<std::size_t>(4 * g + 1) || regular_first_[k] < -2 * g || regular_first_[k] > 2 * g)
       fail("regular patch values of rate " + std::to_string(rates_[k]) + " reach beyond the support [-2, 2]");
     if (!finite(regular_[k])) fail("a regular patch value is not finite");
+  }
+  // phi' of the regular curve: for every rate or for none (a curve that is not C1).
+  if (!regular_derivative_.empty()) {
+    if (regular_derivative_.size() != rates_.size() || regular_derivative_first_.size() != rates_.size())
+      fail("regular curve derivatives missing for some rate");
+    const bool none = regular_derivative_[0].empty();
+    for (std::size_t k = 0; k < rates_.size(); ++k) {
+      const std::int64_t g = 2 * static_cast<std::int64_t>(rates_[k]);
+      if (regular_derivative_[k].empty() != none) fail("regular curve derivatives present for some rates only");
+      if (regular_derivative_[k].size() > static_cast<std::size_t>(4 * g + 1) || regular_derivative_first_[k] < -2 * g ||
+          regular_derivative_first_[k] > 2 * g)
+        fail("regular curve derivatives of rate " + std::to_string(rates_[k]) + " reach beyond the support [-2, 2]");
+      if (!finite(regular_derivative_[k])) fail("a regular curve derivative is not finite");
+    }
+    if (none) regular_derivative_.clear(), regular_derivative_first_.clear();
   }
   auto check_rules = [&](const std::vector<VertexRule>& rules, const char* what) {
     for (std::size_t k = 0; k < rules.size(); ++k) {
@@ -320,6 +340,18 @@ void QuadTables::regular_weights_at(int slot, long a, double* w4) const {
   for (int p = -1; p <= 2; ++p) {
     const std::int64_t idx = a - 2L * rates_[static_cast<std::size_t>(slot)] * p - first;
     w4[p + 1] = idx >= 0 && idx < static_cast<std::int64_t>(phi.size()) ? phi[static_cast<std::size_t>(idx)] : 0.0;
+  }
+}
+
+void QuadTables::regular_derivative_weights(int n, long a, double* w4) const {
+  const int slot = checked_slot(n);
+  if (!has_regular_derivatives()) throw EvaluationError("these tables hold no derivative of the regular curve");
+  if (a < 0 || a > 2L * n) throw EvaluationError("regular weight index outside 0..2n");
+  const auto& d = regular_derivative_[static_cast<std::size_t>(slot)];
+  const std::int64_t first = regular_derivative_first_[static_cast<std::size_t>(slot)];
+  for (int p = -1; p <= 2; ++p) {
+    const std::int64_t idx = a - 2L * n * p - first;
+    w4[p + 1] = idx >= 0 && idx < static_cast<std::int64_t>(d.size()) ? d[static_cast<std::size_t>(idx)] : 0.0;
   }
 }
 

@@ -101,6 +101,11 @@ class QuadTables {
   // (a/(2n), b/(2n)) is w(a)[p+1] * w(b)[q+1], with w(a) the four values
   // phi(a/(2n) - p), p = -1..2, written here (0 <= a <= 2n).
   void regular_weights(int n, long a, double* w4) const;
+  // The same for phi' (the regular curve's derivative, version 5 tables and
+  // JSON tables from this stencilgen): phi'(a/(2n) - p), p = -1..2. Throws
+  // EvaluationError where the tables hold none (a curve that is not C1).
+  bool has_regular_derivatives() const { return !regular_derivative_.empty(); }
+  void regular_derivative_weights(int n, long a, double* w4) const;
 
  private:
   struct Valence {
@@ -133,6 +138,8 @@ class QuadTables {
   std::vector<int> slot_of_rate_;  // rate -> slot, -1 when absent
   std::vector<std::vector<double>> regular_;  // per rate slot: phi(k/(2n)) for k = regular_first_ + ...
   std::vector<std::int64_t> regular_first_;
+  std::vector<std::vector<double>> regular_derivative_;  // per rate slot: phi'(k/(2n)), empty when none
+  std::vector<std::int64_t> regular_derivative_first_;
   std::vector<Valence> valences_;
   bool has_descent_ = false;
   QuadDescent descent_;

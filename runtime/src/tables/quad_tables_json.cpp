@@ -186,27 +186,44 @@ QuadTables QuadTables::load_json_directory(const std::string& dir, std::uint64_t
     const JsonFile f(path.string());
     const json& functions = f.array(f.member(f.root(), "functions", ""), "functions");
     if (functions.size() != 1) f.fail("functions", "expected one function (the regular curve's scaling function)");
-    const json& values = f.member(functions[0], "values", "functions[0]");
-    if (!values.is_object()) f.fail("functions[0].values", "expected an object");
     const std::int64_t g = 2 * static_cast<std::int64_t>(n);
-    std::map<std::int64_t, double> grid;
-    for (const auto& [key, value] : values.items()) {
-      const std::string field = "functions[0].values[\"" + key + "\"]";
-      const auto slash = key.find('/');
-      std::int64_t p = 0, q = 1;
-      if (!detail::parse_int64(std::string_view(key).substr(0, slash), p) ||
-          (slash != std::string::npos && !detail::parse_int64(std::string_view(key).substr(slash + 1), q)) || q <= 0)
-        f.fail(field, "the key is not a parameter p/q with q > 0");
-      // p/q on the grid 1/g within [-2, 2]: |p| <= 2q and q | p g.
-      if (p < -2 * q || p > 2 * q || q > g * 1000000 || (p * g) % q != 0)
-        f.fail(field, "the key is not a grid point k/" + std::to_string(g) + " within the support [-2, 2]");
-      grid[p * g / q] = detail::parse_exact_rational(f.string(value, field), f, field);
-    }
-    const std::int64_t lo = grid.empty() ? 0 : grid.begin()->first, hi = grid.empty() ? -1 : grid.rbegin()->first;
-    std::vector<double> dense(static_cast<std::size_t>(hi - lo + 1), 0.0);
-    for (const auto& [k, x] : grid) dense[static_cast<std::size_t>(k - lo)] = x;
-    t.regular_first_.push_back(lo);
+    // A map from grid parameter p/q to exact value, dense from its first key.
+    auto read_grid = [&](const json& values, const std::string& where, std::vector<double>& dense, std::int64_t& first) {
+      if (!values.is_object()) f.fail(where, "expected an object");
+      std::map<std::int64_t, double> grid;
+      for (const auto& [key, value] : values.items()) {
+        const std::string field = where + "[\"" + key + "\"]";
+        const auto slash = key.find('/');
+        std::int64_t p = 0, q = 1;
+        if (!detail::parse_int64(std::string_view(key).substr(0, slash), p) ||
+            (slash != std::string::npos && !detail::parse_int64(std::string_view(key).substr(slash + 1), q)) || q <= 0)
+          f.fail(field, "the key is not a parameter p/q with q > 0");
+        // p/q on the grid 1/g within [-2, 2]: |p| <= 2q and q | p g.
+        if (p < -2 * q || p > 2 * q || q > g * 1000000 || (p * g) % q != 0)
+          f.fail(field, "the key is not a grid point k/" + std::to_string(g) + " within the support [-2, 2]");
+        grid[p * g / q] = detail::parse_exact_rational(f.string(value, field), f, field);
+      }
+      const std::int64_t lo = grid.empty() ? 0 : grid.begin()->first, hi = grid.empty() ? -1 : grid.rbegin()->first;
+      dense.assign(static_cast<std::size_t>(hi - lo + 1), 0.0);
+      for (const auto& [k, x] : grid) dense[static_cast<std::size_t>(k - lo)] = x;
+      first = lo;
+    };
+    std::vector<double> dense;
+    std::int64_t first = 0;
+    read_grid(f.member(functions[0], "values", "functions[0]"), "functions[0].values", dense, first);
+    t.regular_first_.push_back(first);
     t.regular_.push_back(std::move(dense));
+    // phi' (curve tables of version 2 whose curve is C1): all rates or none.
+    dense.clear();
+    first = 0;
+    if (functions[0].contains("derivatives")) {
+      const json& derivatives = f.array(functions[0]["derivatives"], "functions[0].derivatives");
+      if (!derivatives.empty())
+        read_grid(f.member(derivatives[0], "values", "functions[0].derivatives[0]"), "functions[0].derivatives[0].values",
+                  dense, first);
+    }
+    t.regular_derivative_first_.push_back(first);
+    t.regular_derivative_.push_back(std::move(dense));
   }
   // The patch subdivision, for evaluation at any parameter (absent in tables from older stencilgens).
   const fs::path descent = fs::path(dir) / "descent.json";

@@ -1,0 +1,216 @@
+// Derivatives through the runtime (Surface::derivatives): the descent into a
+// regular patch and the chain rule through isolation steps, patch rotations and
+// the polygon step's sub-faces, against independent references: OpenSubdiv
+// Bfr's derivatives of the Catmull-Clark limit surface on every bundled mesh
+// and on a mesh with triangles; for nonpoly, agreement of the unit normals of
+// the two faces at every edge, and central difference quotients of exact
+// limit points converging to du and dv.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+#include "bfr_reference.hpp"
+#include "cli.hpp"
+#include "mesh/uniform_topology.hpp"
+#include "runtime_api.hpp"
+#include "runtime_checks.hpp"
+
+using namespace stencil_runtime;
+using namespace test_runtime;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
+const char* kBundled[] = {"cube", "torus-3-5", "chess-piece", "bumpy-sphere"};
+
+fs::path tables_for(const std::string& scheme) { return generated_table(scheme, "--valence 3-8 --n 24", "sgs"); }
+
+Mesh load(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
+
+// A closed triangular prism: two triangles and three quads (as in test_runtime.cpp).
+Mesh prism() {
+  Mesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0.3, 0.9, 0}, {0, 0, 1.2}, {1, 0, 1.1}, {0.4, 1, 1.3}};
+  m.face_sizes = {3, 3, 4, 4, 4};
+  m.face_vertices = {0, 2, 1, 3, 4, 5, 0, 1, 4, 3, 1, 2, 5, 4, 2, 0, 3, 5};
+  return m;
+}
+
+std::vector<int> valences(const Mesh& m) {
+  std::vector<int> v(m.vertex_count(), 0);
+  for (int x : m.face_vertices) ++v[static_cast<std::size_t>(x)];
+  return v;
+}
+
+// The first vertex of each face in face_vertices.
+std::vector<std::size_t> face_starts(const Mesh& m) {
+  std::vector<std::size_t> s(m.face_count() + 1, 0);
+  for (std::size_t f = 0; f < m.face_count(); ++f) s[f + 1] = s[f] + static_cast<std::size_t>(m.face_sizes[f]);
+  return s;
+}
+
+// Parameters of a face's domain to test: the grid (i/n, j/n) of a quad, the
+// same grid in every tile of an N-gon (tiles at (s % U, s / U), half a unit wide).
+std::vector<ExactParameter> grid_parameters(const FaceDomain& d, long n) {
+  std::vector<ExactParameter> out;
+  const int tiles = d.kind == FaceDomain::Kind::Quad ? 1 : d.corners;
+  for (int s = 0; s < tiles; ++s)
+    for (long j = 0; j <= n; ++j)
+      for (long i = 0; i <= n; ++i) {
+        if (tiles == 1) out.push_back(grid(i, j, n));
+        else
+          out.push_back({add(Fraction{s % d.u_tiles, 1}, Fraction::make(i, 2 * n)),
+                         add(Fraction{s / d.u_tiles, 1}, Fraction::make(j, 2 * n))});
+      }
+  return out;
+}
+
+// Whether (u, v) is corner c of a quad face whose vertex is extraordinary (no parametric derivative there).
+bool at_extraordinary_corner(const Mesh& m, const std::vector<int>& valence, const std::vector<std::size_t>& start,
+                             std::size_t f, const ExactParameter& at) {
+  const Fraction zero{0, 1}, one{1, 1};
+  if (m.face_sizes[f] != 4) {  // sub-face s: (0, 0) is the face's corner s, (1, 1) its centre (a vertex of valence N)
+    ExactParameter local;
+    const int s = FaceDomain::of(SchemeFamily::Quad, m.face_sizes[f]).subface(at, local);
+    if (local.u == one && local.v == one) return true;
+    return local.u == zero && local.v == zero &&
+           valence[static_cast<std::size_t>(m.face_vertices[start[f] + static_cast<std::size_t>(s)])] != 4;
+  }
+  int corner = -1;
+  if (at.u == zero && at.v == zero) corner = 0;
+  if (at.u == one && at.v == zero) corner = 1;
+  if (at.u == one && at.v == one) corner = 2;
+  if (at.u == zero && at.v == one) corner = 3;
+  return corner >= 0 && valence[static_cast<std::size_t>(m.face_vertices[start[f] + static_cast<std::size_t>(corner)])] != 4;
+}
+
+void check_against_bfr(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, const std::string& name, std::size_t stride) {
+  const Surface surface = surface_of(tables, mesh);
+  bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices);
+  const double size = extent(mesh);
+  const auto valence = valences(mesh);
+  const auto start = face_starts(mesh);
+  std::mt19937 rng(20261124u);
+  double worst = 0;
+  std::size_t refused = 0;
+  for (std::size_t f = 0; f < mesh.face_count(); f += stride) {
+    const FaceDomain domain = surface.topology().domain(f);
+    std::vector<ExactParameter> at;
+    for (long n : {1L, 2L, 3L, 5L})
+      for (const auto& p : grid_parameters(domain, n)) at.push_back(p);
+    for (const ExactParameter& p : at) {
+      INFO(name << " face " << f << " at " << p.str());
+      if (at_extraordinary_corner(mesh, valence, start, f, p)) {
+        REQUIRE_THROWS_WITH(surface.derivatives(f, p), Catch::Contains("extraordinary vertex"));
+        ++refused;
+        continue;
+      }
+      const Derivatives ours = surface.derivatives(f, p);
+      const auto ref = reference.derivatives(static_cast<int>(f), p.u.to_double(), p.v.to_double());
+      const double e = std::max({distance(ours.point, ref[0]), distance(ours.du, ref[1]), distance(ours.dv, ref[2])}) / size;
+      worst = std::max(worst, e);
+      REQUIRE(e < 1e-10);
+    }
+    if (domain.kind == FaceDomain::Kind::Quad)
+      for (int k = 0; k < 3; ++k) {  // real parameters: Catmull-Clark's regular patches are polynomial
+        const double u = std::uniform_real_distribution<double>(0.01, 0.99)(rng), v = std::uniform_real_distribution<double>(0.01, 0.99)(rng);
+        INFO(name << " face " << f << " at (" << u << ", " << v << ")");
+        const Derivatives ours = surface.derivatives(f, u, v);
+        const auto ref = reference.derivatives(static_cast<int>(f), u, v);
+        const double e = std::max({distance(ours.point, ref[0]), distance(ours.du, ref[1]), distance(ours.dv, ref[2])}) / size;
+        worst = std::max(worst, e);
+        REQUIRE(e < 1e-10);
+      }
+  }
+  CHECK(refused > 0);
+  WARN(name << ": largest difference to Bfr's point and derivatives, over the mesh size: " << worst);
+}
+
+}  // namespace
+
+TEST_CASE("Catmull-Clark derivatives through the runtime equal OpenSubdiv's on every bundled mesh", "[runtime][derivatives][opensubdiv]") {
+  const auto tables = Tables::load(tables_for("catmull-clark").string());
+  for (const char* name : kBundled) {
+    const Mesh mesh = load(name);
+    check_against_bfr(tables, mesh, name, mesh.face_count() > 100 ? 7 : 1);
+  }
+  check_against_bfr(tables, prism(), "prism", 1);  // the polygon step's sub-faces
+}
+
+TEST_CASE("nonpoly unit normals agree on both sides of every edge of the bundled meshes", "[runtime][derivatives]") {
+  const auto tables = Tables::load(tables_for("nonpoly").string());
+  for (const char* name : kBundled) {
+    const Mesh mesh = load(name);
+    const Surface surface = surface_of(tables, mesh);
+    const QuadTopology topo(Connectivity{mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices});
+    const auto valence = valences(mesh);
+    const long n = 6;
+    auto on_edge = [&](std::size_t f, int c, long t) {  // edge c -> c+1 of face f at t/n from corner c
+      const long u[4] = {t, n, n - t, 0}, v[4] = {0, t, n, n - t};
+      return surface.derivatives(f, grid(u[c & 3], v[c & 3], n));
+    };
+    double worst = 0;
+    for (std::uint32_t h = 0; h < 4 * topo.faces(); ++h) {
+      const std::uint32_t o = topo.twin(h);
+      const std::size_t f = QuadTopology::face_of(h), g = QuadTopology::face_of(o);
+      const int from = mesh.face_vertices[4 * f + static_cast<std::size_t>(QuadTopology::corner_of(h))];
+      const int to = mesh.face_vertices[4 * f + static_cast<std::size_t>((QuadTopology::corner_of(h) + 1) % 4)];
+      for (long t = 0; t <= n; ++t) {
+        if ((t == 0 && valence[static_cast<std::size_t>(from)] != 4) || (t == n && valence[static_cast<std::size_t>(to)] != 4)) continue;
+        const Derivatives a = on_edge(f, QuadTopology::corner_of(h), t), b = on_edge(g, QuadTopology::corner_of(o), n - t);
+        INFO(name << " half-edge " << h << " t = " << t << "/" << n);
+        REQUIRE(distance(a.point, b.point) < 1e-12 * extent(mesh));
+        const double e = distance(a.normal(), b.normal());
+        worst = std::max(worst, e);
+        REQUIRE(e < 1e-12);
+      }
+    }
+    WARN(name << ": largest difference of the two faces' unit normals on an edge: " << worst);
+  }
+}
+
+TEST_CASE("nonpoly du and dv are the limits of difference quotients of exact limit points", "[runtime][derivatives]") {
+  // (P(u + h) - P(u - h)) / 2h at exact parameters (u = 1/3 + h is reached exactly by the descent),
+  // h = 2^-8, 2^-12, 2^-16: the error to du must shrink, and end small.
+  const auto tables = Tables::load(tables_for("nonpoly").string());
+  for (const auto& [name, mesh] : {std::pair<std::string, Mesh>{"cube", load("cube")}, {"chess-piece", load("chess-piece")},
+                                   {"prism", prism()}}) {
+    const Surface surface = surface_of(tables, mesh);
+    const double size = extent(mesh);
+    for (std::size_t f = 0; f < mesh.face_count(); f += mesh.face_count() > 100 ? 37 : 1) {
+      const FaceDomain domain = surface.topology().domain(f);
+      const Fraction u0 = Fraction::make(1, 3), v0 = domain.kind == FaceDomain::Kind::Quad ? Fraction::make(2, 3) : Fraction::make(1, 6);
+      const Derivatives d = surface.derivatives(f, ExactParameter{u0, v0});
+      std::vector<double> errors;
+      for (int bits : {8, 12, 16}) {
+        const Fraction h = Fraction::make(1, std::int64_t{1} << bits);
+        const double inv = static_cast<double>(std::int64_t{1} << bits) / 2;
+        auto quotient = [&](const ExactParameter& plus, const ExactParameter& minus) {
+          const Point a = surface.evaluate(f, plus), b = surface.evaluate(f, minus);
+          return Point{(a[0] - b[0]) * inv, (a[1] - b[1]) * inv, (a[2] - b[2]) * inv};
+        };
+        const Point qu = quotient({add(u0, h), v0}, {subtract(u0, h), v0});
+        const Point qv = quotient({u0, add(v0, h)}, {u0, subtract(v0, h)});
+        errors.push_back(std::max(distance(qu, d.du), distance(qv, d.dv)) / size);
+      }
+      INFO(name << " face " << f << ": errors " << errors[0] << " " << errors[1] << " " << errors[2]);
+      REQUIRE(errors[1] < errors[0]);
+      REQUIRE(errors[2] < errors[1]);
+      REQUIRE(errors[2] < 1e-3);
+    }
+  }
+}
+
+TEST_CASE("derivatives are refused where they do not exist or are not exact, with a reason", "[runtime][derivatives][errors]") {
+  const auto nonpoly = Tables::load(tables_for("nonpoly").string());
+  const Mesh cube = load("cube");
+  const Surface surface = surface_of(nonpoly, cube);
+  CHECK_THROWS_WITH(surface.derivatives(0, grid(0, 0, 1)), Catch::Contains("extraordinary vertex"));
+  CHECK_THROWS_WITH(surface.derivatives(0, 0.3, 0.7), Catch::Contains("not polynomial"));
+  CHECK_THROWS_WITH(surface.derivatives(0, grid(1, 2, 1)), Catch::Contains("outside face"));
+  const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4", "sgt").string());
+  const Surface ico = surface_of(loop, load("icosahedron"));
+  CHECK_THROWS_WITH(ico.derivatives(0, grid(1, 1, 3)), Catch::Contains("not yet for triangle schemes"));
+}
