@@ -81,6 +81,19 @@ void use_surface(const std::shared_ptr<const rt::Tables>& tables, const rt::Mesh
         } catch (const rt::EvaluationError&) {
         }
       }
+    // Derivatives: the descent on to a regular patch (through the tables' phi'
+    // at exact grid parameters); refusals (the vertex, a triangle scheme,
+    // tables without phi') are EvaluationErrors.
+    for (std::size_t f = 0; f < faces; ++f)
+      for (const auto& [u, v] : {std::pair{1.0 / 3, 0.5}, std::pair{0.25, 0.0}, std::pair{0.3, 0.2}}) {
+        if (!budget.take(2000)) return;
+        try {
+          surface.derivatives(f, u, v);
+          const int n = tables->rates().back();
+          surface.derivatives(f, rt::ExactParameter{{1, n}, {n - 1 > 0 ? n - 1 : 1, n}});
+        } catch (const rt::EvaluationError&) {
+        }
+      }
   } catch (const rt::MeshError&) {
   }
 }
