@@ -84,3 +84,27 @@ inline std::string tessellation_defect(const stencil_runtime::PolygonSoup& soup,
   if (distinct.size() != soup.positions.size()) return "repeated points";
   return "";
 }
+
+// Where tessellation point k lies on a quad mesh prepared by one isolation step
+// with every prepared face at rate n: the centre (i, j) of child c of original
+// face F, as F's parameter (u/(4n), v/(4n)). Children follow the runtime's
+// quadrant order (child c's u axis along the parent's edge c -> c+1).
+struct TessellationParameter {
+  std::size_t face;
+  long u, v, denominator;
+};
+inline TessellationParameter tessellation_parameter(std::size_t k, long n) {
+  const std::size_t face = k / static_cast<std::size_t>(n * n), cell = k % static_cast<std::size_t>(n * n);
+  const long i = static_cast<long>(cell % static_cast<std::size_t>(n)), j = static_cast<long>(cell / static_cast<std::size_t>(n));
+  const int c = static_cast<int>(face % 4);
+  // Child grid (2i+1, 2j+1) / 2n -> parent-aligned quadrant coordinates -> original face on the grid 1/(4n).
+  const long a = 2 * i + 1, b = 2 * j + 1, m = 2 * n;
+  long x = 0, y = 0;
+  switch (c) {
+    case 0: x = a, y = b; break;
+    case 1: x = m - b, y = a; break;
+    case 2: x = m - a, y = m - b; break;
+    default: x = b, y = m - a; break;
+  }
+  return {face / 4, x + ((c == 1 || c == 2) ? m : 0), y + ((c >= 2) ? m : 0), 2 * m};
+}

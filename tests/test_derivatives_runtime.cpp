@@ -8,7 +8,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <random>
+#include <sstream>
 
 #include "bfr_reference.hpp"
 #include "cli.hpp"
@@ -213,4 +215,68 @@ TEST_CASE("derivatives are refused where they do not exist or are not exact, wit
   const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4", "sgt").string());
   const Surface ico = surface_of(loop, load("icosahedron"));
   CHECK_THROWS_WITH(ico.derivatives(0, grid(1, 1, 3)), Catch::Contains("not yet for triangle schemes"));
+}
+
+TEST_CASE("tessellation normals equal stencileval --normal and, for Catmull-Clark, Bfr's at the same parameters",
+          "[runtime][derivatives][tessellation]") {
+  // Original rate 6 on the torus -> prepared faces at rate 3 after one isolation
+  // step; point k is a cell centre on the original face's grid 1/12.
+  const Mesh mesh = load("torus-3-5");
+  const long n = 3;
+  for (const std::string scheme : {"nonpoly", "catmull-clark"}) {
+    const fs::path table = tables_for(scheme);
+    const Surface surface = surface_of(Tables::load(table.string()), mesh);
+    REQUIRE(surface.topology().refinement_steps() == 1);
+    const PolygonSoup soup = tessellate(surface, std::vector<int>(mesh.face_count(), 6), {}, true);
+    REQUIRE(soup.normals.size() == soup.positions.size());
+    const fs::path dir = scratch_dir("tess-normals");
+    std::ofstream queries(dir / "q.txt");
+    std::vector<std::size_t> sample;
+    for (std::size_t k = 0; k < soup.positions.size(); k += 5) {
+      const TessellationParameter t = tessellation_parameter(k, n);
+      queries << t.face << " " << t.u << "/" << t.denominator << " " << t.v << "/" << t.denominator << "\n";
+      sample.push_back(k);
+    }
+    queries.close();
+    const CliResult r = run_stencileval("--tables " + table.string() + " --mesh " + (kMeshes / "torus-3-5.obj").string() +
+                                        " --batch " + (dir / "q.txt").string() + " --normal");
+    REQUIRE(r.status == 0);
+    std::istringstream lines(r.output);
+    bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices);
+    for (std::size_t k : sample) {
+      Point p{}, normal{};
+      REQUIRE(static_cast<bool>(lines >> p[0] >> p[1] >> p[2] >> normal[0] >> normal[1] >> normal[2]));
+      const auto& q = soup.positions[k];
+      const auto& m = soup.normals[k];
+      INFO(scheme << " vertex " << k);
+      REQUIRE(distance(p, {q[0], q[1], q[2]}) < 1e-6);
+      REQUIRE(distance(normal, {m[0], m[1], m[2]}) < 1e-6);
+      if (scheme == "catmull-clark") {
+        const TessellationParameter t = tessellation_parameter(k, n);
+        Derivatives d;
+        const auto ref = reference.derivatives(static_cast<int>(t.face), double(t.u) / t.denominator, double(t.v) / t.denominator);
+        d.du = ref[1], d.dv = ref[2];
+        REQUIRE(distance(d.normal(), {m[0], m[1], m[2]}) < 1e-6);
+      }
+    }
+    fs::remove_all(dir);
+  }
+  // The tool writes them: one `vn` per vertex, and PLY's nx ny nz.
+  const fs::path dir = scratch_dir("tess-normals-cli");
+  const CliResult obj = run_stenciltess("--tables " + tables_for("nonpoly").string() + " --mesh " +
+                                        (kMeshes / "cube.obj").string() + " --rate 4 --normals --out " + (dir / "c.obj").string());
+  REQUIRE(obj.status == 0);
+  std::ifstream in(dir / "c.obj");
+  std::string line;
+  std::size_t v = 0, vn = 0;
+  while (std::getline(in, line)) v += line.rfind("v ", 0) == 0, vn += line.rfind("vn ", 0) == 0;
+  CHECK(v > 0);
+  CHECK(vn == v);
+  const CliResult tri = run_stenciltess("--tables " + generated_table("loop", "--valence 3-8 --n 4", "sgt").string() +
+                                        " --mesh " + (kMeshes / "icosahedron.obj").string() + " --rate 2 --normals --out " +
+                                        (dir / "i.ply").string());
+  CHECK(tri.status == 1);
+  CHECK_THAT(tri.output, Catch::Contains("not yet for triangle schemes"));
+  CHECK_FALSE(fs::exists(dir / "i.ply"));
+  fs::remove_all(dir);
 }

@@ -111,21 +111,8 @@ TEST_CASE("tessellation vertices equal stencileval at their parameters", "[runti
   std::ofstream queries(dir / "q.txt");
   std::vector<std::size_t> sample;
   for (std::size_t k = 0; k < soup.positions.size(); k += 7) {
-    const std::size_t face = k / (n * n), cell = k % (n * n);
-    const long i = static_cast<long>(cell % n), j = static_cast<long>(cell / n);
-    const std::size_t original = face / 4;
-    const int c = static_cast<int>(face % 4);
-    // Child grid (2i+1, 2j+1) / 2n -> parent-aligned quadrant coordinates -> original face on the grid 1/(4n).
-    const long a = 2 * i + 1, b = 2 * j + 1, m = 2 * n;
-    long x = 0, y = 0;
-    switch (c) {
-      case 0: x = a, y = b; break;
-      case 1: x = m - b, y = a; break;
-      case 2: x = m - a, y = m - b; break;
-      default: x = b, y = m - a; break;
-    }
-    const long u = x + ((c == 1 || c == 2) ? m : 0), v = y + ((c >= 2) ? m : 0);
-    queries << original << " " << u << "/" << 2 * m << " " << v << "/" << 2 * m << "\n";
+    const TessellationParameter t = tessellation_parameter(k, n);
+    queries << t.face << " " << t.u << "/" << t.denominator << " " << t.v << "/" << t.denominator << "\n";
     sample.push_back(k);
   }
   queries.close();

@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
       "  stenciltess --tables tables/nonpoly --mesh meshes/torus-3-5.obj --tolerance 1e-3 --out torus.obj\n"
       "  stenciltess --tables tables/nonpoly --mesh M.obj --camera 0,0,6,0,0,0 --pixels 8 --out view.ply\n"
       "  stenciltess --tables tables/loop --mesh meshes/tri-torus.obj --rate 6 --out torus.ply\n"
+      "  stenciltess --tables tables/nonpoly --mesh meshes/chess-piece.obj --rate 8 --normals --out piece.ply\n"
       "  stenciltess --tables tables/nonpoly --mesh rest.obj --frames 'anim/frame*.obj' --rate 8 --out 'out/frame%04d.ply'",
       "stenciltess"};
   std::string tables_spec, mesh_path, out, rates_file, camera, frames;
@@ -65,6 +66,9 @@ int main(int argc, char** argv) {
   app.add_option("--width", width, "with --camera: image width in pixels (default 1920)");
   app.add_option("--threads", threads, "threads, 1..256 (default: all cores)");
   app.add_option("--frames", frames, "animation: a pattern of OBJ files (quoted), e.g. 'anim/frame*.obj'");
+  bool with_normals = false;
+  app.add_flag("--normals", with_normals,
+               "also write per-vertex unit normals of the limit surface (quad schemes; PLY nx ny nz, OBJ vn)");
   r1->excludes(r2, r3, r4);
   r2->excludes(r3, r4);
   r3->excludes(r4);
@@ -106,6 +110,10 @@ int main(int argc, char** argv) {
       const auto t1 = Clock::now();
       surface.set_positions(mesh.positions);
       plan.evaluate(surface, soup.positions.data());
+      if (with_normals) {
+        soup.normals.resize(soup.positions.size());
+        plan.evaluate_normals(surface, soup.normals.data());
+      }
       const double tess = seconds_since(t1);
       write_polygons(soup, out);
       std::printf("%zu limit points, %zu quads + %zu triangles (%zu triangles), tessellated in %.4f s (%.1f M triangles/s), "
@@ -130,6 +138,10 @@ int main(int argc, char** argv) {
       const auto t1 = Clock::now();
       surface.set_positions(frame.positions);
       plan.evaluate(surface, soup.positions.data());
+      if (with_normals) {
+        soup.normals.resize(soup.positions.size());
+        plan.evaluate_normals(surface, soup.normals.data());
+      }
       per_frame += seconds_since(t1);
       const std::string name = stencil_tools::frame_name(out, k);
       write_polygons(soup, name);

@@ -55,6 +55,11 @@ class TessellationPlan {
   // make_soup()'s). Throws EvaluationError when the surface has no positions
   // or another topology.
   void evaluate(const Surface& surface, std::array<float, 3>* positions) const;
+  // The unit normals at the same points (du x dv, outward for counter-clockwise
+  // faces; docs/runtime.md "Derivatives and normals"), e.g. into make_soup()'s
+  // normals resized to point_count(). Quad schemes only so far: throws
+  // EvaluationError for a triangle scheme.
+  void evaluate_normals(const Surface& surface, std::array<float, 3>* normals) const;
 
  private:
   struct Impl;
@@ -62,7 +67,8 @@ class TessellationPlan {
   std::unique_ptr<Impl> impl_;
 };
 
-// Plan and evaluate in one call.
-PolygonSoup tessellate(const Surface& surface, const std::vector<int>& rates, const TessellationOptions& options = {});
+// Plan and evaluate in one call (with the unit normals when `normals`).
+PolygonSoup tessellate(const Surface& surface, const std::vector<int>& rates, const TessellationOptions& options = {},
+                       bool normals = false);
 
 }  // namespace stencil_runtime

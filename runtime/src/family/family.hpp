@@ -126,6 +126,12 @@ class Family {
   virtual Approximation evaluate(const SubPatch& in, double x, double y, double tolerance) const = 0;
   virtual FaceParameterReal original(std::size_t prepared_face, double x, double y) const = 0;
 
+  // The unit normals at the points of prepared faces [begin, end) of a planned
+  // layout (where points() puts the positions). The default: a family without
+  // derivatives yet.
+  virtual void normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
+                       std::array<float, 3>* out) const;
+
   // Fills layout.point_offsets, quads and triangles for layout.rates.
   virtual void plan(TessellationLayout& layout, const detail::RangeRunner& run) const = 0;
   // The points of prepared faces [begin, end) of a planned layout, from the

@@ -131,6 +131,14 @@ QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, Prepared prepared)
     w.resize(4 * static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) tables_.regular_weights(n, 2L * i + 1, w.data() + 4 * i);
   }
+  if (tables_.has_regular_derivatives()) {
+    centre_derivative_weights_.resize(centre_weights_.size());
+    for (int n : tables_.rates()) {
+      auto& w = centre_derivative_weights_[static_cast<std::size_t>(n)];
+      w.resize(4 * static_cast<std::size_t>(n));
+      for (int i = 0; i < n; ++i) tables_.regular_derivative_weights(n, 2L * i + 1, w.data() + 4 * i);
+    }
+  }
 }
 
 std::string QuadFamily::preparation() const {
@@ -462,6 +470,60 @@ void QuadFamily::points(const TessellationLayout& layout, std::size_t begin, std
         double x = 0, y = 0, z = 0;
         for (std::size_t h = 0; h < m; ++h) x += wt[h] * P[h][0], y += wt[h] * P[h][1], z += wt[h] * P[h][2];
         out[j * n + i] = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+      }
+  }
+}
+
+void QuadFamily::normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
+                         std::array<float, 3>* out_all) const {
+  // Each cell centre's derivatives by the descent (derivatives()) in the
+  // patch's own coordinates: the patch's rotation has determinant +1, so
+  // du x dv there points the same way as on the face.
+  const QuadPatchDescent& descent = checked_descent();
+  thread_local std::vector<Point> local, rows, slopes;
+  for (std::size_t f = begin; f != end; ++f) {
+    const QuadPatch& p = patches_[f];
+    const int n = layout.rates[f];
+    std::array<float, 3>* out = out_all + layout.point_offsets[f];
+    if (p.valence == 4 && !centre_derivative_weights_.empty()) {
+      // Tensor product, as regular_centres(): rows R[q][i] = sum_c w_i[c] P(c, q)
+      // and their slopes D[q][i] = sum_c w'_i[c] P(c, q); then at (i, j)
+      // d/dx = sum_q w_j[q] D[q][i], d/dy = sum_q w'_j[q] R[q][i].
+      const double* w = centre_weights_[static_cast<std::size_t>(n)].data();
+      const double* dw = centre_derivative_weights_[static_cast<std::size_t>(n)].data();
+      rows.resize(4 * static_cast<std::size_t>(n));
+      slopes.resize(4 * static_cast<std::size_t>(n));
+      for (int q = 0; q < 4; ++q)
+        for (int i = 0; i < n; ++i) {
+          Point r{0, 0, 0}, d{0, 0, 0};
+          for (int c = 0; c < 4; ++c) {
+            const Point& P = pos[p.points[static_cast<std::size_t>(q * 4 + c)]];
+            for (std::size_t k = 0; k < 3; ++k) r[k] += w[4 * i + c] * P[k], d[k] += dw[4 * i + c] * P[k];
+          }
+          rows[static_cast<std::size_t>(q * n + i)] = r;
+          slopes[static_cast<std::size_t>(q * n + i)] = d;
+        }
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          Derivatives d;
+          for (int q = 0; q < 4; ++q)
+            for (std::size_t k = 0; k < 3; ++k) {
+              d.du[k] += w[4 * j + q] * slopes[static_cast<std::size_t>(q * n + i)][k];
+              d.dv[k] += dw[4 * j + q] * rows[static_cast<std::size_t>(q * n + i)][k];
+            }
+          const Point normal = d.normal();
+          out[j * n + i] = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
+        }
+      continue;
+    }
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        long pa = 0, pb = 0;
+        p.to_patch(2L * i + 1, 2L * j + 1, 2L * n, pa, pb);
+        local.resize(p.points.size());
+        for (std::size_t h = 0; h < local.size(); ++h) local[h] = pos[p.points[h]];
+        const Point normal = descent.derivatives(p.valence, local, Fraction::make(pa, 2L * n), Fraction::make(pb, 2L * n)).normal();
+        out[j * n + i] = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
       }
   }
 }

@@ -40,6 +40,8 @@ class QuadFamily final : public Family {
   void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
   void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
               std::array<float, 3>* out) const override;
+  void normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
+               std::array<float, 3>* out) const override;
 
   // Below the public interface (tests, benchmarks):
   const QuadTables& tables() const { return tables_; }
@@ -64,6 +66,8 @@ class QuadFamily final : public Family {
   std::vector<QuadPatch> patches_;
   // Per stored rate n (indexed by n): phi at the n cell centres, 4 weights each.
   std::vector<std::vector<double>> centre_weights_;
+  // The same for phi' (empty when the tables hold no phi').
+  std::vector<std::vector<double>> centre_derivative_weights_;
   std::unique_ptr<const QuadPatchDescent> descent_;  // null for tables without the patch subdivision
 
   const QuadPatchDescent& checked_descent() const;  // throws EvaluationError without descent data

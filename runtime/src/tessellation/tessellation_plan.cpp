@@ -60,6 +60,18 @@ void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* po
   });
 }
 
+void TessellationPlan::evaluate_normals(const Surface& surface, std::array<float, 3>* normals) const {
+  if (&surface.topology() != topology_.get())
+    throw EvaluationError("the surface has another topology than the one this tessellation was planned for");
+  if (!surface.has_positions()) throw EvaluationError("the surface has no control positions yet (set_positions)");
+  const Family& family = topology_->family();
+  const Point* prepared = surface.prepared_positions().data();
+  const TessellationLayout& layout = impl_->layout;
+  (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
+    family.normals(layout, begin, end, prepared, normals);
+  });
+}
+
 PolygonSoup TessellationPlan::make_soup() const {
   PolygonSoup soup;
   soup.quads = impl_->layout.quads;
@@ -68,10 +80,15 @@ PolygonSoup TessellationPlan::make_soup() const {
   return soup;
 }
 
-PolygonSoup tessellate(const Surface& surface, const std::vector<int>& rates, const TessellationOptions& options) {
+PolygonSoup tessellate(const Surface& surface, const std::vector<int>& rates, const TessellationOptions& options,
+                       bool normals) {
   const TessellationPlan plan(surface.shared_topology(), rates, options);
   PolygonSoup soup = plan.make_soup();
   plan.evaluate(surface, soup.positions.data());
+  if (normals) {
+    soup.normals.resize(soup.positions.size());
+    plan.evaluate_normals(surface, soup.normals.data());
+  }
   return soup;
 }
 
