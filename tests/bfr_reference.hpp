@@ -52,10 +52,7 @@ class BfrLimit {
 
   std::array<double, 3> evaluate(int face, double u, double v) {
     osd::Bfr::Surface<double> surface;
-    if (!factory_->InitVertexSurface(face, &surface) || !surface.IsValid())
-      throw std::runtime_error("Bfr has no surface for face " + std::to_string(face));
-    std::vector<double> patch(static_cast<std::size_t>(surface.GetNumPatchPoints()) * 3);
-    surface.PreparePatchPoints(flat_.data(), 3, patch.data(), 3);
+    const std::vector<double> patch = prepare(face, surface);
     const double uv[2] = {u, v};
     std::array<double, 3> out{};
     surface.Evaluate(uv, patch.data(), 3, out.data());
@@ -65,10 +62,7 @@ class BfrLimit {
   // The limit point and its partial derivatives d/du, d/dv (Bfr's Evaluate with derivatives).
   std::array<std::array<double, 3>, 3> derivatives(int face, double u, double v) {
     osd::Bfr::Surface<double> surface;
-    if (!factory_->InitVertexSurface(face, &surface) || !surface.IsValid())
-      throw std::runtime_error("Bfr has no surface for face " + std::to_string(face));
-    std::vector<double> patch(static_cast<std::size_t>(surface.GetNumPatchPoints()) * 3);
-    surface.PreparePatchPoints(flat_.data(), 3, patch.data(), 3);
+    const std::vector<double> patch = prepare(face, surface);
     const double uv[2] = {u, v};
     std::array<std::array<double, 3>, 3> out{};
     surface.Evaluate(uv, patch.data(), 3, out[0].data(), out[1].data(), out[2].data());
@@ -92,6 +86,15 @@ class BfrLimit {
   }
 
  private:
+  // The face's surface and its patch points from the mesh's positions.
+  std::vector<double> prepare(int face, osd::Bfr::Surface<double>& surface) const {
+    if (!factory_->InitVertexSurface(face, &surface) || !surface.IsValid())
+      throw std::runtime_error("Bfr has no surface for face " + std::to_string(face));
+    std::vector<double> patch(static_cast<std::size_t>(surface.GetNumPatchPoints()) * 3);
+    surface.PreparePatchPoints(flat_.data(), 3, patch.data(), 3);
+    return patch;
+  }
+
   std::vector<int> sizes_, indices_;
   std::unique_ptr<osd::Far::TopologyRefiner> refiner_;
   std::unique_ptr<osd::Bfr::RefinerSurfaceFactory<>> factory_;

@@ -108,3 +108,13 @@ inline TessellationParameter tessellation_parameter(std::size_t k, long n) {
   }
   return {face / 4, x + ((c == 1 || c == 2) ? m : 0), y + ((c >= 2) ? m : 0), 2 * m};
 }
+
+// A closed triangular prism: two triangles and three quads, every vertex of
+// valence 3 (the polygon step, then isolation).
+inline stencil_runtime::Mesh prism() {
+  stencil_runtime::Mesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0.3, 0.9, 0}, {0, 0, 1.2}, {1, 0, 1.1}, {0.4, 1, 1.3}};
+  m.face_sizes = {3, 3, 4, 4, 4};
+  m.face_vertices = {0, 2, 1, 3, 4, 5, 0, 1, 4, 3, 1, 2, 5, 4, 2, 0, 3, 5};
+  return m;
+}

@@ -31,14 +31,6 @@ fs::path tables_for(const std::string& scheme) { return generated_table(scheme, 
 
 Mesh load(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
 
-// A closed triangular prism: two triangles and three quads (as in test_runtime.cpp).
-Mesh prism() {
-  Mesh m;
-  m.positions = {{0, 0, 0}, {1, 0, 0}, {0.3, 0.9, 0}, {0, 0, 1.2}, {1, 0, 1.1}, {0.4, 1, 1.3}};
-  m.face_sizes = {3, 3, 4, 4, 4};
-  m.face_vertices = {0, 2, 1, 3, 4, 5, 0, 1, 4, 3, 1, 2, 5, 4, 2, 0, 3, 5};
-  return m;
-}
 
 std::vector<int> valences(const Mesh& m) {
   std::vector<int> v(m.vertex_count(), 0);

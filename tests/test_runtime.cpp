@@ -260,17 +260,6 @@ TEST_CASE("the runtime loads the exact JSON tables too, with the same stencils a
   fs::remove_all(dir);
 }
 
-namespace {
-// A closed triangular prism: two triangles and three quads, every vertex of valence 3.
-Mesh prism() {
-  Mesh m;
-  m.positions = {{0, 0, 0}, {1, 0, 0}, {0.3, 0.9, 0}, {0, 0, 1.2}, {1, 0, 1.1}, {0.4, 1, 1.3}};
-  m.face_sizes = {3, 3, 4, 4, 4};
-  m.face_vertices = {0, 2, 1, 3, 4, 5, 0, 1, 4, 3, 1, 2, 5, 4, 2, 0, 3, 5};
-  return m;
-}
-}  // namespace
-
 TEST_CASE("meshes with triangles get the scheme's polygon step; Catmull-Clark then equals OpenSubdiv", "[runtime][opensubdiv]") {
   const auto cc = Tables::load(tables_for("catmull-clark").string());
   const Mesh m = prism();

@@ -86,14 +86,6 @@ void check_rows_bfr(const std::shared_ptr<const Tables>& tables, const Mesh& mes
   SUCCEED();
 }
 
-// A closed triangular prism: two triangles and three quads (the polygon step).
-Mesh prism() {
-  Mesh m;
-  m.positions = {{0, 0, 0}, {1, 0, 0}, {0.3, 0.9, 0}, {0, 0, 1.2}, {1, 0, 1.1}, {0.4, 1, 1.3}};
-  m.face_sizes = {3, 3, 4, 4, 4};
-  m.face_vertices = {0, 2, 1, 3, 4, 5, 0, 1, 4, 3, 1, 2, 5, 4, 2, 0, 3, 5};
-  return m;
-}
 
 }  // namespace
 

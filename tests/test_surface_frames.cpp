@@ -23,14 +23,6 @@ const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
 
 Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
 
-// A closed triangular prism: two triangles and three quads (the polygon step).
-Mesh prism() {
-  Mesh m;
-  m.positions = {{0, 0, 0}, {1, 0, 0}, {0.3, 0.9, 0}, {0, 0, 1.2}, {1, 0, 1.1}, {0.4, 1, 1.3}};
-  m.face_sizes = {3, 3, 4, 4, 4};
-  m.face_vertices = {0, 2, 1, 3, 4, 5, 0, 1, 4, 3, 1, 2, 5, 4, 2, 0, 3, 5};
-  return m;
-}
 
 // The mesh with every vertex moved by a random offset of up to a tenth of its size.
 Mesh moved(Mesh m, unsigned seed) {

@@ -48,12 +48,21 @@ std::size_t TessellationPlan::point_count() const { return impl_->layout.point_o
 const std::vector<std::array<int, 4>>& TessellationPlan::quads() const { return impl_->layout.quads; }
 const std::vector<std::array<int, 3>>& TessellationPlan::triangles() const { return impl_->layout.triangles; }
 
-void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* positions) const {
-  if (&surface.topology() != topology_.get())
+namespace {
+
+// The prepared positions of a surface of this plan's topology, checked.
+const Point* prepared_of(const Surface& surface, const SurfaceTopology* planned) {
+  if (&surface.topology() != planned)
     throw EvaluationError("the surface has another topology than the one this tessellation was planned for");
   if (!surface.has_positions()) throw EvaluationError("the surface has no control positions yet (set_positions)");
+  return surface.prepared_positions().data();
+}
+
+}  // namespace
+
+void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* positions) const {
+  const Point* prepared = prepared_of(surface, topology_.get());
   const Family& family = topology_->family();
-  const Point* prepared = surface.prepared_positions().data();
   const TessellationLayout& layout = impl_->layout;
   (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
     family.points(layout, begin, end, prepared, positions);
@@ -61,11 +70,8 @@ void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* po
 }
 
 void TessellationPlan::evaluate_normals(const Surface& surface, std::array<float, 3>* normals) const {
-  if (&surface.topology() != topology_.get())
-    throw EvaluationError("the surface has another topology than the one this tessellation was planned for");
-  if (!surface.has_positions()) throw EvaluationError("the surface has no control positions yet (set_positions)");
+  const Point* prepared = prepared_of(surface, topology_.get());
   const Family& family = topology_->family();
-  const Point* prepared = surface.prepared_positions().data();
   const TessellationLayout& layout = impl_->layout;
   (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
     family.normals(layout, begin, end, prepared, normals);
