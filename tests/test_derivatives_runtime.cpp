@@ -272,3 +272,17 @@ TEST_CASE("tessellation normals equal stencileval --normal and, for Catmull-Clar
   CHECK_FALSE(fs::exists(dir / "i.ply"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("a directory of exact JSON tables gives the binary file's derivatives", "[runtime][derivatives][tables]") {
+  const fs::path sgs = tables_for("nonpoly");
+  const Mesh mesh = load("chess-piece");
+  const Surface binary = surface_of(Tables::load(sgs.string()), mesh);
+  const Surface json = surface_of(Tables::load(sgs.parent_path().string()), mesh);
+  const double size = extent(mesh);
+  for (std::size_t f = 0; f < mesh.face_count(); f += 11)
+    for (const ExactParameter& at : {grid(1, 2, 3), grid(5, 1, 8), grid(7, 24, 24)}) {
+      const Derivatives a = binary.derivatives(f, at), b = json.derivatives(f, at);
+      INFO("face " << f << " at " << at.str());
+      REQUIRE(std::max({distance(a.point, b.point), distance(a.du, b.du), distance(a.dv, b.dv)}) < 1e-14 * size);
+    }
+}
