@@ -1,6 +1,7 @@
 #include "quad_family.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "family/parameter_ops.hpp"
@@ -474,12 +475,37 @@ void QuadFamily::points(const TessellationLayout& layout, std::size_t begin, std
   }
 }
 
+std::shared_ptr<const std::vector<double>> QuadFamily::centre_derivatives(int valence, int n) const {
+  {
+    std::lock_guard lock(centre_derivatives_mutex_);
+    const auto it = centre_derivatives_.find({valence, n});
+    if (it != centre_derivatives_.end()) return it->second;
+  }
+  // Layout: centre (i, j) at (j n + i) * 2m: m weights of d/dx, then m of d/dy.
+  // The derivatives are linear in the points: unit vectors, three points at a time.
+  const QuadPatchDescent& descent = checked_descent();
+  const std::size_t m = static_cast<std::size_t>(QuadTables::points(valence));
+  auto weights = std::make_shared<std::vector<double>>(static_cast<std::size_t>(n) * static_cast<std::size_t>(n) * 2 * m);
+  std::vector<Point> unit;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      double* w = weights->data() + (static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)) * 2 * m;
+      for (std::size_t first = 0; first < m; first += 3) {
+        unit.assign(m, Point{0, 0, 0});
+        for (std::size_t k = 0; k < 3 && first + k < m; ++k) unit[first + k][k] = 1;
+        const Derivatives d = descent.derivatives(valence, unit, Fraction::make(2L * i + 1, 2L * n), Fraction::make(2L * j + 1, 2L * n));
+        for (std::size_t k = 0; k < 3 && first + k < m; ++k) w[first + k] = d.du[k], w[m + first + k] = d.dv[k];
+      }
+    }
+  std::lock_guard lock(centre_derivatives_mutex_);
+  return centre_derivatives_.emplace(std::pair{valence, n}, std::move(weights)).first->second;
+}
+
 void QuadFamily::normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
                          std::array<float, 3>* out_all) const {
-  // Each cell centre's derivatives by the descent (derivatives()) in the
-  // patch's own coordinates: the patch's rotation has determinant +1, so
-  // du x dv there points the same way as on the face.
-  const QuadPatchDescent& descent = checked_descent();
+  // Each cell centre's derivatives in the patch's own coordinates: the
+  // patch's rotation has determinant +1, so du x dv there points the same way
+  // as on the face.
   thread_local std::vector<Point> local, rows, slopes;
   for (std::size_t f = begin; f != end; ++f) {
     const QuadPatch& p = patches_[f];
@@ -503,26 +529,40 @@ void QuadFamily::normals(const TessellationLayout& layout, std::size_t begin, st
           rows[static_cast<std::size_t>(q * n + i)] = r;
           slopes[static_cast<std::size_t>(q * n + i)] = d;
         }
-      for (int j = 0; j < n; ++j)
+      const Point* r0 = rows.data();
+      const Point *r1 = r0 + n, *r2 = r1 + n, *r3 = r2 + n;
+      const Point* s0 = slopes.data();
+      const Point *s1 = s0 + n, *s2 = s1 + n, *s3 = s2 + n;
+      for (int j = 0; j < n; ++j) {
+        const double* wy = w + 4 * j;
+        const double* dwy = dw + 4 * j;
         for (int i = 0; i < n; ++i) {
-          Derivatives d;
-          for (int q = 0; q < 4; ++q)
-            for (std::size_t k = 0; k < 3; ++k) {
-              d.du[k] += w[4 * j + q] * slopes[static_cast<std::size_t>(q * n + i)][k];
-              d.dv[k] += dw[4 * j + q] * rows[static_cast<std::size_t>(q * n + i)][k];
-            }
-          const Point normal = d.normal();
-          out[j * n + i] = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
+          double du[3], dv[3];
+          for (int k = 0; k < 3; ++k) {
+            du[k] = wy[0] * s0[i][k] + wy[1] * s1[i][k] + wy[2] * s2[i][k] + wy[3] * s3[i][k];
+            dv[k] = dwy[0] * r0[i][k] + dwy[1] * r1[i][k] + dwy[2] * r2[i][k] + dwy[3] * r3[i][k];
+          }
+          const double nx = du[1] * dv[2] - du[2] * dv[1], ny = du[2] * dv[0] - du[0] * dv[2], nz = du[0] * dv[1] - du[1] * dv[0];
+          const double length = std::sqrt(nx * nx + ny * ny + nz * nz);
+          const double scale = length > 0 ? 1 / length : 0;
+          out[j * n + i] = {static_cast<float>(nx * scale), static_cast<float>(ny * scale), static_cast<float>(nz * scale)};
         }
+      }
       continue;
     }
+    const std::size_t m = p.points.size();
+    const std::shared_ptr<const std::vector<double>> cached = centre_derivatives(p.valence, n);
+    local.resize(m);
+    for (std::size_t h = 0; h < m; ++h) local[h] = pos[p.points[h]];
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         long pa = 0, pb = 0;
         p.to_patch(2L * i + 1, 2L * j + 1, 2L * n, pa, pb);
-        local.resize(p.points.size());
-        for (std::size_t h = 0; h < local.size(); ++h) local[h] = pos[p.points[h]];
-        const Point normal = descent.derivatives(p.valence, local, Fraction::make(pa, 2L * n), Fraction::make(pb, 2L * n)).normal();
+        const double* w = cached->data() + (static_cast<std::size_t>(pb / 2) * static_cast<std::size_t>(n) + static_cast<std::size_t>(pa / 2)) * 2 * m;
+        Derivatives d;
+        for (std::size_t h = 0; h < m; ++h)
+          for (std::size_t k = 0; k < 3; ++k) d.du[k] += w[h] * local[h][k], d.dv[k] += w[m + h] * local[h][k];
+        const Point normal = d.normal();
         out[j * n + i] = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
       }
   }

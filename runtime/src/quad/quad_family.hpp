@@ -4,7 +4,9 @@
 // steps of the scheme's own rules until no face has two extraordinary corners,
 // and every prepared face's patch gathered; exact evaluation from the tables
 // and the tessellation kernels (quad_tessellation.cpp).
+#include <map>
 #include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -69,6 +71,12 @@ class QuadFamily final : public Family {
   // The same for phi' (empty when the tables hold no phi').
   std::vector<std::vector<double>> centre_derivative_weights_;
   std::unique_ptr<const QuadPatchDescent> descent_;  // null for tables without the patch subdivision
+  // d/dx and d/dy weights of an extraordinary patch at its n^2 cell centres in
+  // patch coordinates, per (valence, rate): made on first use by the descent
+  // (by linearity) and kept, so that tessellation normals do not descend per point.
+  mutable std::mutex centre_derivatives_mutex_;
+  mutable std::map<std::pair<int, int>, std::shared_ptr<const std::vector<double>>> centre_derivatives_;
+  std::shared_ptr<const std::vector<double>> centre_derivatives(int valence, int n) const;
 
   const QuadPatchDescent& checked_descent() const;  // throws EvaluationError without descent data
   // d(patch x, y)/d(u, v), row-major: the product of every step's linear part
