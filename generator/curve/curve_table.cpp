@@ -35,7 +35,7 @@ CurveTable make_table(const CurveScheme& scheme, const CurveSolution& solution) 
 }
 
 void add_derivatives(CurveTable& table, const std::vector<CurveSolution>& psi, const std::string& stop) {
-  if (table.functions.size() != 1 || (!psi.empty() && psi.size() > static_cast<std::size_t>(kMaxDerivativeOrder)))
+  if (table.functions.size() != 1 || psi.size() > static_cast<std::size_t>(kMaxDerivativeOrder))
     throw Error("derivatives are added to uniform curve tables only, up to order " + std::to_string(kMaxDerivativeOrder));
   CurveTable::Function& f = table.functions[0];
   f.derivatives.assign(psi.size(), {});

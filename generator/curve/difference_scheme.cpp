@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "curve/residue_solver.hpp"
 #include "curve/support.hpp"
 
 namespace sg {
@@ -137,6 +138,14 @@ DerivativeSchemes derivative_schemes(const CurveScheme& scheme, int max_order) {
     s = std::move(next);
   }
   return out;
+}
+
+CurveTable table_with_derivatives(const CurveScheme& scheme, const CurveSolution& values, const DerivativeSchemes& derivatives) {
+  CurveTable table = make_table(scheme, values);
+  std::vector<CurveSolution> psi;
+  for (const CurveScheme& d : derivatives.schemes) psi.push_back(solve_by_residues(d, values.n));
+  add_derivatives(table, psi, derivatives.stop);
+  return table;
 }
 
 }  // namespace sg

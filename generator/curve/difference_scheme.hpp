@@ -18,6 +18,8 @@
 #include <vector>
 
 #include "curve/curve_scheme.hpp"
+#include "curve/curve_solution.hpp"
+#include "curve/curve_table.hpp"
 
 namespace sg {
 
@@ -36,6 +38,10 @@ DerivativeSchemes derivative_schemes(const CurveScheme& scheme, int max_order);
 // `arity` converges uniformly: sigma divides it and the quotient scheme is
 // contractive within `max_steps` steps. `why` gets the reason when it does not.
 bool converges(const std::map<long, Rational>& mask, int arity, int max_steps, std::string& why);
+
+// The table of a uniform scheme's values at their rate, with the derivatives of
+// `derivatives` (psi_r solved by residue classes at the same rate).
+CurveTable table_with_derivatives(const CurveScheme& scheme, const CurveSolution& values, const DerivativeSchemes& derivatives);
 
 // (-1)^i C(r, i), i = 0..r: phi^(r)(x) = sum_i weights[i] psi_r(x - i).
 std::vector<long> difference_weights(int r);

@@ -93,8 +93,7 @@ PatchDerivativeGrid solve_ev_patch_derivatives(const QuadScheme& scheme, int val
   if (d.schemes.empty())
     throw Error(scheme.name + ": the regular curve '" + scheme.curve.name + "' has no continuous derivative (" + d.stop + ")");
   const CurveSolution curve = solve_by_residues(scheme.curve, g);
-  CurveTable table = make_table(scheme.curve, curve);
-  add_derivatives(table, {solve_by_residues(d.schemes[0], g)}, d.stop);
+  const CurveTable table = table_with_derivatives(scheme.curve, curve, d);
   return solve_ev_patch_derivatives(scheme, valence, g, curve, table.functions[0].derivatives[0]);
 }
 

@@ -36,10 +36,7 @@ QuadTableSet generate_quad_tables(const QuadScheme& scheme, const std::vector<in
   const DerivativeSchemes derivative = derivative_schemes(scheme.curve, 1);
   tbb::parallel_for(std::size_t(0), rates.size(), [&](std::size_t r) {
     set.regular[r] = solve_by_residues(scheme.curve, 2 * rates[r]);
-    set.regular_tables[r] = make_table(scheme.curve, set.regular[r]);
-    std::vector<CurveSolution> psi;
-    for (const CurveScheme& d : derivative.schemes) psi.push_back(solve_by_residues(d, 2 * rates[r]));
-    add_derivatives(set.regular_tables[r], psi, derivative.stop);
+    set.regular_tables[r] = table_with_derivatives(scheme.curve, set.regular[r], derivative);
   });
 
   set.tables.assign(valences.size(), std::vector<QuadTable>(rates.size()));

@@ -27,14 +27,18 @@ double face_extent(const Mesh& mesh, std::size_t face) {
   return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
 }
 
+void check_face(const Mesh& mesh, std::size_t face) {
+  if (face >= mesh.face_count())
+    throw EvaluationError("face " + std::to_string(face) + " does not exist (the mesh has " + std::to_string(mesh.face_count()) +
+                          " faces, numbered from 0)");
+}
+
 // Exact rationals stay exact where the tables reach them; decimals (and
 // rationals they do not reach) are evaluated within `relative` of the face's
 // control-point extent, and the bound comes back.
 Evaluation evaluate(const Surface& surface, const Mesh& mesh, std::size_t face, const ParameterText& u, const ParameterText& v,
                     double relative) {
-  if (face >= mesh.face_count())
-    throw EvaluationError("face " + std::to_string(face) + " does not exist (the mesh has " + std::to_string(mesh.face_count()) +
-                          " faces, numbered from 0)");
+  check_face(mesh, face);
   const double tolerance = relative * face_extent(mesh, face);
   if (u.exact && v.exact) return surface.evaluate(face, ExactParameter{u.fraction, v.fraction}, tolerance);
   return surface.evaluate(face, u.value, v.value, tolerance);
@@ -42,9 +46,7 @@ Evaluation evaluate(const Surface& surface, const Mesh& mesh, std::size_t face, 
 
 Derivatives derivatives(const Surface& surface, const Mesh& mesh, std::size_t face, const ParameterText& u,
                         const ParameterText& v) {
-  if (face >= mesh.face_count())
-    throw EvaluationError("face " + std::to_string(face) + " does not exist (the mesh has " + std::to_string(mesh.face_count()) +
-                          " faces, numbered from 0)");
+  check_face(mesh, face);
   if (u.exact && v.exact) return surface.derivatives(face, ExactParameter{u.fraction, v.fraction});
   return surface.derivatives(face, u.value, v.value);
 }

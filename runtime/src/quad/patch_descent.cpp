@@ -121,6 +121,31 @@ Approximation QuadPatchDescent::regular_bound(const std::vector<Point>& q, doubl
   return out;
 }
 
+namespace {
+
+// One step of an extraordinary patch's descent: the control points into the
+// child holding (x, y) (the extraordinary child through A0, else a regular
+// child, after which the patch is regular) and (x, y) into its coordinates.
+// Returns apply()'s rounding bound.
+template <class P>
+double into_child(const QuadDescent::Valence& sub, int& valence, std::vector<Point>& q, P& x, P& y, std::vector<Point>& next) {
+  const bool right = greater(x, 1, 2), top = greater(y, 1, 2);
+  double rounding = 0;
+  if (!right && !top) {
+    rounding = apply(sub.ev_child, q, next);
+    x = scale_minus(x, 2, 0), y = scale_minus(y, 2, 0);
+  } else {
+    const int c = right && !top ? 0 : (!right ? 1 : 2);  // offsets (1,0), (0,1), (1,1)
+    rounding = apply(sub.regular_children[c], q, next);
+    x = scale_minus(x, 2, right ? 1 : 0), y = scale_minus(y, 2, top ? 1 : 0);
+    valence = 4;
+  }
+  q.swap(next);
+  return rounding;
+}
+
+}  // namespace
+
 template <class P>
 Approximation QuadPatchDescent::evaluate(int valence, std::vector<Point>& q, P x, P y, double tolerance) const {
   double rounding = 0;
@@ -157,17 +182,7 @@ Approximation QuadPatchDescent::evaluate(int valence, std::vector<Point>& q, P x
       approx.bound += rounding;
       return approx;
     }
-    const bool right = greater(x, 1, 2), top = greater(y, 1, 2);
-    if (!right && !top) {
-      rounding += apply(sub.ev_child, q, next);
-      x = scale_minus(x, 2, 0), y = scale_minus(y, 2, 0);
-    } else {
-      const int c = right && !top ? 0 : (!right ? 1 : 2);  // offsets (1,0), (0,1), (1,1)
-      rounding += apply(sub.regular_children[c], q, next);
-      x = scale_minus(x, 2, right ? 1 : 0), y = scale_minus(y, 2, top ? 1 : 0);
-      valence = 4;
-    }
-    q.swap(next);
+    rounding += into_child(sub, valence, q, x, y, next);
   }
 }
 
@@ -247,19 +262,8 @@ PatchDerivatives QuadPatchDescent::derivatives(int valence, std::vector<Point>& 
     if (at_origin(x, y))
       throw EvaluationError("the patch has no parametric derivative at its extraordinary vertex (valence " +
                             std::to_string(valence) + ")");
-    const QuadDescent::Valence& sub = tables_.descent(valence);
-    const bool right = greater(x, 1, 2), top = greater(y, 1, 2);
-    if (!right && !top) {
-      apply(sub.ev_child, q, next);
-      x = scale_minus(x, 2, 0), y = scale_minus(y, 2, 0);
-    } else {
-      const int c = right && !top ? 0 : (!right ? 1 : 2);  // offsets (1,0), (0,1), (1,1)
-      apply(sub.regular_children[c], q, next);
-      x = scale_minus(x, 2, right ? 1 : 0), y = scale_minus(y, 2, top ? 1 : 0);
-      valence = 4;
-    }
+    into_child(tables_.descent(valence), valence, q, x, y, next);
     scale *= 2;
-    q.swap(next);
   }
   throw EvaluationError("the parameter is too close to the extraordinary vertex for a derivative in doubles");
 }
