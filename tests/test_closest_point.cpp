@@ -11,6 +11,7 @@
 #include <random>
 
 #include "bfr_reference.hpp"
+#include "distance/affine_enclosure.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
 #include "stencil_runtime/closest_point.hpp"
@@ -190,6 +191,60 @@ TEST_CASE("nonpoly closest points are never farther than dense exact limit point
     // The icosahedron's limit surface is closed and convex-ish around the origin: signs by a ray to the centre.
     if (distance(q, {0, 0, 0}) < 0.1 * diagonal) CHECK(r.signed_distance < 0);
     if (distance(q, {0, 0, 0}) > diagonal) CHECK(r.signed_distance > 0);
+  }
+}
+
+// The affine enclosure (distance/affine_enclosure.hpp) against dense exact
+// evaluations of the sub-patch it bounds: never above the nearest of them,
+// and, being of second order, close to it for small sub-patches.
+TEST_CASE("the affine enclosure bounds every sampled sub-patch from below and tightens with depth", "[runtime][distance]") {
+  const Mesh mesh = read_obj((kMeshes / "chess-piece.obj").string());
+  for (const char* scheme : {"catmull-clark", "nonpoly"}) {
+    CAPTURE(scheme);
+    const auto tables = Tables::load(generated_table(scheme, "--valence 3-8 --n 16", "sgs").string());
+    const Surface surface = surface_of(tables, mesh);
+    const Family& family = surface.topology().family();
+    const AffineParameters* affine = family.affine_parameters(4);
+    REQUIRE(affine != nullptr);
+    CHECK(affine->residual < 1e-12);
+    CHECK(family.affine_parameters(5) == nullptr);
+    const AffineEnclosure enclosure(*affine);
+    const double diagonal = diagonal_of(mesh);
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<std::size_t> face(0, surface.topology().prepared_face_count() - 1);
+    std::uniform_int_distribution<int> quadrant(0, 3);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int tested = 0;
+    double worst_gap_deep = 0;  // how far below the sampled minimum the bound is, at depth 5
+    while (tested < 60) {
+      SubPatch s;
+      family.root(face(rng), surface.prepared_positions().data(), s);
+      SubPatch children[4];
+      const int depth = tested % 6;
+      for (int level = 0; level < depth; ++level) {
+        family.split(s, children);
+        s = children[quadrant(rng)];
+      }
+      if (s.kind != 4) continue;  // only regular sub-patches have the enclosure
+      ++tested;
+      constexpr int kSamples = 24;
+      std::vector<Point> samples;
+      for (int j = 0; j <= kSamples; ++j)
+        for (int i = 0; i <= kSamples; ++i)
+          samples.push_back(family.evaluate(s, s.x0 + s.size * i / kSamples, s.y0 + s.size * j / kSamples, 1e-14 * diagonal).point);
+      const Point centre = samples[samples.size() / 2];
+      for (int k = 0; k < 20; ++k) {
+        const double reach = (k < 10 ? 0.01 : 0.5) * diagonal;
+        const Point q{centre[0] + reach * unit(rng), centre[1] + reach * unit(rng), centre[2] + reach * unit(rng)};
+        double nearest = INFINITY;
+        for (const Point& p : samples) nearest = std::min(nearest, distance(p, q));
+        const double bound = enclosure.lower_bound(s.points, q);
+        CHECK(bound <= nearest + 1e-12 * diagonal);
+        if (depth == 5) worst_gap_deep = std::max(worst_gap_deep, nearest - bound);
+      }
+    }
+    // A depth-5 sub-patch spans 1/32 of a face: its bound is within 1e-4 of the diagonal of the samples' minimum.
+    CHECK(worst_gap_deep < 1e-4 * diagonal);
   }
 }
 

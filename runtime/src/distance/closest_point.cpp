@@ -13,6 +13,7 @@
 
 #include "distance/face_search.hpp"
 #include "stencil_runtime/error.hpp"
+#include "stencil_runtime/limits.hpp"
 
 namespace stencil_runtime {
 
@@ -70,6 +71,7 @@ struct ClosestPointQuery::Impl {
   double tolerance = 0;
   std::vector<Point> prepared;
   std::vector<std::array<float, 6>> boxes;  // per prepared face: its control points' box
+  std::vector<AffineEnclosure> enclosures;     // per sub-patch kind (empty where none)
   std::vector<signed char> orientation;      // +1 where patch (x, y) keeps the original face's orientation
   Seeds seeds;
   std::unique_ptr<SeedTree> seed_tree;
@@ -88,9 +90,9 @@ struct ClosestPointQuery::Impl {
 namespace {
 
 struct QueryState {
-  const FaceSearch* search;
+  FaceSearch* search;
   Point q;
-  FaceHit best;
+  const FaceHit* best;
 };
 
 void face_bounds(const RTCBoundsFunctionArguments* args) {
@@ -100,13 +102,13 @@ void face_bounds(const RTCBoundsFunctionArguments* args) {
   args->bounds_o->upper_x = b[3], args->bounds_o->upper_y = b[4], args->bounds_o->upper_z = b[5];
 }
 
+// Embree calls this for every face whose box the query sphere touches: it
+// queues the face for the branch-and-bound (the radius is already the best
+// upper bound, so it does not shrink here).
 bool visit_face(RTCPointQueryFunctionArguments* args) {
   auto* state = static_cast<QueryState*>(args->userPtr);
-  if (!state->search->search(args->primID, state->q, state->best)) return false;
-  const float r = float_up(state->best.distance);
-  if (r >= args->query->radius) return false;
-  args->query->radius = r;
-  return true;
+  state->search->add(args->primID, state->q, *state->best);
+  return false;
 }
 
 }  // namespace
@@ -179,36 +181,42 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
 ClosestPoint ClosestPointQuery::Impl::find(const Point& q) const {
   for (double c : q)
     if (!std::isfinite(c)) throw EvaluationError("closest points: a query point has a coordinate that is not finite");
-  const FaceSearch search(*family, prepared, tolerance);
-  QueryState state{&search, q, {}};
-  state.best.distance = options.max_distance;
+  FaceSearch search(*family, prepared, enclosures, tolerance);
+  FaceHit best;
+  best.distance = options.max_distance;
 
-  // A first upper bound: the nearest seed, an exact limit point.
+  // A first upper bound: Gauss-Newton on the patch of the nearest seed (an
+  // exact limit point), which is usually the answer already, so that the
+  // branch-and-bound below has little left to prove.
   std::size_t nearest = 0;
   double nearest_d2 = 0;
   seed_tree->knnSearch(q.data(), 1, &nearest, &nearest_d2);
   const double seed_distance = std::sqrt(nearest_d2);
-  if (seed_distance < state.best.distance) {
+  if (seed_distance < best.distance + tolerance) {
     const auto& at = seeds.at[nearest];
-    state.best = {seed_distance, seeds.faces[nearest], at[0], at[1], seeds.points[nearest], 0, 0};
+    FaceHit seeded{seed_distance, seeds.faces[nearest], at[0], at[1], seeds.points[nearest], 0, 0};
+    search.start(seeded.face, at[0], at[1], q, seeded);
+    if (seeded.distance < best.distance) best = seeded;
   }
 
-  // Every face whose control box lies within the best distance is searched
-  // (Embree visits the boxes the shrinking sphere still touches).
+  // Every face whose control box lies within the best distance is queued
+  // (Embree visits the boxes the sphere touches), then searched best first.
+  QueryState state{&search, q, &best};
   RTCPointQuery query;
   query.x = static_cast<float>(q[0]), query.y = static_cast<float>(q[1]), query.z = static_cast<float>(q[2]);
   query.time = 0;
   // The float query centre may sit up to half an ulp away from q: widen the radius by that much.
   const double centre_slack = 1e-7 * (std::fabs(q[0]) + std::fabs(q[1]) + std::fabs(q[2]));
-  query.radius = std::isfinite(state.best.distance) ? float_up(state.best.distance + centre_slack) : INFINITY;
+  query.radius = std::isfinite(best.distance) ? float_up(best.distance + centre_slack) : INFINITY;
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   rtcPointQuery(scene, &query, &context, visit_face, &state);
+  search.run(q, best);
 
   ClosestPoint out;
-  if (!(state.best.distance < options.max_distance)) return out;  // nothing nearer than max_distance
+  if (!(best.distance < options.max_distance)) return out;  // nothing nearer than max_distance
   out.found = true;
-  const FaceHit& h = state.best;
+  const FaceHit& h = best;
   const FaceParameterReal original = family->original(h.face, h.x, h.y);
   out.face = original.face, out.u = original.u, out.v = original.v;
   out.point = h.point;
@@ -243,6 +251,10 @@ ClosestPointQuery::ClosestPointQuery(const Surface& surface, const ClosestPointO
   impl_->topology = surface.shared_topology();
   impl_->family = &impl_->topology->family();
   impl_->options = options;
+  for (int kind = 0; kind <= limits::kMaxValence; ++kind) {
+    const AffineParameters* affine = impl_->family->affine_parameters(kind);
+    impl_->enclosures.push_back(affine ? AffineEnclosure(*affine) : AffineEnclosure());
+  }
   impl_->build(surface);
 }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <queue>
 
 namespace stencil_runtime {
 
@@ -10,47 +9,68 @@ namespace {
 
 // Deep enough that a sub-patch is far below any tolerance a double can express.
 constexpr int kMaxDepth = 48;
-// Sub-patches examined per face and query at most: a guard against runaway
+// Sub-patches examined per query at most: a guard against runaway
 // work (it has not been reached on the bundled meshes); what is left open then
 // is reported in the gap.
 constexpr std::size_t kMaxNodes = 200000;
+// Gilbert steps towards the hull's nearest point per lower bound, and the
+// relative gap at which they stop (measured: more steps cost more than the
+// sub-patches they save).
+constexpr int kGilbertSteps = 16;
+constexpr double kGilbertGap = 1e-8;
 
 Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double length(const Point& a) { return std::sqrt(dot(a, a)); }
 
-struct Node {
-  double bound;
-  int depth;
-  SubPatch patch;
-  bool operator<(const Node& o) const { return bound > o.bound; }  // smallest bound first
-};
-
 }  // namespace
 
-double FaceSearch::box_distance(const SubPatch& s, const Point& q) {
+double FaceSearch::hull_bound(const SubPatch& s, const Point& q) {
   // Two lower bounds on the distance from q to the convex hull of the control
-  // points: to their axis-aligned box, and the hull's extent towards q along
-  // the direction u from q to the points' centroid (every hull point x has
-  // |x - q| >= u.(x - q) >= min_i u.(p_i - q)). The second is what makes the
-  // bound converge as the square of the sub-patch size on a smooth surface, so
-  // that the search near a minimum stays small.
-  Point lo = s.points[0], hi = s.points[0], c{0, 0, 0};
+  // points: to their axis-aligned box, and a separating plane. The plane comes
+  // from a few steps of Gilbert's algorithm for the hull point nearest q: x, a
+  // point of the hull relative to q (first the centroid), and the support
+  // point s = argmin_i x.(p_i - q) give |y| >= x.(s - q) / |x| for every hull
+  // point y (relative to q); x then moves to the nearest point of the segment
+  // [x, s - q]. Each step's bound is valid, the best is kept. The plane is
+  // what makes the bound converge as the square of the sub-patch size on a
+  // smooth surface, so that the search near a minimum stays small.
+  const std::size_t n = s.points.size();
+  Point lo = s.points[0], hi = s.points[0], x{0, 0, 0};
   for (const Point& p : s.points)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]), c[k] += p[k];
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]), x[k] += p[k];
   double d2 = 0;
   for (int k = 0; k < 3; ++k) {
     const double e = std::max({lo[k] - q[k], 0.0, q[k] - hi[k]});
     d2 += e * e;
+    x[k] = x[k] / static_cast<double>(n) - q[k];
   }
-  const double box = std::sqrt(d2);
-  Point u = minus(c, Point{q[0] * s.points.size(), q[1] * s.points.size(), q[2] * s.points.size()});
-  const double len = length(u);
-  if (!(len > 0)) return box;
-  for (double& x : u) x /= len;
-  double support = INFINITY;
-  for (const Point& p : s.points) support = std::min(support, dot(u, minus(p, q)));
-  return std::max(box, support);
+  double bound = std::sqrt(d2);
+  for (int step = 0; step < kGilbertSteps; ++step) {
+    const double len = length(x);
+    if (!(len > bound)) break;  // the hull reaches q, or the bound is already the distance of a hull point
+    std::size_t support = 0;
+    double lowest = INFINITY;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double h = dot(x, minus(s.points[i], q));
+      if (h < lowest) lowest = h, support = i;
+    }
+    bound = std::max(bound, lowest / len);
+    if (len - bound <= kGilbertGap * len) break;
+    const Point d = minus(minus(s.points[support], q), x);
+    const double dd = dot(d, d);
+    if (!(dd > 0)) break;
+    const double t = std::clamp(-dot(x, d) / dd, 0.0, 1.0);
+    for (int k = 0; k < 3; ++k) x[k] += t * d[k];
+  }
+  return bound;
+}
+
+double FaceSearch::lower_bound(const SubPatch& s, const Point& q) const {
+  const double hull = hull_bound(s, q);
+  const std::size_t kind = static_cast<std::size_t>(s.kind);
+  if (kind < enclosures_.size() && !enclosures_[kind].empty()) return std::max(hull, enclosures_[kind].lower_bound(s.points, q));
+  return hull;
 }
 
 bool FaceSearch::consider(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const {
@@ -93,24 +113,38 @@ void FaceSearch::polish(const SubPatch& s, double x, double y, const Point& q, F
   consider(s, x, y, q, best);
 }
 
-bool FaceSearch::search(std::size_t face, const Point& q, FaceHit& best) const {
-  const double before = best.distance;
-  std::priority_queue<Node> open;
-  Node root{0, 0, {}};
-  family_.root(face, prepared_.data(), root.patch);
-  root.bound = box_distance(root.patch, q);
-  if (root.bound >= best.distance - tolerance_) return false;
-  open.push(std::move(root));
+void FaceSearch::push(double bound, int depth, SubPatch&& patch) {
+  open_.push_back({bound, depth, std::move(patch)});
+  std::push_heap(open_.begin(), open_.end(), [](const Node& a, const Node& b) { return a.bound > b.bound; });
+}
+
+void FaceSearch::start(std::size_t face, double x, double y, const Point& q, FaceHit& best) const {
+  SubPatch root;
+  family_.root(face, prepared_.data(), root);
+  consider(root, x, y, q, best);
+  polish(root, x, y, q, best);
+}
+
+void FaceSearch::add(std::size_t face, const Point& q, const FaceHit& best) {
+  SubPatch root;
+  family_.root(face, prepared_.data(), root);
+  const double bound = lower_bound(root, q);
+  if (bound < best.distance - tolerance_) push(bound, 0, std::move(root));
+}
+
+void FaceSearch::run(const Point& q, FaceHit& best) {
+  const auto later = [](const Node& a, const Node& b) { return a.bound > b.bound; };
   SubPatch children[4];
   double unresolved = 0;  // the largest gap left by sub-patches too deep to split
   std::size_t examined = 0;
-  while (!open.empty() && open.top().bound < best.distance - tolerance_) {
+  while (!open_.empty() && open_.front().bound < best.distance - tolerance_) {
     if (++examined > kMaxNodes) {
-      unresolved = std::max(unresolved, best.distance - open.top().bound);
+      unresolved = std::max(unresolved, best.distance - open_.front().bound);
       break;
     }
-    Node node = open.top();
-    open.pop();
+    std::pop_heap(open_.begin(), open_.end(), later);
+    Node node = std::move(open_.back());
+    open_.pop_back();
     const SubPatch& s = node.patch;
     const double cx = s.x0 + 0.5 * s.size, cy = s.y0 + 0.5 * s.size;
     // The centre; where it is the nearest point so far, Gauss-Newton from there.
@@ -121,13 +155,13 @@ bool FaceSearch::search(std::size_t face, const Point& q, FaceHit& best) const {
     }
     const int n = family_.split(s, children);
     for (int c = 0; c < n; ++c) {
-      const double bound = box_distance(children[c], q);
-      if (bound < best.distance - tolerance_) open.push({bound, node.depth + 1, std::move(children[c])});
+      const double bound = lower_bound(children[c], q);
+      if (bound < best.distance - tolerance_) push(bound, node.depth + 1, std::move(children[c]));
     }
   }
-  // What this face might still hide beyond the tolerance (0 when the search ran to its end).
+  open_.clear();
+  // What might still be hidden beyond the tolerance (0 when the search ran to its end).
   best.gap = std::max(best.gap, unresolved - tolerance_);
-  return best.distance < before;
 }
 
 }  // namespace stencil_runtime

@@ -1,16 +1,18 @@
 #pragma once
-// The closest point of one prepared face's patch to a query point: a
-// branch-and-bound over the scheme's own subdivision of the patch. A
-// sub-patch's surface lies in the convex hull of its control points, so the
-// distance to their bounding box is a lower bound for it; sub-patches whose
-// bound is not below the best distance found minus the tolerance are dropped,
-// the others split, their centres evaluated and the promising ones polished
-// by Gauss-Newton steps in the patch parameters (derivatives by central
-// differences of exact evaluations). The search ends when nothing left could
-// be closer by more than the tolerance.
+// The closest point of the limit surface to one query point: a best-first
+// branch-and-bound over the scheme's own subdivision of the candidate faces'
+// patches, all faces in one queue. A sub-patch's surface lies in the convex
+// hull of its control points, so a lower bound on the distance to that hull
+// bounds the sub-patch; the queue is worked in order of that bound, and a
+// sub-patch whose bound is not below the best distance found minus the
+// tolerance is dropped. Split sub-patches have their centres evaluated; a
+// centre that improves the best is polished by Gauss-Newton steps in the patch
+// parameters. The search ends when nothing left could be closer by more than
+// the tolerance. One FaceSearch serves one query (it holds the queue).
 #include <cstddef>
 #include <vector>
 
+#include "affine_enclosure.hpp"
 #include "family/family.hpp"
 
 namespace stencil_runtime {
@@ -26,28 +28,43 @@ struct FaceHit {
 
 class FaceSearch {
  public:
-  FaceSearch(const Family& family, const std::vector<Point>& prepared, double tolerance)
-      : family_(family), prepared_(prepared), tolerance_(tolerance) {}
+  // `enclosures`, indexed by sub-patch kind: the affine enclosure of kinds that have one.
+  FaceSearch(const Family& family, const std::vector<Point>& prepared, const std::vector<AffineEnclosure>& enclosures,
+             double tolerance)
+      : family_(family), prepared_(prepared), enclosures_(enclosures), tolerance_(tolerance) {}
 
-  // Distance from q to the axis-aligned box of a sub-patch's control points.
-  static double box_distance(const SubPatch& s, const Point& q);
+  // A lower bound on the distance from q to the convex hull of a sub-patch's control points.
+  static double hull_bound(const SubPatch& s, const Point& q);
+  // The larger of that and the affine enclosure's bound where its kind has one.
+  double lower_bound(const SubPatch& s, const Point& q) const;
 
-  // Improves `best` (distance +infinity when there is none yet) with the
-  // closest point of prepared face `face`; true when it did.
-  bool search(std::size_t face, const Point& q, FaceHit& best) const;
+  // A first upper bound: Gauss-Newton on prepared face `face` from (x, y); improves `best`.
+  void start(std::size_t face, double x, double y, const Point& q, FaceHit& best) const;
+  // Queues prepared face `face` unless its hull is provably not nearer than best - tolerance.
+  void add(std::size_t face, const Point& q, const FaceHit& best);
+  // Works the queue to its end; improves `best`.
+  void run(const Point& q, FaceHit& best);
 
   // The limit point and its partial derivatives in the patch parameters at (x, y)
   // of a sub-patch (central differences of exact evaluations, one-sided at its border).
   void derivatives(const SubPatch& s, double x, double y, Point& f, Point& du, Point& dv) const;
 
  private:
+  struct Node {
+    double bound;
+    int depth;
+    SubPatch patch;
+  };
   // Gauss-Newton from (x, y) inside the sub-patch; improves `best`.
   void polish(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const;
   bool consider(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const;  // true when it improved best
+  void push(double bound, int depth, SubPatch&& patch);
 
   const Family& family_;
   const std::vector<Point>& prepared_;
+  const std::vector<AffineEnclosure>& enclosures_;
   double tolerance_;
+  std::vector<Node> open_;  // a heap, smallest bound on top
 };
 
 }  // namespace stencil_runtime

@@ -59,6 +59,18 @@ struct SubPatch {
   double x0 = 0, y0 = 0, size = 1;
 };
 
+// Where the sub-patches of one kind reproduce affine functions of their
+// parameter: the parameter g_i of each control point (in the sub-patch's own
+// unit frame, in the order of SubPatch::points) with sum_i phi_i(x) g_i = x
+// and sum_i phi_i(x) = 1, and the largest deviation from both found when
+// checking them on exact evaluations. The closest-point search then bounds a
+// sub-patch's surface by its control points' distance from an affine image of
+// its domain, a much tighter enclosure than their hull.
+struct AffineParameters {
+  std::vector<std::array<double, 2>> at;
+  double residual = 0;
+};
+
 // An original face and a parameter in its domain.
 struct FaceParameterReal {
   std::size_t face = 0;
@@ -125,6 +137,8 @@ class Family {
   virtual int split(const SubPatch& in, SubPatch* children) const = 0;  // at most 4 children
   virtual Approximation evaluate(const SubPatch& in, double x, double y, double tolerance) const = 0;
   virtual FaceParameterReal original(std::size_t prepared_face, double x, double y) const = 0;
+  // Sub-patches of kind `kind` that reproduce affine functions (null: none known).
+  virtual const AffineParameters* affine_parameters(int /*kind*/) const { return nullptr; }
 
   // The unit normals at the points of prepared faces [begin, end) of a planned
   // layout (where points() puts the positions). The default: a family without

@@ -297,6 +297,34 @@ Approximation QuadFamily::evaluate(const SubPatch& in, double x, double y, doubl
   return checked_descent().evaluate(in.kind, points, sx, sy, tolerance);
 }
 
+const AffineParameters* QuadFamily::affine_parameters(int kind) const {
+  if (kind != 4 || !descent_ || !descent_->nonnegative()) return nullptr;
+  std::call_once(affine_once_, [this] {
+    // A regular patch's point (i, j), i, j in -1..2, sits at (j + 1) * 4 + (i + 1)
+    // (patch_descent.hpp) and, for a scheme that reproduces linear functions,
+    // at the parameter (i - c, j - c), c the scheme's shift (0 for primal ones).
+    // c is read from an evaluation of the patch whose points are their own (i,
+    // j, 1), and the reproduction checked at further parameters: the largest
+    // deviation found becomes the residual (a scheme without it gets none).
+    SubPatch grid;
+    grid.kind = 4;
+    for (int j = -1; j <= 2; ++j)
+      for (int i = -1; i <= 2; ++i) grid.points.push_back({double(i), double(j), 1.0});
+    const double shift = evaluate(grid, 0.5, 0.5, 1e-15).point[0] - 0.5;
+    auto out = std::make_unique<AffineParameters>();
+    for (const Point& p : grid.points) out->at.push_back({p[0] - shift, p[1] - shift});
+    double residual = 0;
+    for (double x : {0.0, 0.125, 0.3, 0.5, 0.77, 1.0})
+      for (double y : {0.0, 0.2, 0.5, 0.625, 0.9, 1.0}) {
+        const Point s = evaluate(grid, x, y, 1e-15).point;
+        residual = std::max({residual, std::fabs(s[0] - shift - x), std::fabs(s[1] - shift - y), std::fabs(s[2] - 1)});
+      }
+    out->residual = residual;
+    if (residual < 1e-9) affine_ = std::move(out);  // else the scheme does not reproduce linear functions
+  });
+  return affine_.get();
+}
+
 FaceParameterReal QuadFamily::original(std::size_t face, double x, double y) const {
   // Patch coordinates back to the prepared face's (undo the rotation).
   double u = x, v = y;

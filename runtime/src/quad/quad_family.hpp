@@ -38,6 +38,7 @@ class QuadFamily final : public Family {
   void root(std::size_t prepared_face, const Point* prepared, SubPatch& out) const override;
   int split(const SubPatch& in, SubPatch* children) const override;
   Approximation evaluate(const SubPatch& in, double x, double y, double tolerance) const override;
+  const AffineParameters* affine_parameters(int kind) const override;
   FaceParameterReal original(std::size_t prepared_face, double x, double y) const override;
   void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
   void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
@@ -77,6 +78,10 @@ class QuadFamily final : public Family {
   mutable std::mutex centre_derivatives_mutex_;
   mutable std::map<std::pair<int, int>, std::shared_ptr<const std::vector<double>>> centre_derivatives_;
   std::shared_ptr<const std::vector<double>> centre_derivatives(int valence, int n) const;
+
+  // The regular patch's control-point parameters, found once on first use.
+  mutable std::once_flag affine_once_;
+  mutable std::unique_ptr<const AffineParameters> affine_;
 
   const QuadPatchDescent& checked_descent() const;  // throws EvaluationError without descent data
   // d(patch x, y)/d(u, v), row-major: the product of every step's linear part

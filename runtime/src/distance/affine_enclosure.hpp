@@ -1,0 +1,37 @@
+#pragma once
+// A bound on a sub-patch's surface that is tight near a closest point
+// (docs/runtime.md, "Closest points"). Where a sub-patch's scheme reproduces
+// affine functions (Family::affine_parameters: control point i at parameter
+// g_i, sum_i phi_i(x) g_i = x, sum_i phi_i(x) = 1, phi_i >= 0), any affine map
+// L gives S(x) = L(x) + sum_i phi_i(x) (P_i - L(g_i)), so the surface over the
+// sub-patch's unit square lies within max_i |P_i - L(g_i)| of the
+// parallelogram L([0,1]^2). L is the least-squares fit of the control points
+// to their parameters. Unlike the control points' hull, the parallelogram
+// covers the sub-patch's own domain only, and the residuals are of second
+// order in the sub-patch's size.
+#include <array>
+#include <vector>
+
+#include "family/family.hpp"
+
+namespace stencil_runtime {
+
+class AffineEnclosure {
+ public:
+  AffineEnclosure() = default;  // none: lower_bound() is never asked
+  explicit AffineEnclosure(const AffineParameters& parameters);
+
+  bool empty() const { return fit_.empty(); }
+  // A lower bound on the distance from q to the surface of a sub-patch of this kind.
+  double lower_bound(const std::vector<Point>& points, const Point& q) const;
+
+ private:
+  std::vector<std::array<double, 2>> at_;
+  std::vector<std::array<double, 3>> fit_;  // per control point: its weights in L's origin, u and v columns
+  double residual_ = 0;
+};
+
+// The distance from q to the triangle (a, b, c).
+double point_triangle_distance(const Point& q, const Point& a, const Point& b, const Point& c);
+
+}  // namespace stencil_runtime
