@@ -194,9 +194,10 @@ ClosestPoint ClosestPointQuery::Impl::find(const Point& q) const {
   const double seed_distance = std::sqrt(nearest_d2);
   if (seed_distance < best.distance + tolerance) {
     const auto& at = seeds.at[nearest];
-    FaceHit seeded{seed_distance, seeds.faces[nearest], at[0], at[1], seeds.points[nearest], 0, 0};
-    search.start(seeded.face, at[0], at[1], q, seeded);
-    if (seeded.distance < best.distance) best = seeded;
+    FaceHit seeded;
+    seeded.distance = INFINITY;
+    search.start(seeds.faces[nearest], at[0], at[1], q, seeded);
+    if (seeded.distance < best.distance) best = std::move(seeded);
   }
 
   // Every face whose control box lies within the best distance is queued
@@ -222,18 +223,19 @@ ClosestPoint ClosestPointQuery::Impl::find(const Point& q) const {
   out.point = h.point;
   out.distance = h.distance;
   out.accuracy = tolerance + h.gap + h.evaluation;
-  // The normal: du x dv of the patch (differences of exact evaluations), in
-  // the original face's orientation.
-  SubPatch root;
-  family->root(h.face, prepared.data(), root);
-  Point f{}, du{}, dv{};
-  search.derivatives(root, h.x, h.y, f, du, dv);
-  Point n = cross(du, dv);
+  // The normal: du x dv of the patch, in the original face's orientation,
+  // from the sub-patch the point was found in (exact derivatives there).
+  double x = h.x, y = h.y;
+  Derivatives d;
+  search.derivatives(h.patch, x, y, d);
+  Point n = cross(d.du, d.dv);
   double len = std::sqrt(dot(n, n));
-  if (!(len > 0)) {  // a degenerate parametrisation at this point: the normal a little inside the patch
-    const double x = std::clamp(h.x, 1e-6, 1 - 1e-6), y = std::clamp(h.y, 1e-6, 1 - 1e-6);
-    search.derivatives(root, 0.999 * x + 0.0005, 0.999 * y + 0.0005, f, du, dv);
-    n = cross(du, dv);
+  if (!(len > 0)) {  // a degenerate parametrisation at this point: the normal a little inside the sub-patch
+    const SubPatch& s = h.patch;
+    x = s.x0 + s.size * (0.999 * std::clamp((h.x - s.x0) / s.size, 1e-6, 1 - 1e-6) + 0.0005);
+    y = s.y0 + s.size * (0.999 * std::clamp((h.y - s.y0) / s.size, 1e-6, 1 - 1e-6) + 0.0005);
+    search.derivatives(s, x, y, d);
+    n = cross(d.du, d.dv);
     len = std::sqrt(dot(n, n));
   }
   if (len > 0)

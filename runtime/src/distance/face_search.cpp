@@ -75,42 +75,59 @@ double FaceSearch::lower_bound(const SubPatch& s, const Point& q) const {
 
 bool FaceSearch::consider(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const {
   const Approximation a = family_.evaluate(s, x, y, tolerance_ * 0.01);
-  const double d = length(minus(a.point, q));
+  return improve(s, x, y, a.point, a.bound, q, best);
+}
+
+bool FaceSearch::improve(const SubPatch& s, double x, double y, const Point& point, double bound, const Point& q,
+                         FaceHit& best) const {
+  const double d = length(minus(point, q));
   if (d >= best.distance) return false;
-  best = {d, s.face, x, y, a.point, best.gap, a.bound};
+  best.distance = d, best.face = s.face, best.x = x, best.y = y, best.point = point, best.evaluation = bound;
+  best.patch = s;
   return true;
 }
 
-void FaceSearch::derivatives(const SubPatch& s, double x, double y, Point& f, Point& du, Point& dv) const {
+void FaceSearch::derivatives(const SubPatch& s, double& x, double& y, Derivatives& out) const {
+  if (family_.derivatives(s, x, y, out)) return;  // exact (at a grid point next to (x, y) for non-polynomial schemes)
+  // Central differences of exact evaluations (one-sided at the border) where
+  // the family has no derivative: next to an extraordinary vertex.
   const double h = s.size * 1e-5;
   const double x1 = s.x0 + s.size, y1 = s.y0 + s.size;
   const double xa = std::max(s.x0, x - h), xb = std::min(x1, x + h), ya = std::max(s.y0, y - h), yb = std::min(y1, y + h);
   const double tol = tolerance_ * 1e-4;
-  f = family_.evaluate(s, x, y, tol).point;
+  out.point = family_.evaluate(s, x, y, tol).point;
   const Point fxa = family_.evaluate(s, xa, y, tol).point, fxb = family_.evaluate(s, xb, y, tol).point;
   const Point fya = family_.evaluate(s, x, ya, tol).point, fyb = family_.evaluate(s, x, yb, tol).point;
   for (int k = 0; k < 3; ++k) {
-    du[k] = (fxb[k] - fxa[k]) / (xb - xa);
-    dv[k] = (fyb[k] - fya[k]) / (yb - ya);
+    out.du[k] = (fxb[k] - fxa[k]) / (xb - xa);
+    out.dv[k] = (fyb[k] - fya[k]) / (yb - ya);
   }
 }
 
 void FaceSearch::polish(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const {
+  double last_x = -1, last_y = -1;
   for (int step = 0; step < 12; ++step) {
-    Point f{}, du{}, dv{};
-    derivatives(s, x, y, f, du, dv);
-    const Point r = minus(f, q);
+    Derivatives d;
+    const double ax = x, ay = y;
+    derivatives(s, x, y, d);  // (x, y) may move to where the derivatives are exact
+    const bool snapped = x != ax || y != ay;
+    improve(s, x, y, d.point, 0, q, best);
+    if (step > 0 && x == last_x && y == last_y) break;  // back on the same grid point
+    last_x = x, last_y = y;
+    const Point r = minus(d.point, q);
     // Gauss-Newton: (J^T J) d = -J^T r, clamped to the sub-patch.
-    const double a = dot(du, du), b = dot(du, dv), c = dot(dv, dv);
-    const double gu = dot(r, du), gv = dot(r, dv), det = a * c - b * b;
+    const double a = dot(d.du, d.du), b = dot(d.du, d.dv), c = dot(d.dv, d.dv);
+    const double gu = dot(r, d.du), gv = dot(r, d.dv), det = a * c - b * b;
     if (!(det > 1e-300)) break;
     const double dx = -(c * gu - b * gv) / det, dy = -(a * gv - b * gu) / det;
     const double nx = std::clamp(x + dx, s.x0, s.x0 + s.size), ny = std::clamp(y + dy, s.y0, s.y0 + s.size);
     const bool small = std::fabs(nx - x) + std::fabs(ny - y) < 1e-13 * s.size;
     x = nx, y = ny;
-    if (small) break;
+    if (small) {
+      if (!snapped) consider(s, x, y, q, best);  // else the grid point is as near as it gets
+      break;
+    }
   }
-  consider(s, x, y, q, best);
 }
 
 void FaceSearch::push(double bound, int depth, SubPatch&& patch) {
@@ -121,7 +138,6 @@ void FaceSearch::push(double bound, int depth, SubPatch&& patch) {
 void FaceSearch::start(std::size_t face, double x, double y, const Point& q, FaceHit& best) const {
   SubPatch root;
   family_.root(face, prepared_.data(), root);
-  consider(root, x, y, q, best);
   polish(root, x, y, q, best);
 }
 

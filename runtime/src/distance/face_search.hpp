@@ -24,6 +24,7 @@ struct FaceHit {
   Point point{0, 0, 0};
   double gap = 0;        // how much closer than distance - tolerance the surface might still be (0 normally)
   double evaluation = 0; // the evaluation bound of `point`
+  SubPatch patch;        // the sub-patch it was found in (derivatives there are exact at its grid points)
 };
 
 class FaceSearch {
@@ -45,9 +46,11 @@ class FaceSearch {
   // Works the queue to its end; improves `best`.
   void run(const Point& q, FaceHit& best);
 
-  // The limit point and its partial derivatives in the patch parameters at (x, y)
-  // of a sub-patch (central differences of exact evaluations, one-sided at its border).
-  void derivatives(const SubPatch& s, double x, double y, Point& f, Point& du, Point& dv) const;
+  // The limit point and its partial derivatives in the patch parameters at
+  // (x, y) of a sub-patch: exact where the family has them (Family::derivatives,
+  // which may move (x, y) to its grid), else central differences of exact
+  // evaluations (one-sided at the sub-patch's border).
+  void derivatives(const SubPatch& s, double& x, double& y, Derivatives& out) const;
 
  private:
   struct Node {
@@ -58,6 +61,7 @@ class FaceSearch {
   // Gauss-Newton from (x, y) inside the sub-patch; improves `best`.
   void polish(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const;
   bool consider(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const;  // true when it improved best
+  bool improve(const SubPatch& s, double x, double y, const Point& point, double bound, const Point& q, FaceHit& best) const;
   void push(double bound, int depth, SubPatch&& patch);
 
   const Family& family_;

@@ -137,6 +137,12 @@ class Family {
   virtual int split(const SubPatch& in, SubPatch* children) const = 0;  // at most 4 children
   virtual Approximation evaluate(const SubPatch& in, double x, double y, double tolerance) const = 0;
   virtual FaceParameterReal original(std::size_t prepared_face, double x, double y) const = 0;
+  // The limit point and its derivatives in the patch parameters at, or next
+  // to, (x, y) inside a sub-patch, exactly: where the scheme's derivatives
+  // are exact only on stored grids, (x, y) moves to the nearest point of the
+  // sub-patch's finest stored grid. False where there is none (an
+  // extraordinary vertex, tables without derivatives, a family without them).
+  virtual bool derivatives(const SubPatch& /*in*/, double& /*x*/, double& /*y*/, Derivatives& /*out*/) const { return false; }
   // Sub-patches of kind `kind` that reproduce affine functions (null: none known).
   virtual const AffineParameters* affine_parameters(int /*kind*/) const { return nullptr; }
 

@@ -56,6 +56,8 @@ class QuadPatchDescent {
   void child(int valence, const std::vector<Point>& points, int cx, int cy, std::vector<Point>& out, int& out_valence) const;
   // Whether every subdivision weight (mask, A0, regular children) is non-negative.
   bool nonnegative() const;
+  // Whether the regular patch is polynomial (derivatives exact at any parameter).
+  bool polynomial_regular() const { return d_.degree > 0; }
 
  private:
   Approximation regular_bound(const std::vector<Point>& q, double x, double y) const;

@@ -297,6 +297,27 @@ Approximation QuadFamily::evaluate(const SubPatch& in, double x, double y, doubl
   return checked_descent().evaluate(in.kind, points, sx, sy, tolerance);
 }
 
+bool QuadFamily::derivatives(const SubPatch& in, double& x, double& y, Derivatives& out) const {
+  const QuadPatchDescent& descent = checked_descent();
+  double sx = std::clamp((x - in.x0) / in.size, 0.0, 1.0), sy = std::clamp((y - in.y0) / in.size, 0.0, 1.0);
+  std::vector<Point> points = in.points;
+  if (descent.polynomial_regular()) {
+    if (in.kind != 4 && sx == 0 && sy == 0) return false;  // no parametric derivative at the extraordinary vertex
+    out = descent.derivatives(in.kind, points, sx, sy);
+  } else {
+    // phi and phi' are stored on 1/(2N) for the largest rate N: the nearest such point of the sub-patch.
+    if (!tables_.has_regular_derivatives()) return false;
+    const std::int64_t grid = 2 * static_cast<std::int64_t>(*std::max_element(tables_.rates().begin(), tables_.rates().end()));
+    const std::int64_t i = std::llround(sx * static_cast<double>(grid)), j = std::llround(sy * static_cast<double>(grid));
+    if (in.kind != 4 && i == 0 && j == 0) return false;
+    out = descent.derivatives(in.kind, points, Fraction::make(i, grid), Fraction::make(j, grid));
+    sx = static_cast<double>(i) / static_cast<double>(grid), sy = static_cast<double>(j) / static_cast<double>(grid);
+  }
+  x = in.x0 + sx * in.size, y = in.y0 + sy * in.size;
+  for (int k = 0; k < 3; ++k) out.du[k] /= in.size, out.dv[k] /= in.size;
+  return true;
+}
+
 const AffineParameters* QuadFamily::affine_parameters(int kind) const {
   if (kind != 4 || !descent_ || !descent_->nonnegative()) return nullptr;
   std::call_once(affine_once_, [this] {
