@@ -12,6 +12,9 @@ namespace {
 Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double length(const Point& a) { return std::sqrt(dot(a, a)); }
+Point cross(const Point& a, const Point& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
 
 }  // namespace
 
@@ -27,27 +30,68 @@ AffineEnclosure::AffineEnclosure(const AffineParameters& parameters) : at_(param
   for (Eigen::Index i = 0; i < n; ++i) fit_[static_cast<std::size_t>(i)] = {weights(i, 0), weights(i, 1), weights(i, 2)};
 }
 
+namespace {
+
+double point_segment_distance(const Point& q, const Point& a, const Point& b) {
+  const Point ab = minus(b, a), aq = minus(q, a);
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0 ? std::clamp(dot(aq, ab) / len2, 0.0, 1.0) : 0.0;
+  return length(minus(aq, Point{t * ab[0], t * ab[1], t * ab[2]}));
+}
+
+}  // namespace
+
 double AffineEnclosure::lower_bound(const std::vector<Point>& points, const Point& q) const {
   Point o{0, 0, 0}, u{0, 0, 0}, v{0, 0, 0};
   double magnitude = 0;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    for (int k = 0; k < 3; ++k) {
-      o[k] += fit_[i][0] * points[i][k], u[k] += fit_[i][1] * points[i][k], v[k] += fit_[i][2] * points[i][k];
-      magnitude = std::max(magnitude, std::fabs(points[i][k]));
-    }
-  double spread = 0;  // max_i |P_i - L(g_i)|
-  for (std::size_t i = 0; i < points.size(); ++i) {
+  const std::size_t n = points.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& p = points[i];
+    const auto& w = fit_[i];
+    for (int k = 0; k < 3; ++k) o[k] += w[0] * p[k], u[k] += w[1] * p[k], v[k] += w[2] * p[k];
+    magnitude = std::max({magnitude, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])});
+  }
+  // The residuals E_i = P_i - L(g_i), split along the parallelogram's unit
+  // normal m (their range [low, high]) and across it (the largest length).
+  // The surface lies in L([0,1]^2) + hull(E_i), so in the slab of the
+  // parallelogram grown by `across` in its plane and by [low, high] along m.
+  const Point m0 = cross(u, v);
+  const double m_len = length(m0);
+  const bool flat = m_len > 1e-12 * (length(u) * length(v));
+  const Point m = flat ? Point{m0[0] / m_len, m0[1] / m_len, m0[2] / m_len} : Point{0, 0, 0};
+  double low = 0, high = 0, across2 = 0;
+  for (std::size_t i = 0; i < n; ++i) {
     Point e{};
     for (int k = 0; k < 3; ++k) e[k] = points[i][k] - (o[k] + at_[i][0] * u[k] + at_[i][1] * v[k]);
-    spread = std::max(spread, length(e));
+    const double h = dot(e, m);
+    low = std::min(low, h), high = std::max(high, h);
+    across2 = std::max(across2, dot(e, e) - h * h);
   }
   // The reproduction's residual moves L(x) by at most (|u| + |v| + |o|) times
   // it; the arithmetic here rounds by a few units in the last place of the points.
-  spread += residual_ * (length(u) + length(v) + length(o)) + 64 * std::numeric_limits<double>::epsilon() * magnitude;
+  const double slack = residual_ * (length(u) + length(v) + length(o)) + 64 * std::numeric_limits<double>::epsilon() * magnitude;
+  const double across = std::sqrt(std::max(across2, 0.0)) + slack;
+  low -= slack, high += slack;
   const Point a = o, b{o[0] + u[0], o[1] + u[1], o[2] + u[2]}, d{o[0] + v[0], o[1] + v[1], o[2] + v[2]},
               c{b[0] + v[0], b[1] + v[1], b[2] + v[2]};
-  const double to_square = std::min(point_triangle_distance(q, a, b, c), point_triangle_distance(q, a, c, d));
-  return to_square - spread;
+  if (!flat) {  // a degenerate parallelogram: the ball around it
+    const double spread = std::hypot(across, std::max(-low, high));
+    return std::min(point_triangle_distance(q, a, b, c), point_triangle_distance(q, a, c, d)) - spread;
+  }
+  // q's height above the plane, and its foot's distance in the plane from the parallelogram.
+  const Point w = minus(q, o);
+  const double height = dot(w, m);
+  const Point foot{q[0] - height * m[0], q[1] - height * m[1], q[2] - height * m[2]};
+  const double uu = dot(u, u), uv = dot(u, v), vv = dot(v, v), fu = dot(minus(foot, o), u), fv = dot(minus(foot, o), v);
+  const double det = uu * vv - uv * uv;
+  const double s = (vv * fu - uv * fv) / det, t = (uu * fv - uv * fu) / det;
+  double in_plane = 0;
+  if (!(s >= 0 && s <= 1 && t >= 0 && t <= 1))
+    in_plane = std::min({point_segment_distance(foot, a, b), point_segment_distance(foot, b, c), point_segment_distance(foot, c, d),
+                         point_segment_distance(foot, d, a)});
+  const double sideways = std::max(in_plane - across, 0.0);
+  const double upwards = height > high ? height - high : (height < low ? low - height : 0.0);
+  return std::sqrt(sideways * sideways + upwards * upwards);
 }
 
 double point_triangle_distance(const Point& q, const Point& a, const Point& b, const Point& c) {

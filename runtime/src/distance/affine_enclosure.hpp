@@ -4,11 +4,14 @@
 // affine functions (Family::affine_parameters: control point i at parameter
 // g_i, sum_i phi_i(x) g_i = x, sum_i phi_i(x) = 1, phi_i >= 0), any affine map
 // L gives S(x) = L(x) + sum_i phi_i(x) (P_i - L(g_i)), so the surface over the
-// sub-patch's unit square lies within max_i |P_i - L(g_i)| of the
-// parallelogram L([0,1]^2). L is the least-squares fit of the control points
-// to their parameters. Unlike the control points' hull, the parallelogram
-// covers the sub-patch's own domain only, and the residuals are of second
-// order in the sub-patch's size.
+// sub-patch's unit square lies in the parallelogram L([0,1]^2) plus the hull
+// of the residuals E_i = P_i - L(g_i): inside the slab made by growing the
+// parallelogram in its plane by the residuals' largest part across its normal
+// and along the normal by their range. L is the least-squares fit of the
+// control points to their parameters. Unlike the control points' hull, the
+// slab covers the sub-patch's own domain only, and the residuals are of second
+// order in the sub-patch's size (mostly along the plane where the
+// parametrisation is uneven, which the slab does not charge to the distance).
 #include <array>
 #include <vector>
 
