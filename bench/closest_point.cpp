@@ -11,8 +11,11 @@
 // Each row: queries per second, the build time and memory of the query
 // structure, and the error of the distances against (a)'s, as fractions of
 // the diagonal (max and mean). (a)'s error is its own bound (the tolerance).
-// Usage: bench_closest_point TABLES.sgs [MESH.obj ...]
-// (TABLES must hold the rates 2, 4, 8, 16 and 32 for the triangle meshes.)
+// Usage: bench_closest_point TABLES.sgs [MESH.obj[@1] ...]
+// (TABLES must hold the rates 2, 4, 8, 16 and 32 for the triangle meshes;
+// MESH@1: the mesh after one step of the scheme's own subdivision. Default:
+// the bundled chess piece (224 faces), rook (368) and rook@1 (1,472), seed
+// 000's range of piece sizes.)
 #include <embree3/rtcore.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -30,6 +33,7 @@
 #include "distance/affine_enclosure.hpp"  // point_triangle_distance
 #include "stencil_runtime/closest_point.hpp"
 #include "stencil_runtime/mesh_io.hpp"
+#include "stencil_runtime/subdivide.hpp"
 #include "stencil_runtime/tessellation.hpp"
 
 using namespace stencil_runtime;
@@ -132,7 +136,8 @@ int main(int argc, char** argv) try {
   const auto tables = Tables::load(argv[1]);
   std::vector<std::string> meshes;
   for (int i = 2; i < argc; ++i) meshes.push_back(argv[i]);
-  if (meshes.empty()) meshes.push_back(std::string(STENCIL_SOURCE_DIR) + "/meshes/chess-piece.obj");
+  if (meshes.empty())
+    for (const char* name : {"chess-piece.obj", "rook.obj", "rook.obj@1"}) meshes.push_back(std::string(STENCIL_SOURCE_DIR) + "/meshes/" + name);
   RTCDevice device = rtcNewDevice(nullptr);
   rtcSetDeviceMemoryMonitorFunction(device, count_memory, nullptr);
   constexpr std::size_t kQueries = 10000;
@@ -141,8 +146,10 @@ int main(int argc, char** argv) try {
               tables->scheme().c_str(), kQueries);
   std::printf("| mesh | method | triangles | build (s) | memory (MB) | queries/s, 1 thread | 2 threads | max error / diagonal | mean error / diagonal |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
-  for (const std::string& path : meshes) {
-    const Mesh mesh = read_obj(path);
+  for (const std::string& argument : meshes) {
+    const bool refine = argument.size() > 2 && argument.substr(argument.size() - 2) == "@1";
+    const std::string path = refine ? argument.substr(0, argument.size() - 2) : argument;
+    const Mesh mesh = refine ? subdivide(*tables, read_obj(path)) : read_obj(path);
     const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
     const Surface surface(topology, mesh.positions);
     Point lo = mesh.positions[0], hi = lo;
@@ -155,7 +162,7 @@ int main(int argc, char** argv) try {
     std::vector<Point> queries(kQueries);
     for (Point& q : queries)
       for (int k = 0; k < 3; ++k) q[k] = 0.5 * (lo[k] + hi[k]) + widen * (hi[k] - lo[k]) * unit(rng);
-    const std::string name = path.substr(path.find_last_of('/') + 1);
+    const std::string name = argument.substr(argument.find_last_of('/') + 1) + " (" + std::to_string(mesh.face_count()) + " faces)";
 
     // (a) exact.
     const ClosestPointQuery exact(surface);

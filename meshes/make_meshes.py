@@ -235,6 +235,41 @@ def make_chess_piece():
     return R.pos, R.faces
 
 
+def make_rook():
+    """Rook-like surface of revolution, z up, height about 2.3: flat base
+    closed by a pole of valence 8 (16-vertex ring, 8 valence-3 vertices);
+    base band of 16 segments; 16 -> 24 widening into the tower (4 valence-5,
+    4 valence-3 vertices); a tower of 24 segments flaring into a crown whose
+    rim alternates high and low (12 merlons), down its inside to a recessed
+    platform; 24 -> 12 reduction (6 valence-3, 6 valence-5 vertices) and a
+    pole of valence 6 (12-vertex ring, 6 valence-3 vertices) at its centre."""
+    R = Revolver()
+    bottom = R.pole(0.0)
+    rings16 = [R.ring(16, 0.50, 0.0, r_odd=0.74, z_odd=0.0)]
+    for r, z in [(0.96, 0.0), (1.02, 0.10), (0.96, 0.22), (0.82, 0.32)]:
+        rings16.append(R.ring(16, r, z))
+    rings24 = [R.ring(24, r, z) for r, z in [
+        (0.70, 0.44), (0.64, 0.65), (0.60, 0.95), (0.58, 1.25), (0.60, 1.50),  # tower
+        (0.68, 1.68), (0.78, 1.80), (0.81, 1.92),  # flare
+    ]]
+    rings24.append(R.ring(24, 0.82, 2.28, r_odd=0.82, z_odd=2.06))  # outer rim: merlons and gaps
+    rings24.append(R.ring(24, 0.66, 2.30, r_odd=0.66, z_odd=2.08))  # inner rim
+    rings24.append(R.ring(24, 0.60, 2.00))  # inside wall, down to the platform
+    rings12 = [R.ring(12, 0.42, 1.95), R.ring(12, 0.16, 1.93, r_odd=0.26, z_odd=1.93)]
+    top = R.pole(1.93)
+
+    R.cap(bottom, rings16[0], top=False)
+    for lo, hi in zip(rings16, rings16[1:]):
+        R.band(lo, hi)
+    R.widen(rings16[-1], rings24[0], dz=0.04)
+    for lo, hi in zip(rings24, rings24[1:]):
+        R.band(lo, hi)
+    R.halve(rings24[-1], rings12[0], dz=-0.02)
+    R.band(rings12[0], rings12[1])
+    R.cap(top, rings12[-1], top=True)
+    return R.pos, R.faces
+
+
 def make_bumpy_sphere(m=4, amplitude=0.15):
     """Cube subdivided m x m per side, projected to the sphere (equal-angle
     warp) and displaced radially by a smooth bump function: valence 3 at the 8
@@ -277,6 +312,7 @@ MESHES = [
     ("torus-3-5.obj", make_torus, 1, "12 x 8 torus (R = 2, r = 0.7) with 2 edge rotations"),
     ("chess-piece.obj", make_chess_piece, 0, "pawn-like surface of revolution with poles of valence 8 and 6"),
     ("bumpy-sphere.obj", make_bumpy_sphere, 0, "cube-sphere (4 x 4 quads per side) with radial bumps"),
+    ("rook.obj", make_rook, 0, "rook-like surface of revolution with a crown of 12 merlons"),
 ]
 
 
