@@ -213,6 +213,7 @@ ClosestPoint ClosestPointQuery::Impl::find(const Point& q) const {
   rtcInitPointQueryContext(&context);
   rtcPointQuery(scene, &query, &context, visit_face, &state);
   search.run(q, best);
+  search.refine(q, best);
 
   ClosestPoint out;
   if (!(best.distance < options.max_distance)) return out;  // nothing nearer than max_distance

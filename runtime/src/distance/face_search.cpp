@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace stencil_runtime {
 
@@ -18,6 +19,15 @@ constexpr std::size_t kMaxNodes = 200000;
 // sub-patches they save).
 constexpr int kGilbertSteps = 16;
 constexpr double kGilbertGap = 1e-8;
+// refine(): Gauss-Newton steps at most, the cosine between the residual and
+// a tangent taken as orthogonal, and the smallest sub-patch it descends to.
+constexpr int kRefineSteps = 64;
+constexpr double kOrthogonal = 1e-12;
+constexpr double kSmallest = 1e-14;
+// The parameter step (relative to the sub-patch) for second derivatives by
+// differences, and the smallest damping of a Newton step tried.
+constexpr double kSecondStep = 1.0 / 64;
+constexpr double kSmallestDamping = 1e-6;
 
 Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -129,6 +139,120 @@ void FaceSearch::polish(const SubPatch& s, double x, double y, const Point& q, F
       if (!snapped) consider(s, x, y, q, best);  // else the grid point is as near as it gets
       break;
     }
+  }
+}
+
+namespace {
+
+// The larger cosine between the residual q - p and the two tangents.
+double tangent_cosine(const Derivatives& d, const Point& q) {
+  const Point r = minus(q, d.point);
+  const double lr = length(r), lu = length(d.du), lv = length(d.dv);
+  if (!(lr > 0 && lu > 0 && lv > 0)) return 0;
+  return std::max(std::fabs(dot(r, d.du)) / (lr * lu), std::fabs(dot(r, d.dv)) / (lr * lv));
+}
+
+}  // namespace
+
+void FaceSearch::refine(const Point& q, FaceHit& best) const {
+  if (best.patch.points.empty()) return;
+  const auto holds = [](const SubPatch& k, double x, double y) {
+    return x >= k.x0 && x <= k.x0 + k.size && y >= k.y0 && y <= k.y0 + k.size;
+  };
+  SubPatch children[4];
+  // The sub-patches on the path hold their control points relative to an
+  // origin near them (`offsets`): deep sub-patches are tiny, and points
+  // rounded at the size of the coordinates would leave derivatives (point
+  // differences over the sub-patch's size) with errors of 1e-16 times the
+  // coordinates over that size. Relative to their own centroid they keep
+  // errors relative to their own extent; derivatives do not see the origin.
+  std::vector<Point> offsets(1, Point{0, 0, 0});
+  // The child of the path's end that holds (x, y) (of two or four that do, the one whose centre is nearest).
+  const auto descend = [&](std::vector<SubPatch>& path, double x, double y) {
+    const int n = family_.split(path.back(), children);
+    int pick = 0;
+    double nearest = INFINITY;
+    for (int k = 0; k < n; ++k) {
+      const double e = std::fabs(children[k].x0 + 0.5 * children[k].size - x) + std::fabs(children[k].y0 + 0.5 * children[k].size - y);
+      if (e < nearest) nearest = e, pick = k;
+    }
+    SubPatch& child = children[pick];
+    Point centre{0, 0, 0};
+    for (const Point& p : child.points)
+      for (int k = 0; k < 3; ++k) centre[k] += p[k] / static_cast<double>(child.points.size());
+    for (Point& p : child.points)
+      for (int k = 0; k < 3; ++k) p[k] -= centre[k];
+    const Point& base = offsets.back();
+    offsets.push_back({base[0] + centre[0], base[1] + centre[1], base[2] + centre[2]});
+    path.push_back(std::move(child));
+  };
+  // Derivatives on the path's end, the point moved back by its origin.
+  const auto derivatives_at = [&](const std::vector<SubPatch>& path, double& x, double& y, Derivatives& out) {
+    if (!family_.derivatives(path.back(), x, y, out)) return false;
+    for (int k = 0; k < 3; ++k) out.point[k] += offsets.back()[k];
+    return true;
+  };
+  // The path from the face's patch down to a sub-patch around the current
+  // point: as small as the one the best point was found in at first, then
+  // about twice the last step (the sub-patch's stored grid, where the
+  // derivatives are exact, then resolves the step to a few per cent). It is kept so that
+  // the point can move up and over a sub-patch's border.
+  std::vector<SubPatch> path(1);
+  family_.root(best.face, prepared_.data(), path[0]);
+  const auto reach = [&](double x, double y, double size) {
+    while (path.size() > 1 && !holds(path.back(), x, y)) path.pop_back(), offsets.pop_back();
+    while (path.back().size > size && path.back().size > kSmallest) descend(path, x, y);
+  };
+  double x = best.x, y = best.y;
+  reach(x, y, best.patch.size);
+  Derivatives d;
+  if (!derivatives_at(path, x, y, d)) return;  // an extraordinary vertex: no tangents
+  improve(path.back(), x, y, d.point, 0, q, best);
+  double t = 1;  // the damping of the Newton step
+  for (int iteration = 0; iteration < kRefineSteps; ++iteration) {
+    if (tangent_cosine(d, q) <= kOrthogonal) return;
+    // Newton for |S - q|^2 / 2: gradient J^T r, Hessian J^T J + sum_k r_k
+    // S_k'' with the second derivatives from differences of exact first
+    // derivatives a grid step away (Gauss-Newton where that is not positive).
+    const SubPatch& s = path.back();
+    const Point r = minus(d.point, q);
+    double hxx = dot(d.du, d.du), hxy = dot(d.du, d.dv), hyy = dot(d.dv, d.dv);
+    const double gu = dot(r, d.du), gv = dot(r, d.dv);
+    double xh = std::min(x + kSecondStep * s.size, s.x0 + s.size), yh = y, xv = x, yv = std::min(y + kSecondStep * s.size, s.y0 + s.size);
+    if (xh == x) xh = std::max(x - kSecondStep * s.size, s.x0);
+    if (yv == y) yv = std::max(y - kSecondStep * s.size, s.y0);
+    Derivatives dh, dw;
+    if (derivatives_at(path, xh, yh, dh) && derivatives_at(path, xv, yv, dw) && xh != x && yv != y && yh == y && xv == x) {
+      const double ex = xh - x, ey = yv - y;
+      const double suu = (dot(r, dh.du) - dot(r, d.du)) / ex, svv = (dot(r, dw.dv) - dot(r, d.dv)) / ey;
+      const double suv = 0.5 * ((dot(r, dh.dv) - dot(r, d.dv)) / ex + (dot(r, dw.du) - dot(r, d.du)) / ey);
+      if (hxx + suu > 0 && (hxx + suu) * (hyy + svv) - (hxy + suv) * (hxy + suv) > 0) hxx += suu, hxy += suv, hyy += svv;
+    }
+    const double det = hxx * hyy - hxy * hxy;
+    if (!(det > 0)) return;
+    const double sx = -(hyy * gu - hxy * gv) / det, sy = -(hxx * gv - hxy * gu) / det;
+    // A damped step, halved until the point comes nearer.
+    bool moved = false;
+    for (; t > kSmallestDamping; t /= 2) {
+      double nx = std::clamp(x + t * sx, 0.0, 1.0), ny = std::clamp(y + t * sy, 0.0, 1.0);
+      const double step = std::fabs(nx - x) + std::fabs(ny - y);
+      if (!(step > 0)) return;  // nothing left to move (against the patch's border, or converged in doubles)
+      reach(nx, ny, 2 * step);
+      Derivatives n;
+      if (!derivatives_at(path, nx, ny, n)) return;
+      // Nearer; or, where distances no longer differ in doubles, more nearly orthogonal.
+      const double now = length(r), then = length(minus(n.point, q));
+      const bool nearer = then < now || (then <= now * (1 + 4 * std::numeric_limits<double>::epsilon()) &&
+                                         tangent_cosine(n, q) < tangent_cosine(d, q));
+      if (nearer || (nx == x && ny == y)) {
+        if (nx == x && ny == y) return;  // the grid does not resolve the step: as near as the tables go
+        x = nx, y = ny, d = n, moved = true;
+        improve(path.back(), x, y, d.point, 0, q, best);
+        break;
+      }
+    }
+    if (!moved) return;
+    t = std::min(1.0, 2 * t);
   }
 }
 

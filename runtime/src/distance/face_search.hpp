@@ -45,6 +45,11 @@ class FaceSearch {
   void add(std::size_t face, const Point& q, const FaceHit& best);
   // Works the queue to its end; improves `best`.
   void run(const Point& q, FaceHit& best);
+  // Where the best point is not yet a stationary point of the distance (its
+  // sub-patch's exact derivatives sit on a grid, so Gauss-Newton stopped at
+  // a grid point), follows it down into smaller sub-patches, Gauss-Newton in
+  // each, until the residual is orthogonal to the surface.
+  void refine(const Point& q, FaceHit& best) const;
 
   // The limit point and its partial derivatives in the patch parameters at
   // (x, y) of a sub-patch: exact where the family has them (Family::derivatives,
