@@ -26,7 +26,7 @@ constexpr double kOrthogonal = 1e-12;
 constexpr double kSmallest = 1e-14;
 // The parameter step (relative to the sub-patch) for second derivatives by
 // differences, and the smallest damping of a Newton step tried.
-constexpr double kSecondStep = 1.0 / 64;
+constexpr double kSecondStep = 1.0 / 4;
 constexpr double kSmallestDamping = 1e-6;
 
 Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
@@ -156,6 +156,11 @@ double tangent_cosine(const Derivatives& d, const Point& q) {
 
 void FaceSearch::refine(const Point& q, FaceHit& best) const {
   if (best.patch.points.empty()) return;
+  {  // Already stationary (Gauss-Newton converged where derivatives are exact anywhere)?
+    double x = best.x, y = best.y;
+    Derivatives d;
+    if (family_.derivatives(best.patch, x, y, d) && x == best.x && y == best.y && tangent_cosine(d, q) <= kOrthogonal) return;
+  }
   const auto holds = [](const SubPatch& k, double x, double y) {
     return x >= k.x0 && x <= k.x0 + k.size && y >= k.y0 && y <= k.y0 + k.size;
   };
