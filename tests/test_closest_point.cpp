@@ -16,6 +16,7 @@
 #include "runtime_api.hpp"
 #include "stencil_runtime/closest_point.hpp"
 #include "stencil_runtime/mesh_io.hpp"
+#include "stencil_runtime/tessellation.hpp"
 
 using namespace stencil_runtime;
 using test_runtime::surface_of;
@@ -126,8 +127,10 @@ double diagonal_of(const Mesh& mesh) {
 
 TEST_CASE("Catmull-Clark closest points equal a brute force on OpenSubdiv Bfr", "[runtime][distance]") {
   const auto cc = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 16", "sgs").string());
-  for (const char* name : {"cube.obj", "torus-3-5.obj"}) {
+  for (const char* name : {"cube.obj", "torus-3-5.obj", "chess-piece.obj", "rook.obj"}) {
     const Mesh mesh = read_obj((kMeshes / name).string());
+    // The big meshes get fewer queries (the brute force samples every face).
+    const int per_kind = mesh.face_count() > 100 ? 3 : 12;
     const Surface surface = surface_of(cc, mesh);
     const ClosestPointQuery query(surface);
     const BfrOracle oracle(mesh);
@@ -136,8 +139,8 @@ TEST_CASE("Catmull-Clark closest points equal a brute force on OpenSubdiv Bfr", 
     std::uniform_real_distribution<double> unit(-1, 1);
     std::vector<Point> queries;
     // Near the surface, far away, on it, next to the valence-3 corners of the cube, and on the medial axis (the centre).
-    for (int i = 0; i < 12; ++i) {
-      const std::size_t f = static_cast<std::size_t>(i) % mesh.face_count();
+    for (int i = 0; i < per_kind; ++i) {
+      const std::size_t f = static_cast<std::size_t>(i * 37) % mesh.face_count();
       const Point on = surface.evaluate(f, (1 + i % 5) / 7.0, (2 + i % 3) / 9.0, 1e-14 * diagonal).point;
       queries.push_back(on);
       queries.push_back({on[0] + 0.05 * diagonal * unit(rng), on[1] + 0.05 * diagonal * unit(rng), on[2] + 0.05 * diagonal * unit(rng)});
@@ -157,6 +160,13 @@ TEST_CASE("Catmull-Clark closest points equal a brute force on OpenSubdiv Bfr", 
       const Evaluation at = surface.evaluate(got[i].face, got[i].u, got[i].v, 1e-13 * diagonal);
       CHECK(distance(at.point, got[i].point) <= 1e-11 * diagonal);
       CHECK(std::fabs(distance(got[i].point, queries[i]) - got[i].distance) <= 1e-12 * diagonal);
+      // The normal is Bfr's du x dv there (the faces are outward-oriented quads, Bfr's parameters are ours).
+      Point p{}, du{}, dv{};
+      oracle.evaluate(got[i].face, got[i].u, got[i].v, p, du, dv);
+      const Point n{du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2], du[0] * dv[1] - du[1] * dv[0]};
+      const double len = distance(n, {0, 0, 0});
+      if (len > 1e-9 * diagonal * diagonal)  // not at a degenerate point of the parametrisation (an extraordinary vertex)
+        CHECK(distance(got[i].normal, Point{n[0] / len, n[1] / len, n[2] / len}) <= 1e-8);
     }
   }
 }
@@ -219,6 +229,72 @@ TEST_CASE("nonpoly closest points are never farther than dense exact limit point
     if (distance(q, {0, 0, 0}) > diagonal) CHECK(r.signed_distance > 0);
   }
   CHECK(orthogonal_checked >= 20);
+}
+
+// Whether a ray from q along +x crosses the triangles an odd number of times
+// (Moeller-Trumbore; the direction is perturbed off the axes so that it meets
+// no edge exactly).
+bool inside_by_parity(const PolygonSoup& soup, const Point& q) {
+  const Point dir{1, 0.000123, 0.000071};
+  int crossings = 0;
+  auto cross3 = [](const Point& a, const Point& b) {
+    return Point{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  auto dot3 = [](const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  auto test = [&](int ia, int ib, int ic) {
+    const auto& A = soup.positions[static_cast<std::size_t>(ia)];
+    const auto& B = soup.positions[static_cast<std::size_t>(ib)];
+    const auto& C = soup.positions[static_cast<std::size_t>(ic)];
+    const Point a{A[0], A[1], A[2]}, e1{B[0] - a[0], B[1] - a[1], B[2] - a[2]}, e2{C[0] - a[0], C[1] - a[1], C[2] - a[2]};
+    const Point pv = cross3(dir, e2);
+    const double det = dot3(e1, pv);
+    if (std::fabs(det) < 1e-300) return;
+    const Point tv{q[0] - a[0], q[1] - a[1], q[2] - a[2]};
+    const double u = dot3(tv, pv) / det;
+    if (u < 0 || u > 1) return;
+    const Point qv = cross3(tv, e1);
+    const double v = dot3(dir, qv) / det;
+    if (v < 0 || u + v > 1) return;
+    if (dot3(e2, qv) / det > 0) ++crossings;
+  };
+  for (const auto& t : soup.triangles) test(t[0], t[1], t[2]);
+  for (const auto& f : soup.quads) test(f[0], f[1], f[2]), test(f[0], f[2], f[3]);
+  return crossings % 2 == 1;
+}
+
+// Signed distances against inside/outside by ray parity on a fine exact
+// tessellation (rate 16: within 1e-4 of the diagonal of the surface), for
+// points farther than 1e-2 of the diagonal from the surface.
+TEST_CASE("signed distances are negative exactly inside every bundled closed mesh", "[runtime][distance]") {
+  for (const char* scheme : {"catmull-clark", "nonpoly"}) {
+    const auto tables = Tables::load(generated_table(scheme, "--valence 3-8 --n 16", "sgs").string());
+    for (const char* name : {"cube.obj", "torus-3-5.obj", "chess-piece.obj", "bumpy-sphere.obj", "rook.obj"}) {
+      CAPTURE(scheme, name);
+      const Mesh mesh = read_obj((kMeshes / name).string());
+      const Surface surface = surface_of(tables, mesh);
+      const ClosestPointQuery query(surface);
+      const PolygonSoup soup = tessellate(surface, std::vector<int>(mesh.face_count(), 16));
+      const double diagonal = diagonal_of(mesh);
+      Point lo = mesh.positions[0], hi = lo;
+      for (const Point& p : mesh.positions)
+        for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+      std::mt19937 rng(3);
+      std::uniform_real_distribution<double> unit(-0.1, 1.1);
+      int inside = 0, outside = 0;
+      for (int i = 0; i < 300; ++i) {
+        const Point q{lo[0] + unit(rng) * (hi[0] - lo[0]), lo[1] + unit(rng) * (hi[1] - lo[1]), lo[2] + unit(rng) * (hi[2] - lo[2])};
+        const ClosestPoint r = query.find(q);
+        REQUIRE(r.found);
+        if (r.distance < 1e-2 * diagonal) continue;
+        const bool in = inside_by_parity(soup, q);
+        INFO("query (" << q[0] << ", " << q[1] << ", " << q[2] << ") distance " << r.signed_distance);
+        CHECK((r.signed_distance < 0) == in);
+        ++(in ? inside : outside);
+      }
+      CHECK(inside >= 5);
+      CHECK(outside >= 5);
+    }
+  }
 }
 
 // The affine enclosure (distance/affine_enclosure.hpp) against dense exact
