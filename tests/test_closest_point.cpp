@@ -231,6 +231,13 @@ TEST_CASE("nonpoly closest points are never farther than dense exact limit point
   CHECK(orthogonal_checked >= 20);
 }
 
+TEST_CASE("closest points on a triangle scheme are refused with the reason", "[runtime][distance]") {
+  const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4", "sgt").string());
+  const Mesh mesh = read_obj((kMeshes / "icosahedron.obj").string());
+  const Surface surface = surface_of(loop, mesh);
+  CHECK_THROWS_WITH(ClosestPointQuery(surface), Catch::Contains("not available for triangle schemes"));
+}
+
 // Whether a ray from q along +x crosses the triangles an odd number of times
 // (Moeller-Trumbore; the direction is perturbed off the axes so that it meets
 // no edge exactly).

@@ -131,7 +131,8 @@ class Family {
   // its children under one step of the scheme, the limit point at a patch
   // parameter inside a sub-patch, and which original face and parameter a
   // prepared face's patch parameter is. Whether the control points of every
-  // sub-patch bound its surface (all subdivision weights non-negative).
+  // sub-patch bound its surface (all subdivision weights non-negative); a
+  // family without sub-patches (triangles, so far) throws EvaluationError here.
   virtual bool hull_bounds() const = 0;
   virtual void root(std::size_t prepared_face, const Point* prepared, SubPatch& out) const = 0;
   virtual int split(const SubPatch& in, SubPatch* children) const = 0;  // at most 4 children

@@ -33,8 +33,8 @@ class TriangleFamily final : public Family {
   using Family::stencil;  // and at a real parameter
   Approximation evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const override;
   Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const override;
-  // Sub-patches need the triangle patch subdivision (the .sgt's children): not available yet.
-  bool hull_bounds() const override { return false; }
+  // Sub-patches (closest points) are not built for triangle patches yet: every one of these refuses.
+  bool hull_bounds() const override { unavailable(); }
   void root(std::size_t, const Point*, SubPatch&) const override { unavailable(); }
   int split(const SubPatch&, SubPatch*) const override { unavailable(); }
   Approximation evaluate(const SubPatch&, double, double, double) const override { unavailable(); }
@@ -55,7 +55,8 @@ class TriangleFamily final : public Family {
 
  private:
   [[noreturn]] static void unavailable() {
-    throw EvaluationError("closest points on triangle schemes need the triangle patch subdivision, which these tables lack");
+    throw EvaluationError("closest points are not available for triangle schemes (Loop, sqrt(3)) yet: only for quad schemes "
+                          "(Catmull-Clark, nonpoly)");
   }
   template <class P>
   std::pair<std::size_t, std::array<P, 2>> locate_any(std::size_t face, P u, P v) const;
