@@ -69,6 +69,18 @@ class BfrLimit {
     return out;
   }
 
+  // The limit point, its first and its second partial derivatives (Bfr's Evaluate with
+  // second derivatives): point, du, dv, duu, duv, dvv.
+  std::array<std::array<double, 3>, 6> second_derivatives(int face, double u, double v) {
+    osd::Bfr::Surface<double> surface;
+    const std::vector<double> patch = prepare(face, surface);
+    const double uv[2] = {u, v};
+    std::array<std::array<double, 3>, 6> out{};
+    surface.Evaluate(uv, patch.data(), 3, out[0].data(), out[1].data(), out[2].data(), out[3].data(), out[4].data(),
+                     out[5].data());
+    return out;
+  }
+
   // The limit point's weights over the mesh's control vertices (Bfr's
   // EvaluateStencil over the surface's control points, gathered by vertex).
   std::map<int, double> stencil(int face, double u, double v) {

@@ -80,6 +80,20 @@ bool at_extraordinary_corner(const Mesh& m, const std::vector<int>& valence, con
   return corner >= 0 && valence[static_cast<std::size_t>(m.face_vertices[start[f] + static_cast<std::size_t>(corner)])] != 4;
 }
 
+// Second derivatives (Surface::second_derivatives) against Bfr's at the same
+// face and parameter; their first derivatives must be the same as without.
+void check_second_derivatives(const Surface& surface, bfr_reference::BfrLimit& reference, std::size_t f, double u, double v,
+                              double size, double& worst) {
+  const SecondDerivatives ours = surface.second_derivatives(f, u, v);
+  const auto ref = reference.second_derivatives(static_cast<int>(f), u, v);
+  const Derivatives first = surface.derivatives(f, u, v);
+  CHECK(distance(ours.du, first.du) <= 1e-14 * size);
+  CHECK(distance(ours.dv, first.dv) <= 1e-14 * size);
+  const double e = std::max({distance(ours.duu, ref[3]), distance(ours.duv, ref[4]), distance(ours.dvv, ref[5])}) / size;
+  worst = std::max(worst, e);
+  REQUIRE(e < 1e-11);
+}
+
 void check_against_bfr(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, const std::string& name, std::size_t stride) {
   const Surface surface = surface_of(tables, mesh);
   bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices);
@@ -87,7 +101,7 @@ void check_against_bfr(const std::shared_ptr<const Tables>& tables, const Mesh& 
   const auto valence = valences(mesh);
   const auto start = face_starts(mesh);
   std::mt19937 rng(20261124u);
-  double worst = 0;
+  double worst = 0, worst_second = 0;
   std::size_t refused = 0;
   for (std::size_t f = 0; f < mesh.face_count(); f += stride) {
     const FaceDomain domain = surface.topology().domain(f);
@@ -106,6 +120,7 @@ void check_against_bfr(const std::shared_ptr<const Tables>& tables, const Mesh& 
       const double e = std::max({distance(ours.point, ref[0]), distance(ours.du, ref[1]), distance(ours.dv, ref[2])}) / size;
       worst = std::max(worst, e);
       REQUIRE(e < 1e-10);
+      check_second_derivatives(surface, reference, f, p.u.to_double(), p.v.to_double(), size, worst_second);
     }
     if (domain.kind == FaceDomain::Kind::Quad)
       for (int k = 0; k < 3; ++k) {  // real parameters: Catmull-Clark's regular patches are polynomial
@@ -116,10 +131,12 @@ void check_against_bfr(const std::shared_ptr<const Tables>& tables, const Mesh& 
         const double e = std::max({distance(ours.point, ref[0]), distance(ours.du, ref[1]), distance(ours.dv, ref[2])}) / size;
         worst = std::max(worst, e);
         REQUIRE(e < 1e-10);
+        check_second_derivatives(surface, reference, f, u, v, size, worst_second);
       }
   }
   CHECK(refused > 0);
-  WARN(name << ": largest difference to Bfr's point and derivatives, over the mesh size: " << worst);
+  WARN(name << ": largest difference to Bfr's point and derivatives, over the mesh size: " << worst
+            << "; second derivatives: " << worst_second);
 }
 
 }  // namespace
@@ -204,9 +221,31 @@ TEST_CASE("derivatives are refused where they do not exist or are not exact, wit
   CHECK_THROWS_WITH(surface.derivatives(0, grid(0, 0, 1)), Catch::Contains("extraordinary vertex"));
   CHECK_THROWS_WITH(surface.derivatives(0, 0.3, 0.7), Catch::Contains("not polynomial"));
   CHECK_THROWS_WITH(surface.derivatives(0, grid(1, 2, 1)), Catch::Contains("outside face"));
+  CHECK_THROWS_WITH(surface.second_derivatives(0, grid(1, 2, 3)), Catch::Contains("are not, and its tables hold no"));
+  const Surface cc = surface_of(Tables::load(tables_for("catmull-clark").string()), cube);
+  CHECK_THROWS_WITH(cc.second_derivatives(0, grid(0, 0, 1)), Catch::Contains("extraordinary vertex"));
   const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4", "sgt").string());
   const Surface ico = surface_of(loop, load("icosahedron"));
   CHECK_THROWS_WITH(ico.derivatives(0, grid(1, 1, 3)), Catch::Contains("not yet for triangle schemes"));
+}
+
+TEST_CASE("stencileval --second-derivatives prints Bfr's second derivatives, and refuses nonpoly with the reason",
+          "[runtime][derivatives][cli]") {
+  const Mesh mesh = load("chess-piece");
+  bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices);
+  const std::string common = " --mesh " + (kMeshes / "chess-piece.obj").string() + " --face 17 --uv 0.3,0.7";
+  const CliResult r = run_stencileval("--tables " + tables_for("catmull-clark").string() + common +
+                                      " --derivatives --second-derivatives");
+  REQUIRE(r.status == 0);
+  // The last line: x y z, du, dv, duu, duv, dvv.
+  std::istringstream last(r.output.substr(r.output.rfind('\n', r.output.size() - 2) + 1));
+  std::array<Point, 6> got{};
+  for (Point& p : got) REQUIRE(static_cast<bool>(last >> p[0] >> p[1] >> p[2]));
+  const auto ref = reference.second_derivatives(17, 0.3, 0.7);
+  for (std::size_t k = 0; k < 6; ++k) CHECK(distance(got[k], ref[k]) < 1e-12 * extent(mesh));
+  const CliResult refused = run_stencileval("--tables " + tables_for("nonpoly").string() + common + " --second-derivatives");
+  CHECK(refused.status == 1);
+  CHECK_THAT(refused.output, Catch::Contains("polynomial"));
 }
 
 TEST_CASE("tessellation normals equal stencileval --normal and, for Catmull-Clark, Bfr's at the same parameters",

@@ -44,15 +44,28 @@ Evaluation evaluate(const Surface& surface, const Mesh& mesh, std::size_t face, 
   return surface.evaluate(face, u.value, v.value, tolerance);
 }
 
-Derivatives derivatives(const Surface& surface, const Mesh& mesh, std::size_t face, const ParameterText& u,
-                        const ParameterText& v) {
+// First derivatives, and second ones where asked for (zero otherwise).
+SecondDerivatives derivatives(const Surface& surface, const Mesh& mesh, std::size_t face, const ParameterText& u,
+                              const ParameterText& v, bool second) {
   check_face(mesh, face);
-  if (u.exact && v.exact) return surface.derivatives(face, ExactParameter{u.fraction, v.fraction});
-  return surface.derivatives(face, u.value, v.value);
+  const bool exact = u.exact && v.exact;
+  const ExactParameter at{u.fraction, v.fraction};
+  if (second) return exact ? surface.second_derivatives(face, at) : surface.second_derivatives(face, u.value, v.value);
+  SecondDerivatives out;
+  static_cast<Derivatives&>(out) = exact ? surface.derivatives(face, at) : surface.derivatives(face, u.value, v.value);
+  return out;
 }
 
-// The last line of a query: the point, then du and dv (--derivatives), then the unit normal (--normal).
-std::string result_line(const Derivatives& d, bool with_derivatives, bool with_normal) {
+// What a query prints besides the point.
+struct Columns {
+  bool derivatives = false, second = false, normal = false;
+  bool any() const { return derivatives || second || normal; }
+};
+
+// The last line of a query: the point, then du and dv (--derivatives), duu,
+// duv and dvv (--second-derivatives), then the unit normal (--normal).
+std::string result_line(const SecondDerivatives& d, const Columns& columns) {
+  const bool with_derivatives = columns.derivatives, with_normal = columns.normal;
   std::string out;
   char text[80];
   auto put = [&](const Point& p) {
@@ -61,6 +74,7 @@ std::string result_line(const Derivatives& d, bool with_derivatives, bool with_n
   };
   put(d.point);
   if (with_derivatives) put(d.du), put(d.dv);
+  if (columns.second) put(d.duu), put(d.duv), put(d.dvv);
   if (with_normal) put(d.normal());
   return out + "\n";
 }
@@ -85,7 +99,10 @@ int main(int argc, char** argv) {
       "counter-clockwise faces); quad schemes only so far. They are exact to rounding on polynomial schemes\n"
       "(Catmull-Clark) and, for any scheme, at exact rationals k/n of a stored rate n; at an extraordinary vertex\n"
       "the surface has no parametric derivative and the query is refused. The last line then holds\n"
-      "`x y z dux duy duz dvx dvy dvz` (and/or `nx ny nz`), the lines before it each vector by name.\n\n"
+      "`x y z dux duy duz dvx dvy dvz` (and/or `nx ny nz`), the lines before it each vector by name.\n"
+      "--second-derivatives adds d2/du2, d2/dudv and d2/dv2 (after du and dv, before the normal): exact to rounding\n"
+      "where the scheme's regular patches are polynomial (Catmull-Clark), anywhere but an extraordinary vertex;\n"
+      "refused for other schemes (their tables hold no second derivative).\n\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --face 0 --uv 1/3,1/2\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --batch queries.txt   (lines: F U V)\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --face 0 --uv 0.3,0.7\n"
@@ -103,9 +120,10 @@ int main(int argc, char** argv) {
                  "extent (default 1e-12)");
   app.add_option("--batch", batch, "file of `F U V` lines; prints one `x y z` line per query (with the columns "
                                    "--derivatives and --normal add)");
-  bool with_derivatives = false, with_normal = false;
-  app.add_flag("--derivatives", with_derivatives, "also d/du and d/dv (quad schemes)");
-  app.add_flag("--normal", with_normal, "also the unit normal (quad schemes)");
+  Columns columns;
+  app.add_flag("--derivatives", columns.derivatives, "also d/du and d/dv (quad schemes)");
+  app.add_flag("--second-derivatives", columns.second, "also d2/du2, d2/dudv, d2/dv2 (Catmull-Clark)");
+  app.add_flag("--normal", columns.normal, "also the unit normal (quad schemes)");
   return stencil_tools::run_tool(app, argc, argv, [&] {
     if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive number");
     if (batch.empty() && (face_text.empty() || uv.empty()))
@@ -130,12 +148,12 @@ int main(int argc, char** argv) {
           if (!(ls >> u >> v) || (ls >> extra)) throw std::runtime_error("expected `F U V`, got " + stencil_runtime::quoted_excerpt(line));
           const std::size_t face = stencil_tools::parse_index(f, "face");
           const ParameterText pu = stencil_tools::parse_parameter(u), pv = stencil_tools::parse_parameter(v);
-          if (with_derivatives || with_normal) {
-            out += result_line(derivatives(surface, mesh, face, pu, pv), with_derivatives, with_normal);
+          if (columns.any()) {
+            out += result_line(derivatives(surface, mesh, face, pu, pv, columns.second), columns);
           } else {
-            Derivatives d;
+            SecondDerivatives d;
             d.point = evaluate(surface, mesh, face, pu, pv, tolerance).point;
-            out += result_line(d, false, false);
+            out += result_line(d, columns);
           }
         } catch (const std::exception& e) {
           throw std::runtime_error(batch + ":" + std::to_string(number) + ": " + e.what());
@@ -146,15 +164,18 @@ int main(int argc, char** argv) {
     }
     const std::size_t face = stencil_tools::parse_index(face_text, "--face");
     const auto [u, v] = stencil_tools::split_pair(uv, "--uv");
-    if (with_derivatives || with_normal) {
-      const Derivatives d = derivatives(surface, mesh, face, stencil_tools::parse_parameter(u), stencil_tools::parse_parameter(v));
-      std::printf("face %zu at (%s): limit point of '%s'%s%s\n", face, uv.c_str(), tables->scheme().c_str(),
-                  with_derivatives ? ", its derivatives d/du and d/dv" : "", with_normal ? ", the unit normal" : "");
+    if (columns.any()) {
+      const SecondDerivatives d =
+          derivatives(surface, mesh, face, stencil_tools::parse_parameter(u), stencil_tools::parse_parameter(v), columns.second);
+      std::printf("face %zu at (%s): limit point of '%s'%s%s%s\n", face, uv.c_str(), tables->scheme().c_str(),
+                  columns.derivatives ? ", its derivatives d/du and d/dv" : "",
+                  columns.second ? ", its second derivatives" : "", columns.normal ? ", the unit normal" : "");
       auto line = [](const char* name, const Point& p) { std::printf("%s %.17g %.17g %.17g\n", name, p[0], p[1], p[2]); };
       line("point", d.point);
-      if (with_derivatives) line("du", d.du), line("dv", d.dv);
-      if (with_normal) line("normal", d.normal());
-      std::fputs(result_line(d, with_derivatives, with_normal).c_str(), stdout);
+      if (columns.derivatives) line("du", d.du), line("dv", d.dv);
+      if (columns.second) line("duu", d.duu), line("duv", d.duv), line("dvv", d.dvv);
+      if (columns.normal) line("normal", d.normal());
+      std::fputs(result_line(d, columns).c_str(), stdout);
       return 0;
     }
     const Evaluation e = evaluate(surface, mesh, face, stencil_tools::parse_parameter(u), stencil_tools::parse_parameter(v), tolerance);

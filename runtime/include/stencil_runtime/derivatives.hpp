@@ -22,4 +22,11 @@ struct Derivatives {
   }
 };
 
+// The same with the second partial derivatives along (u, v): exact where
+// the patch is polynomial there (Catmull-Clark: everywhere but the
+// extraordinary vertex itself; docs/runtime.md, "Derivatives and normals").
+struct SecondDerivatives : Derivatives {
+  Point duu{0, 0, 0}, duv{0, 0, 0}, dvv{0, 0, 0};
+};
+
 }  // namespace stencil_runtime

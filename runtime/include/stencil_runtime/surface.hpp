@@ -73,6 +73,11 @@ class Surface {
   // between its grids, and for a face or parameter outside the surface.
   Derivatives derivatives(std::size_t face, const ExactParameter& at) const;
   Derivatives derivatives(std::size_t face, double u, double v) const;
+  // With the second partial derivatives along (u, v) (duu, duv, dvv): for quad
+  // schemes whose regular patches are polynomial (Catmull-Clark), anywhere but
+  // an extraordinary vertex; elsewhere EvaluationError says why.
+  SecondDerivatives second_derivatives(std::size_t face, const ExactParameter& at) const;
+  SecondDerivatives second_derivatives(std::size_t face, double u, double v) const;
 
  private:
   std::shared_ptr<const SurfaceTopology> topology_;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "exact_stencil.hpp"
 #include "family/family.hpp"
@@ -94,31 +95,54 @@ namespace stencil_runtime {
 
 namespace {
 
-Derivatives checked(const Derivatives& d) {
+template <class D>
+const D& checked(const D& d) {
   for (const Point* p : {&d.point, &d.du, &d.dv})
     for (double x : *p)
       if (!std::isfinite(x)) throw EvaluationError("the limit point or a derivative is not finite (coordinates too large)");
+  if constexpr (std::is_same_v<D, SecondDerivatives>)
+    for (const Point* p : {&d.duu, &d.duv, &d.dvv})
+      for (double x : *p)
+        if (!std::isfinite(x)) throw EvaluationError("a second derivative is not finite (coordinates too large)");
   return d;
+}
+
+// A derivative request's face and parameter, checked.
+void check_inside(const Surface& surface, std::size_t face, const ExactParameter& at) {
+  check_request(surface, 0);
+  const FaceDomain domain = surface.topology().domain(face);
+  if (!domain.contains(at))
+    throw EvaluationError("the parameter " + at.str() + " lies outside face " + std::to_string(face) + " (its domain is " +
+                          domain.describe() + ")");
+}
+void check_inside(const Surface& surface, std::size_t face, double u, double v) {
+  check_request(surface, 0);
+  const FaceDomain domain = surface.topology().domain(face);
+  if (!domain.contains(u, v))
+    throw EvaluationError("the parameter (" + std::to_string(u) + ", " + std::to_string(v) + ") lies outside face " +
+                          std::to_string(face) + " (its domain is " + domain.describe() + ")");
 }
 
 }  // namespace
 
 Derivatives Surface::derivatives(std::size_t face, const ExactParameter& at) const {
-  check_request(*this, 0);
-  const FaceDomain domain = topology_->domain(face);
-  if (!domain.contains(at))
-    throw EvaluationError("the parameter " + at.str() + " lies outside face " + std::to_string(face) + " (its domain is " +
-                          domain.describe() + ")");
+  check_inside(*this, face, at);
   return checked(topology_->family().derivatives(face, at, prepared_.data()));
 }
 
 Derivatives Surface::derivatives(std::size_t face, double u, double v) const {
-  check_request(*this, 0);
-  const FaceDomain domain = topology_->domain(face);
-  if (!domain.contains(u, v))
-    throw EvaluationError("the parameter (" + std::to_string(u) + ", " + std::to_string(v) + ") lies outside face " +
-                          std::to_string(face) + " (its domain is " + domain.describe() + ")");
+  check_inside(*this, face, u, v);
   return checked(topology_->family().derivatives(face, u, v, prepared_.data()));
+}
+
+SecondDerivatives Surface::second_derivatives(std::size_t face, const ExactParameter& at) const {
+  check_inside(*this, face, at);
+  return checked(topology_->family().second_derivatives(face, at, prepared_.data()));
+}
+
+SecondDerivatives Surface::second_derivatives(std::size_t face, double u, double v) const {
+  check_inside(*this, face, u, v);
+  return checked(topology_->family().second_derivatives(face, u, v, prepared_.data()));
 }
 
 }  // namespace stencil_runtime

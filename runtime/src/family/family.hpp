@@ -126,6 +126,10 @@ class Family {
   // without derivatives yet.
   virtual Derivatives derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const;
   virtual Derivatives derivatives(std::size_t face, double u, double v, const Point* prepared) const;
+  // With second derivatives, where the family has them exactly (quads with
+  // polynomial regular patches); throws EvaluationError elsewhere.
+  virtual SecondDerivatives second_derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const;
+  virtual SecondDerivatives second_derivatives(std::size_t face, double u, double v, const Point* prepared) const;
 
   // Sub-patches (closest points, fitting): the whole patch of a prepared face,
   // its children under one step of the scheme, the limit point at a patch

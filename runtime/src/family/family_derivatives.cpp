@@ -11,6 +11,8 @@ namespace {
 
 Derivatives Family::derivatives(std::size_t, const ExactParameter&, const Point*) const { no_derivatives(); }
 Derivatives Family::derivatives(std::size_t, double, double, const Point*) const { no_derivatives(); }
+SecondDerivatives Family::second_derivatives(std::size_t, const ExactParameter&, const Point*) const { no_derivatives(); }
+SecondDerivatives Family::second_derivatives(std::size_t, double, double, const Point*) const { no_derivatives(); }
 void Family::normals(const TessellationLayout&, std::size_t, std::size_t, const Point*, std::array<float, 3>*) const {
   no_derivatives();
 }

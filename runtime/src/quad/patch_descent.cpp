@@ -186,15 +186,17 @@ Approximation QuadPatchDescent::evaluate(int valence, std::vector<Point>& q, P x
   }
 }
 
-void QuadPatchDescent::polynomial_basis(double t, double* w, double* dw) const {
+void QuadPatchDescent::polynomial_basis(double t, double* w, double* dw, double* ddw) const {
   for (int p = 0; p < 4; ++p) {
-    double value = 0, slope = 0;
+    double value = 0, slope = 0, curvature = 0;
     const auto& c = d_.basis[static_cast<std::size_t>(p)];
     for (int e = d_.degree; e >= 0; --e) {
-      slope = slope * t + value;  // Horner for the value and its derivative together
+      curvature = curvature * t + 2 * slope;  // Horner for the value and two derivatives together
+      slope = slope * t + value;
       value = value * t + c[static_cast<std::size_t>(e)];
     }
     w[p] = value, dw[p] = slope;
+    if (ddw) ddw[p] = curvature;
   }
 }
 
@@ -224,41 +226,10 @@ int holding_rate(const QuadTables&, double, double) { return 0; }
 }  // namespace
 
 template <class P>
-PatchDerivatives QuadPatchDescent::derivatives(int valence, std::vector<Point>& q, P x, P y) const {
-  double scale = 1;  // d(child parameter) / d(patch parameter): 2 per halving
+std::array<P, 2> QuadPatchDescent::into_regular(int valence, std::vector<Point>& q, P x, P y, double& scale) const {
   std::vector<Point> next;
   for (int level = 0; level <= kMaxLevels; ++level) {
-    if (valence == 4) {
-      double wx[4], wy[4], dx[4], dy[4];
-      if (d_.degree > 0) {
-        polynomial_basis(to_real(x), wx, dx);
-        polynomial_basis(to_real(y), wy, dy);
-      } else {
-        int n = 0;
-        if constexpr (std::is_same_v<P, Fraction>) n = holding_rate(tables_, x, y);
-        if (n == 0)
-          throw EvaluationError("this scheme's regular patches are not polynomial, so derivatives are exact only at parameters "
-                                "whose descent reaches a stored grid (give exact rationals k/n of a stored rate n)");
-        if (!tables_.has_regular_derivatives())
-          throw EvaluationError("these tables hold no derivative of the regular curve (its curve is not C1, or the tables "
-                                "predate derivatives: regenerate them with this stencilgen)");
-        if constexpr (std::is_same_v<P, Fraction>) {
-          regular_basis(x, n, wx, dx);
-          regular_basis(y, n, wy, dy);
-        }
-      }
-      PatchDerivatives out;
-      for (int j = 0; j < 4; ++j)
-        for (int i = 0; i < 4; ++i) {
-          const Point& p = q[static_cast<std::size_t>(j * 4 + i)];
-          for (std::size_t c = 0; c < 3; ++c) {
-            out.point[c] += wx[i] * wy[j] * p[c];
-            out.du[c] += scale * dx[i] * wy[j] * p[c];
-            out.dv[c] += scale * wx[i] * dy[j] * p[c];
-          }
-        }
-      return out;
-    }
+    if (valence == 4) return {x, y};
     if (at_origin(x, y))
       throw EvaluationError("the patch has no parametric derivative at its extraordinary vertex (valence " +
                             std::to_string(valence) + ")");
@@ -266,6 +237,68 @@ PatchDerivatives QuadPatchDescent::derivatives(int valence, std::vector<Point>& 
     scale *= 2;
   }
   throw EvaluationError("the parameter is too close to the extraordinary vertex for a derivative in doubles");
+}
+
+template <class P>
+PatchDerivatives QuadPatchDescent::derivatives(int valence, std::vector<Point>& q, P x0, P y0) const {
+  double scale = 1;  // d(child parameter) / d(patch parameter): 2 per halving
+  const auto [x, y] = into_regular(valence, q, x0, y0, scale);
+  double wx[4], wy[4], dx[4], dy[4];
+  if (d_.degree > 0) {
+    polynomial_basis(to_real(x), wx, dx);
+    polynomial_basis(to_real(y), wy, dy);
+  } else {
+    int n = 0;
+    if constexpr (std::is_same_v<P, Fraction>) n = holding_rate(tables_, x, y);
+    if (n == 0)
+      throw EvaluationError("this scheme's regular patches are not polynomial, so derivatives are exact only at parameters "
+                            "whose descent reaches a stored grid (give exact rationals k/n of a stored rate n)");
+    if (!tables_.has_regular_derivatives())
+      throw EvaluationError("these tables hold no derivative of the regular curve (its curve is not C1, or the tables "
+                            "predate derivatives: regenerate them with this stencilgen)");
+    if constexpr (std::is_same_v<P, Fraction>) {
+      regular_basis(x, n, wx, dx);
+      regular_basis(y, n, wy, dy);
+    }
+  }
+  PatchDerivatives out;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const Point& p = q[static_cast<std::size_t>(j * 4 + i)];
+      for (std::size_t c = 0; c < 3; ++c) {
+        out.point[c] += wx[i] * wy[j] * p[c];
+        out.du[c] += scale * dx[i] * wy[j] * p[c];
+        out.dv[c] += scale * wx[i] * dy[j] * p[c];
+      }
+    }
+  return out;
+}
+
+template <class P>
+SecondDerivatives QuadPatchDescent::second_derivatives(int valence, std::vector<Point>& q, P x0, P y0) const {
+  if (d_.degree == 0)
+    throw EvaluationError("second derivatives need a scheme whose regular patches are polynomial (Catmull-Clark): this "
+                          "scheme's are not, and its tables hold no phi''");
+  double scale = 1;
+  const auto [x, y] = into_regular(valence, q, x0, y0, scale);
+  double wx[4], wy[4], dx[4], dy[4], ddx[4], ddy[4];
+  polynomial_basis(to_real(x), wx, dx, ddx);
+  polynomial_basis(to_real(y), wy, dy, ddy);
+  const double scale2 = scale * scale;
+  SecondDerivatives out;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const Point& p = q[static_cast<std::size_t>(j * 4 + i)];
+      for (std::size_t c = 0; c < 3; ++c) {
+        out.point[c] += wx[i] * wy[j] * p[c];
+        out.du[c] += scale * dx[i] * wy[j] * p[c];
+        out.dv[c] += scale * wx[i] * dy[j] * p[c];
+        out.duu[c] += scale2 * ddx[i] * wy[j] * p[c];
+        out.duv[c] += scale2 * dx[i] * dy[j] * p[c];
+        out.dvv[c] += scale2 * wx[i] * ddy[j] * p[c];
+      }
+    }
+  return out;
 }
 
 void QuadPatchDescent::child(int valence, const std::vector<Point>& q, int cx, int cy, std::vector<Point>& out,
@@ -297,5 +330,7 @@ template Approximation QuadPatchDescent::evaluate<Fraction>(int, std::vector<Poi
 template Approximation QuadPatchDescent::evaluate<double>(int, std::vector<Point>&, double, double, double) const;
 template PatchDerivatives QuadPatchDescent::derivatives<Fraction>(int, std::vector<Point>&, Fraction, Fraction) const;
 template PatchDerivatives QuadPatchDescent::derivatives<double>(int, std::vector<Point>&, double, double) const;
+template SecondDerivatives QuadPatchDescent::second_derivatives<Fraction>(int, std::vector<Point>&, Fraction, Fraction) const;
+template SecondDerivatives QuadPatchDescent::second_derivatives<double>(int, std::vector<Point>&, double, double) const;
 
 }  // namespace stencil_runtime

@@ -49,6 +49,11 @@ class QuadPatchDescent {
   // without phi': a curve that is not C1).
   template <class P>
   PatchDerivatives derivatives(int valence, std::vector<Point>& points, P x, P y) const;
+  // The same with second derivatives, where the regular patch is polynomial
+  // (Catmull-Clark); throws EvaluationError for other schemes (their tables
+  // hold no phi'') and at the extraordinary vertex.
+  template <class P>
+  SecondDerivatives second_derivatives(int valence, std::vector<Point>& points, P x, P y) const;
 
   // The child in quadrant (cx, cy) of a patch of kind `valence` (4: regular):
   // for an extraordinary patch quadrant (0,0) is the extraordinary child (A0),
@@ -66,7 +71,11 @@ class QuadPatchDescent {
   // polynomial pieces, or from the stored phi and phi' of a rate whose grid
   // holds t (a rate n with t on 1/(2n)).
   void regular_basis(const Fraction& t, int n, double* w, double* dw) const;
-  void polynomial_basis(double t, double* w, double* dw) const;
+  void polynomial_basis(double t, double* w, double* dw, double* ddw = nullptr) const;
+  // The points descend (consumed) into the regular patch holding (x, y);
+  // its parameter there, `scale` multiplied by 2 per halving.
+  template <class P>
+  std::array<P, 2> into_regular(int valence, std::vector<Point>& points, P x, P y, double& scale) const;
   void regular_child(std::vector<Point>& q, int cx, int cy) const;
 
   const QuadTables& tables_;

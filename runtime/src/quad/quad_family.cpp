@@ -428,6 +428,42 @@ Derivatives QuadFamily::derivatives(std::size_t face, double u, double v, const 
   return derivatives_any(face, u, v, prepared);
 }
 
+template <class P>
+SecondDerivatives QuadFamily::second_derivatives_any(std::size_t face, P u, P v, const Point* prepared) const {
+  const QuadPatchDescent& descent = checked_descent();
+  Jacobian j{};
+  const auto located = patch_parameter(face, u, v, &j);
+  const QuadPatch& patch = patches_[located.first];
+  std::vector<Point> points(patch.points.size());
+  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
+  const SecondDerivatives d = descent.second_derivatives(patch.valence, points, located.second[0], located.second[1]);
+  // Chain rule through the linear map (x, y)(u, v): x_u = j0, x_v = j1, y_u = j2, y_v = j3.
+  SecondDerivatives out;
+  out.point = d.point;
+  for (std::size_t c = 0; c < 3; ++c) {
+    out.du[c] = d.du[c] * j[0] + d.dv[c] * j[2];
+    out.dv[c] = d.du[c] * j[1] + d.dv[c] * j[3];
+    out.duu[c] = d.duu[c] * j[0] * j[0] + 2 * d.duv[c] * j[0] * j[2] + d.dvv[c] * j[2] * j[2];
+    out.duv[c] = d.duu[c] * j[0] * j[1] + d.duv[c] * (j[0] * j[3] + j[2] * j[1]) + d.dvv[c] * j[2] * j[3];
+    out.dvv[c] = d.duu[c] * j[1] * j[1] + 2 * d.duv[c] * j[1] * j[3] + d.dvv[c] * j[3] * j[3];
+  }
+  return out;
+}
+
+SecondDerivatives QuadFamily::second_derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const {
+  try {
+    return second_derivatives_any(face, at.u, at.v, prepared);
+  } catch (const ParameterOverflow&) {
+    throw EvaluationError("the parameter " + at.str() + " needs fractions beyond 64 bits on the way to a regular patch");
+  }
+}
+
+SecondDerivatives QuadFamily::second_derivatives(std::size_t face, double u, double v, const Point* prepared) const {
+  const auto fu = exact_fraction(u), fv = exact_fraction(v);
+  if (fu && fv) return second_derivatives(face, ExactParameter{*fu, *fv}, prepared);
+  return second_derivatives_any(face, u, v, prepared);
+}
+
 bool QuadFamily::stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const {
   const auto [prepared, p] = locate(face, at);
   const QuadPatch& patch = patches_[prepared];

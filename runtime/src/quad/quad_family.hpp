@@ -34,6 +34,8 @@ class QuadFamily final : public Family {
   Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const override;
   Derivatives derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
   Derivatives derivatives(std::size_t face, double u, double v, const Point* prepared) const override;
+  SecondDerivatives second_derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
+  SecondDerivatives second_derivatives(std::size_t face, double u, double v, const Point* prepared) const override;
   bool hull_bounds() const override;
   void root(std::size_t prepared_face, const Point* prepared, SubPatch& out) const override;
   int split(const SubPatch& in, SubPatch* children) const override;
@@ -92,6 +94,8 @@ class QuadFamily final : public Family {
   std::pair<std::size_t, std::array<P, 2>> locate_any(std::size_t face, P u, P v, Jacobian* jacobian = nullptr) const;
   template <class P>
   Derivatives derivatives_any(std::size_t face, P u, P v, const Point* prepared) const;
+  template <class P>
+  SecondDerivatives second_derivatives_any(std::size_t face, P u, P v, const Point* prepared) const;
   template <class P>
   Approximation descend(std::size_t face, P u, P v, double tolerance, const Point* prepared) const;
   // The prepared face holding (u, v) of original face `face`, and the parameter in its patch's own coordinates.
