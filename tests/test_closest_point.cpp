@@ -304,6 +304,21 @@ TEST_CASE("signed distances are negative exactly inside every bundled closed mes
   }
 }
 
+// A sub-patch `depth` scheme steps below a random prepared face's patch, down random quadrants.
+SubPatch random_sub_patch(const Surface& surface, std::mt19937& rng, int depth) {
+  const Family& family = surface.topology().family();
+  std::uniform_int_distribution<std::size_t> face(0, surface.topology().prepared_face_count() - 1);
+  std::uniform_int_distribution<int> quadrant(0, 3);
+  SubPatch s;
+  family.root(face(rng), surface.prepared_positions().data(), s);
+  SubPatch children[4];
+  for (int level = 0; level < depth; ++level) {
+    family.split(s, children);
+    s = children[quadrant(rng)];
+  }
+  return s;
+}
+
 // The affine enclosure (distance/affine_enclosure.hpp) against dense exact
 // evaluations of the sub-patch it bounds: never above the nearest of them,
 // and, being of second order, close to it for small sub-patches.
@@ -321,20 +336,12 @@ TEST_CASE("the affine enclosure bounds every sampled sub-patch from below and ti
     const AffineEnclosure enclosure(*affine);
     const double diagonal = diagonal_of(mesh);
     std::mt19937 rng(5);
-    std::uniform_int_distribution<std::size_t> face(0, surface.topology().prepared_face_count() - 1);
-    std::uniform_int_distribution<int> quadrant(0, 3);
     std::uniform_real_distribution<double> unit(-1, 1);
     int tested = 0;
     double worst_gap_deep = 0;  // how far below the sampled minimum the bound is, at depth 5
     while (tested < 60) {
-      SubPatch s;
-      family.root(face(rng), surface.prepared_positions().data(), s);
-      SubPatch children[4];
       const int depth = tested % 6;
-      for (int level = 0; level < depth; ++level) {
-        family.split(s, children);
-        s = children[quadrant(rng)];
-      }
+      const SubPatch s = random_sub_patch(surface, rng, depth);
       if (s.kind != 4) continue;  // only regular sub-patches have the enclosure
       ++tested;
       constexpr int kSamples = 24;
@@ -370,18 +377,10 @@ TEST_CASE("sub-patch derivatives equal difference quotients of exact evaluations
     const Family& family = surface.topology().family();
     const double diagonal = diagonal_of(mesh);
     std::mt19937 rng(9);
-    std::uniform_int_distribution<std::size_t> face(0, surface.topology().prepared_face_count() - 1);
-    std::uniform_int_distribution<int> quadrant(0, 3);
     std::uniform_real_distribution<double> unit(0.05, 0.95);
     double worst = 0;
     for (int trial = 0; trial < 60; ++trial) {
-      SubPatch s;
-      family.root(face(rng), surface.prepared_positions().data(), s);
-      SubPatch children[4];
-      for (int level = 0; level < trial % 5; ++level) {
-        family.split(s, children);
-        s = children[quadrant(rng)];
-      }
+      const SubPatch s = random_sub_patch(surface, rng, trial % 5);
       double x = s.x0 + s.size * unit(rng), y = s.y0 + s.size * unit(rng);
       Derivatives d;
       REQUIRE(family.derivatives(s, x, y, d));

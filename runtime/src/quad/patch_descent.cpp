@@ -225,6 +225,29 @@ int holding_rate(const QuadTables&, double, double) { return 0; }
 
 }  // namespace
 
+// The tensor product over a regular patch's 4 x 4 points (j * 4 + i): value,
+// first derivatives times `scale` and, given ddx and ddy, second ones times its square.
+SecondDerivatives QuadPatchDescent::tensor(const std::vector<Point>& q, const double* wx, const double* wy, const double* dx,
+                                           const double* dy, const double* ddx, const double* ddy, double scale) {
+  const double scale2 = scale * scale;
+  SecondDerivatives out;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const Point& p = q[static_cast<std::size_t>(j * 4 + i)];
+      for (std::size_t c = 0; c < 3; ++c) {
+        out.point[c] += wx[i] * wy[j] * p[c];
+        out.du[c] += scale * dx[i] * wy[j] * p[c];
+        out.dv[c] += scale * wx[i] * dy[j] * p[c];
+        if (ddx) {
+          out.duu[c] += scale2 * ddx[i] * wy[j] * p[c];
+          out.duv[c] += scale2 * dx[i] * dy[j] * p[c];
+          out.dvv[c] += scale2 * wx[i] * ddy[j] * p[c];
+        }
+      }
+    }
+  return out;
+}
+
 template <class P>
 std::array<P, 2> QuadPatchDescent::into_regular(int valence, std::vector<Point>& q, P x, P y, double& scale) const {
   std::vector<Point> next;
@@ -261,17 +284,7 @@ PatchDerivatives QuadPatchDescent::derivatives(int valence, std::vector<Point>& 
       regular_basis(y, n, wy, dy);
     }
   }
-  PatchDerivatives out;
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i) {
-      const Point& p = q[static_cast<std::size_t>(j * 4 + i)];
-      for (std::size_t c = 0; c < 3; ++c) {
-        out.point[c] += wx[i] * wy[j] * p[c];
-        out.du[c] += scale * dx[i] * wy[j] * p[c];
-        out.dv[c] += scale * wx[i] * dy[j] * p[c];
-      }
-    }
-  return out;
+  return tensor(q, wx, wy, dx, dy, nullptr, nullptr, scale);
 }
 
 template <class P>
@@ -284,21 +297,7 @@ SecondDerivatives QuadPatchDescent::second_derivatives(int valence, std::vector<
   double wx[4], wy[4], dx[4], dy[4], ddx[4], ddy[4];
   polynomial_basis(to_real(x), wx, dx, ddx);
   polynomial_basis(to_real(y), wy, dy, ddy);
-  const double scale2 = scale * scale;
-  SecondDerivatives out;
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i) {
-      const Point& p = q[static_cast<std::size_t>(j * 4 + i)];
-      for (std::size_t c = 0; c < 3; ++c) {
-        out.point[c] += wx[i] * wy[j] * p[c];
-        out.du[c] += scale * dx[i] * wy[j] * p[c];
-        out.dv[c] += scale * wx[i] * dy[j] * p[c];
-        out.duu[c] += scale2 * ddx[i] * wy[j] * p[c];
-        out.duv[c] += scale2 * dx[i] * dy[j] * p[c];
-        out.dvv[c] += scale2 * wx[i] * ddy[j] * p[c];
-      }
-    }
-  return out;
+  return tensor(q, wx, wy, dx, dy, ddx, ddy, scale);
 }
 
 void QuadPatchDescent::child(int valence, const std::vector<Point>& q, int cx, int cy, std::vector<Point>& out,

@@ -72,6 +72,8 @@ class QuadPatchDescent {
   // holds t (a rate n with t on 1/(2n)).
   void regular_basis(const Fraction& t, int n, double* w, double* dw) const;
   void polynomial_basis(double t, double* w, double* dw, double* ddw = nullptr) const;
+  static SecondDerivatives tensor(const std::vector<Point>& q, const double* wx, const double* wy, const double* dx,
+                                  const double* dy, const double* ddx, const double* ddy, double scale);
   // The points descend (consumed) into the regular patch holding (x, y);
   // its parameter there, `scale` multiplied by 2 per halving.
   template <class P>

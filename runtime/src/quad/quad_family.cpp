@@ -396,14 +396,22 @@ Approximation QuadFamily::evaluate(std::size_t face, double u, double v, double 
 }
 
 template <class P>
+std::pair<int, std::array<P, 2>> QuadFamily::patch_points(std::size_t face, P u, P v, const Point* prepared, Jacobian& j,
+                                                          std::vector<Point>& points) const {
+  const auto located = patch_parameter(face, u, v, &j);
+  const QuadPatch& patch = patches_[located.first];
+  points.resize(patch.points.size());
+  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
+  return {patch.valence, located.second};
+}
+
+template <class P>
 Derivatives QuadFamily::derivatives_any(std::size_t face, P u, P v, const Point* prepared) const {
   const QuadPatchDescent& descent = checked_descent();
   Jacobian j{};
-  const auto located = patch_parameter(face, u, v, &j);
-  const QuadPatch& patch = patches_[located.first];
-  std::vector<Point> points(patch.points.size());
-  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
-  const Derivatives d = descent.derivatives(patch.valence, points, located.second[0], located.second[1]);
+  std::vector<Point> points;
+  const auto [valence, at] = patch_points(face, u, v, prepared, j, points);
+  const Derivatives d = descent.derivatives(valence, points, at[0], at[1]);
   // Chain rule: d/du = f_x dx/du + f_y dy/du, d/dv likewise.
   Derivatives out;
   out.point = d.point;
@@ -432,11 +440,9 @@ template <class P>
 SecondDerivatives QuadFamily::second_derivatives_any(std::size_t face, P u, P v, const Point* prepared) const {
   const QuadPatchDescent& descent = checked_descent();
   Jacobian j{};
-  const auto located = patch_parameter(face, u, v, &j);
-  const QuadPatch& patch = patches_[located.first];
-  std::vector<Point> points(patch.points.size());
-  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
-  const SecondDerivatives d = descent.second_derivatives(patch.valence, points, located.second[0], located.second[1]);
+  std::vector<Point> points;
+  const auto [valence, at] = patch_points(face, u, v, prepared, j, points);
+  const SecondDerivatives d = descent.second_derivatives(valence, points, at[0], at[1]);
   // Chain rule through the linear map (x, y)(u, v): x_u = j0, x_v = j1, y_u = j2, y_v = j3.
   SecondDerivatives out;
   out.point = d.point;

@@ -92,6 +92,11 @@ class QuadFamily final : public Family {
   using Jacobian = std::array<double, 4>;
   template <class P>
   std::pair<std::size_t, std::array<P, 2>> locate_any(std::size_t face, P u, P v, Jacobian* jacobian = nullptr) const;
+  // The control points of the patch holding (u, v) of original face `face`,
+  // its valence and the parameter there, and the Jacobian to the face's (u, v).
+  template <class P>
+  std::pair<int, std::array<P, 2>> patch_points(std::size_t face, P u, P v, const Point* prepared, Jacobian& j,
+                                                std::vector<Point>& points) const;
   template <class P>
   Derivatives derivatives_any(std::size_t face, P u, P v, const Point* prepared) const;
   template <class P>
