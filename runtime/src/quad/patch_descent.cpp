@@ -221,7 +221,6 @@ int holding_rate(const QuadTables& t, const Fraction& x, const Fraction& y) {
   }
   return 0;
 }
-int holding_rate(const QuadTables&, double, double) { return 0; }
 
 }  // namespace
 
