@@ -1,4 +1,5 @@
 #include "affine_enclosure.hpp"
+#include "distance/point_ops.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -7,16 +8,7 @@
 
 namespace stencil_runtime {
 
-namespace {
-
-Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double length(const Point& a) { return std::sqrt(dot(a, a)); }
-Point cross(const Point& a, const Point& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-}  // namespace
+using namespace point_ops;
 
 AffineEnclosure::AffineEnclosure(const AffineParameters& parameters) : at_(parameters.at), residual_(parameters.residual) {
   // Least squares: [o u v] = P^T G (G^T G)^-1, G's rows (1, g_i). The weights

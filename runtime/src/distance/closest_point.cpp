@@ -12,18 +12,16 @@
 #include <string>
 
 #include "distance/face_search.hpp"
+#include "distance/point_ops.hpp"
 #include "stencil_runtime/error.hpp"
 #include "stencil_runtime/limits.hpp"
 
 namespace stencil_runtime {
 
+using namespace point_ops;
+
 namespace {
 
-Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Point cross(const Point& a, const Point& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 // A float no smaller (or no larger) than the double: Embree's boxes and radii
 // are floats, and must not shrink what they bound.

@@ -1,10 +1,13 @@
 #include "face_search.hpp"
+#include "distance/point_ops.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace stencil_runtime {
+
+using namespace point_ops;
 
 namespace {
 
@@ -29,9 +32,6 @@ constexpr double kSmallest = 1e-14;
 constexpr double kSecondStep = 1.0 / 4;
 constexpr double kSmallestDamping = 1e-6;
 
-Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double length(const Point& a) { return std::sqrt(dot(a, a)); }
 
 }  // namespace
 
