@@ -1,0 +1,208 @@
+#include "stencil_runtime/surface_fit.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "fitting/control_laplacian.hpp"
+#include "fitting/error_model.hpp"
+#include "fitting/foot_frame.hpp"
+#include "fitting/normal_equations.hpp"
+#include "stencil_runtime/closest_point.hpp"
+#include "stencil_runtime/limits.hpp"
+#include "stencil_runtime/surface.hpp"
+
+namespace stencil_runtime {
+
+using fitting::NormalEquations;
+
+const char* method_name(FitMethod method) {
+  switch (method) {
+    case FitMethod::PointDistance: return "pdm";
+    case FitMethod::TangentDistance: return "tdm";
+    case FitMethod::SquaredDistance: return "sdm";
+  }
+  return "?";
+}
+
+FitMethod parse_fit_method(const std::string& name) {
+  if (name == "pdm") return FitMethod::PointDistance;
+  if (name == "tdm") return FitMethod::TangentDistance;
+  if (name == "sdm") return FitMethod::SquaredDistance;
+  throw FitError("unknown fitting method " + quoted_excerpt(name) + " (pdm, tdm or sdm)");
+}
+
+namespace {
+
+void check_points(const std::vector<Point>& points, const char* what) {
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (const double x : points[i])
+      if (!std::isfinite(x) || std::abs(x) > limits::kMaxCoordinate)
+        throw FitError(std::string(what) + " " + std::to_string(i) + " has a coordinate that is not finite or exceeds " +
+                       std::to_string(limits::kMaxCoordinate));
+}
+
+double diagonal_of(const std::vector<Point>& points) {
+  Point lo = points.front(), hi = lo;
+  for (const Point& p : points)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+}
+
+// Stencil rows exist at every parameter where the scheme's regular patches are
+// polynomial; elsewhere only where the patch's descent reaches a stored grid.
+// There a foot moves to the nearest node of the grid 1 / (n 2^18), n the
+// largest stored rate: every such node is a stored node after at most 18
+// subdivision steps, and the move (below 4e-6 / n of a face) changes the
+// model's point only along the tangent plane, to first order.
+RealSample row_sample(const ClosestPoint& foot, bool polynomial, double grid) {
+  if (polynomial) return {foot.face, foot.u, foot.v};
+  return {foot.face, std::round(foot.u * grid) / grid, std::round(foot.v * grid) / grid};
+}
+
+double smoothing_energy(const Eigen::SparseMatrix<double>& laplacian, const std::vector<Point>& control) {
+  Eigen::MatrixXd p(static_cast<Eigen::Index>(control.size()), 3);
+  for (std::size_t i = 0; i < control.size(); ++i)
+    for (int c = 0; c < 3; ++c) p(static_cast<Eigen::Index>(i), c) = control[i][c];
+  return (laplacian * p).squaredNorm();
+}
+
+// The current surface's feet of all points, and their distances' statistics.
+struct Feet {
+  std::vector<ClosestPoint> feet;
+  double mean_square = 0, max = 0;
+};
+
+Feet feet_of(const ClosestPointQuery& query, const std::vector<Point>& points) {
+  Feet out;
+  out.feet = query.find(points);
+  for (const ClosestPoint& f : out.feet) {
+    out.mean_square += f.distance * f.distance;
+    out.max = std::max(out.max, f.distance);
+  }
+  out.mean_square /= static_cast<double>(points.size());
+  return out;
+}
+
+}  // namespace
+
+std::vector<Point> fit_at_samples(const SurfaceTopology& topology, const std::vector<RealSample>& samples,
+                                  const std::vector<Point>& points, double smoothing) {
+  if (samples.empty()) throw FitError("no samples to fit");
+  if (samples.size() != points.size())
+    throw FitError(std::to_string(samples.size()) + " samples for " + std::to_string(points.size()) + " points");
+  if (!(smoothing >= 0) || !std::isfinite(smoothing)) throw FitError("the smoothing weight must be finite and >= 0");
+  check_points(points, "point");
+  const StencilRows rows = topology.stencils(samples);
+  const auto laplacian =
+      fitting::control_laplacian(topology.vertex_count(), topology.face_sizes(), topology.face_vertices());
+  NormalEquations equations(rows, {}, 1.0 / static_cast<double>(points.size()), points, laplacian,
+                            smoothing / static_cast<double>(topology.vertex_count()));
+  return equations.solve(0, std::vector<Point>(topology.vertex_count()));
+}
+
+FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std::vector<Point>& initial,
+                      const std::vector<Point>& points, const FitOptions& options) {
+  if (!topology) throw FitError("no surface topology to fit");
+  if (points.empty()) throw FitError("no points to fit");
+  if (initial.size() != topology->vertex_count())
+    throw FitError(std::to_string(initial.size()) + " control positions for a control mesh of " +
+                   std::to_string(topology->vertex_count()) + " vertices");
+  check_points(points, "point");
+  check_points(initial, "control vertex");
+  if (options.iterations < 0 || options.iterations > 100000) throw FitError("iterations must be 0..100000");
+  for (const double x : {options.smoothing, options.smoothing_decay, options.smoothing_floor, options.max_error})
+    if (!(x >= 0) || !std::isfinite(x)) throw FitError("smoothing, its decay and floor, and max_error must be finite and >= 0");
+  if (!(options.tolerance > 0) || !std::isfinite(options.tolerance)) throw FitError("the tolerance must be positive");
+
+  const auto start = std::chrono::steady_clock::now();
+  const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  FitResult result;
+  result.diagonal = diagonal_of(points);
+  if (!(result.diagonal > 0)) throw FitError("the points are all equal: nothing to fit");
+  const double m = static_cast<double>(points.size()), n = static_cast<double>(topology->vertex_count());
+  const auto laplacian =
+      fitting::control_laplacian(topology->vertex_count(), topology->face_sizes(), topology->face_vertices());
+
+  Surface surface(topology, initial);
+  ClosestPointOptions query_options;
+  query_options.tolerance = options.tolerance * result.diagonal;
+  query_options.threads = options.threads;
+  ClosestPointQuery query(surface, query_options);
+  // Catmull-Clark's regular patches are polynomial: exact second derivatives and exact rows everywhere.
+  const bool exact_second = fitting::has_second_derivatives(surface);
+  const double grid = std::ldexp(static_cast<double>(topology->tables().rates().back()), 18);
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+
+  std::vector<Point> control = initial;
+  Feet current = feet_of(query, points);
+  const auto record = [&](int iteration, double lambda, double mu, int rejected) {
+    FitIteration it;
+    it.iteration = iteration;
+    it.rms = std::sqrt(current.mean_square) / result.diagonal;
+    it.max = current.max / result.diagonal;
+    it.smoothing = lambda, it.damping = mu, it.rejected = rejected;
+    it.seconds = elapsed();
+    result.history.push_back(it);
+    if (options.progress) options.progress(it);
+  };
+  record(0, 0, 0, 0);
+
+  // PDM's model lies above the objective (the foot parameters are fixed), so
+  // its undamped steps never increase it; TDM and SDM start damped.
+  double mu = options.method == FitMethod::PointDistance ? 0 : 1e-3;
+  double lambda = options.smoothing;
+  for (int iteration = 1; iteration <= options.iterations; ++iteration) {
+    if (options.max_error > 0 && current.max / result.diagonal <= options.max_error) break;
+    std::vector<RealSample> samples(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) samples[k] = row_sample(current.feet[k], exact_second, grid);
+    const StencilRows rows = topology->stencils(samples);
+    std::vector<Eigen::Matrix3d> weights;
+    if (options.method != FitMethod::PointDistance) {
+      weights.resize(points.size());
+      arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 64), [&](const auto& range) {
+          for (std::size_t k = range.begin(); k != range.end(); ++k) {
+            const ClosestPoint& foot = current.feet[k];
+            fitting::FootFrame frame;
+            if (options.method == FitMethod::SquaredDistance)
+              frame = fitting::foot_frame(surface, foot, exact_second, query_options.tolerance);
+            weights[k] = fitting::error_weight(options.method, points[k], foot, frame) / m;
+          }
+        });
+      });
+    }
+    NormalEquations equations(rows, weights, 1 / m, points, laplacian, lambda / n);
+    const double objective = current.mean_square + lambda / n * smoothing_energy(laplacian, control);
+    int rejected = 0;
+    bool accepted = false;
+    for (; rejected < 12; ++rejected) {
+      std::vector<Point> trial = equations.solve(mu / n, control);
+      surface.set_positions(trial);
+      query.update(surface);
+      Feet next = feet_of(query, points);
+      if (next.mean_square + lambda / n * smoothing_energy(laplacian, trial) <= objective) {
+        control = std::move(trial);
+        current = std::move(next);
+        accepted = true;
+        break;
+      }
+      mu = std::max(4 * mu, 1e-3);
+    }
+    if (!accepted) {  // no damped step lowers the objective: a minimum to the model's accuracy
+      surface.set_positions(control);
+      query.update(surface);
+      break;
+    }
+    record(iteration, lambda, mu, rejected);
+    mu = mu / 4 < 1e-9 ? 0 : mu / 4;
+    lambda = std::max(lambda * options.smoothing_decay, options.smoothing * options.smoothing_floor);
+  }
+  result.control = std::move(control);
+  return result;
+}
+
+}  // namespace stencil_runtime
