@@ -1,13 +1,16 @@
 // Fitting control positions to points (fit_at_samples, fit_surface) against
 // independent data: points sampled from OpenSubdiv's Bfr limit surface of a
 // known control mesh (Catmull-Clark), whose control points a fit must find
-// again; errors recomputed by brute force on dense exact samples.
+// again; errors recomputed by brute force on Bfr (dense samples polished by
+// Gauss-Newton). Nonpoly's data are its limit points at table nodes, evaluated
+// by table look-up (Surface::evaluate), not by the rows the fit uses.
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <map>
 #include <random>
 
-#include "bfr_reference.hpp"
+#include "bfr_distance.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
 #include "stencil_runtime/closest_point.hpp"
@@ -82,48 +85,187 @@ TEST_CASE("fit_at_samples recovers Catmull-Clark control points from Bfr's limit
   }
 }
 
-TEST_CASE("fit_surface: PDM, TDM and SDM from a perturbed control mesh", "[fitting]") {
-  const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string());
-  const Mesh mesh = read_obj((kMeshes / "chess-piece.obj").string());
-  const BfrSamples data = bfr_samples(mesh, 8, 11);
-  const double diagonal = diagonal_of(mesh.positions);
-  const auto topology = test_runtime::topology_of(tables, mesh);
-  for (const FitMethod method : {FitMethod::PointDistance, FitMethod::TangentDistance, FitMethod::SquaredDistance}) {
-    FitOptions options;
-    options.method = method;
-    options.iterations = 30;
-    options.smoothing = 0;
-    options.progress = [](const FitIteration& it) {
-      std::printf("  %d rms %.3e max %.3e mu %.1e rejected %d %.2f s\n", it.iteration, it.rms, it.max, it.damping,
-                  it.rejected, it.seconds);
-    };
-    std::printf("%s\n", method_name(method));
-    const FitResult fit = fit_surface(topology, perturbed(mesh.positions, 0.01 * diagonal, 3), data.points, options);
-    std::printf("control error %.3e\n", largest_difference(fit.control, mesh.positions) / diagonal);
-  }
+namespace {
+
+// A quad sphere: the cube's faces split k x k, projected onto the unit sphere.
+Mesh quad_sphere(int k) {
+  Mesh mesh;
+  std::map<std::array<long, 3>, int> index;
+  auto vertex = [&](std::array<double, 3> p) {
+    const std::array<long, 3> key{std::lround(p[0] * 1e6), std::lround(p[1] * 1e6), std::lround(p[2] * 1e6)};
+    auto [it, fresh] = index.emplace(key, static_cast<int>(mesh.positions.size()));
+    if (fresh) {
+      const double l = std::hypot(p[0], p[1], p[2]);
+      mesh.positions.push_back({p[0] / l, p[1] / l, p[2] / l});
+    }
+    return it->second;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = -1; side <= 1; side += 2)
+      for (int j = 0; j < k; ++j)
+        for (int i = 0; i < k; ++i) {
+          int corners[4];
+          const int di[4] = {0, 1, 1, 0}, dj[4] = {0, 0, 1, 1};
+          for (int c = 0; c < 4; ++c) {
+            const double s = -1 + 2.0 * (i + di[c]) / k, t = -1 + 2.0 * (j + dj[c]) / k;
+            std::array<double, 3> p{};
+            p[axis] = side;
+            p[(axis + 1) % 3] = s;
+            p[(axis + 2) % 3] = t;
+            corners[c] = vertex(p);
+          }
+          // Counter-clockwise seen from outside.
+          mesh.face_sizes.push_back(4);
+          if (side > 0) mesh.face_vertices.insert(mesh.face_vertices.end(), {corners[0], corners[1], corners[2], corners[3]});
+          else mesh.face_vertices.insert(mesh.face_vertices.end(), {corners[0], corners[3], corners[2], corners[1]});
+        }
+  return mesh;
 }
 
-TEST_CASE("fit_surface on nonpoly", "[fitting]") {
+}  // namespace
+
+
+namespace {
+
+// Noisy points on the ellipsoid with semi-axes 1, 0.7, 0.5 (seed 003's test shape).
+std::vector<Point> ellipsoid_points(int count, double noise, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> normal(0, 1);
+  std::vector<Point> points;
+  for (int i = 0; i < count; ++i) {
+    const Point d{normal(rng), normal(rng), normal(rng)};
+    const double l = std::hypot(d[0], d[1], d[2]);
+    points.push_back({d[0] / l + noise * normal(rng), 0.7 * d[1] / l + noise * normal(rng),
+                      0.5 * d[2] / l + noise * normal(rng)});
+  }
+  return points;
+}
+
+std::vector<Point> scaled(std::vector<Point> points, double s) {
+  for (Point& p : points) p = {s * p[0], s * p[1], s * p[2]};
+  return points;
+}
+
+// Exact limit points of a surface at the cell centres of a 4 x 4 grid on every face.
+std::vector<Point> grid_points(const Surface& surface) {
+  std::vector<Point> points;
+  for (std::size_t f = 0; f < surface.topology().face_count(); ++f)
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i) points.push_back(surface.evaluate(f, test_runtime::grid(2 * i + 1, 2 * j + 1, 8)));
+  return points;
+}
+
+}  // namespace
+
+TEST_CASE("fit_at_samples recovers nonpoly control points from its limit points at table nodes", "[fitting]") {
   const auto tables = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 8", "sgs").string());
   const Mesh mesh = read_obj((kMeshes / "chess-piece.obj").string());
   const auto topology = test_runtime::topology_of(tables, mesh);
-  const Surface truth(topology, mesh.positions);
-  std::vector<Point> points;
+  const std::vector<Point> points = grid_points(Surface(topology, mesh.positions));
+  std::vector<RealSample> samples;
   for (std::size_t f = 0; f < mesh.face_count(); ++f)
     for (int j = 0; j < 4; ++j)
-      for (int i = 0; i < 4; ++i) points.push_back(truth.evaluate(f, test_runtime::grid(2 * i + 1, 2 * j + 1, 8)));
+      for (int i = 0; i < 4; ++i) samples.push_back({f, (2 * i + 1) / 8.0, (2 * j + 1) / 8.0});
+  const std::vector<Point> fitted = fit_at_samples(*topology, samples, points, 0);
+  CHECK(largest_difference(fitted, mesh.positions) / diagonal_of(mesh.positions) < 1e-9);
+}
+
+TEST_CASE("SDM recovers the control points of the surface the points lie on, from a perturbed control mesh",
+          "[fitting]") {
+  const Mesh mesh = read_obj((kMeshes / "chess-piece.obj").string());
   const double diagonal = diagonal_of(mesh.positions);
+  FitOptions options;
+  options.method = FitMethod::SquaredDistance;
+  options.iterations = 20;
+  options.smoothing = 0;
+  const std::vector<Point> start = perturbed(mesh.positions, 0.01 * diagonal, 3);
+  SECTION("Catmull-Clark, points from Bfr at random parameters") {
+    const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string());
+    const BfrSamples data = bfr_samples(mesh, 8, 11);
+    const FitResult fit = fit_surface(test_runtime::topology_of(tables, mesh), start, data.points, options);
+    CHECK(fit.history.front().max > 1e-3);
+    CHECK(largest_difference(fit.control, mesh.positions) / diagonal < 1e-6);
+  }
+  SECTION("nonpoly, its exact limit points") {
+    const auto tables = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 8", "sgs").string());
+    const auto topology = test_runtime::topology_of(tables, mesh);
+    const FitResult fit = fit_surface(topology, start, grid_points(Surface(topology, mesh.positions)), options);
+    CHECK(fit.history.front().max > 1e-3);
+    CHECK(largest_difference(fit.control, mesh.positions) / diagonal < 1e-6);
+  }
+}
+
+TEST_CASE("On a noisy ellipsoid SDM reaches a max error in fewer iterations than TDM, and TDM than PDM (seed 003)",
+          "[fitting]") {
+  const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string());
+  const Mesh sphere = quad_sphere(3);
+  const auto topology = test_runtime::topology_of(tables, sphere);
+  const std::vector<Point> points = ellipsoid_points(4000, 2e-4, 5);
+  std::map<FitMethod, std::size_t> iterations;
   for (const FitMethod method : {FitMethod::PointDistance, FitMethod::TangentDistance, FitMethod::SquaredDistance}) {
     FitOptions options;
     options.method = method;
-    options.iterations = 30;
+    options.iterations = 25;
     options.smoothing = 0;
-    options.progress = [](const FitIteration& it) {
-      std::printf("  %d rms %.3e max %.3e mu %.1e rejected %d %.2f s\n", it.iteration, it.rms, it.max, it.damping,
-                  it.rejected, it.seconds);
-    };
-    std::printf("%s\n", method_name(method));
-    const FitResult fit = fit_surface(topology, perturbed(mesh.positions, 0.01 * diagonal, 3), points, options);
-    std::printf("control error %.3e\n", largest_difference(fit.control, mesh.positions) / diagonal);
+    options.max_error = 1e-3;
+    const FitResult fit = fit_surface(topology, scaled(sphere.positions, 0.6), points, options);
+    iterations[method] = fit.history.back().max <= options.max_error ? fit.history.size() - 1 : 1000;
+    INFO(method_name(method) << ": " << iterations[method] << " iterations, max " << fit.history.back().max);
+    CHECK(fit.history.front().max > 0.1);
   }
+  CHECK(iterations[FitMethod::SquaredDistance] < iterations[FitMethod::TangentDistance]);
+  CHECK(iterations[FitMethod::TangentDistance] < iterations[FitMethod::PointDistance]);
+}
+
+TEST_CASE("The errors a fit reports are the points' distances to the fitted surface (Bfr brute force)", "[fitting]") {
+  const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string());
+  Mesh sphere = quad_sphere(2);
+  const auto topology = test_runtime::topology_of(tables, sphere);
+  const std::vector<Point> points = ellipsoid_points(300, 1e-2, 9);
+  for (const FitMethod method : {FitMethod::PointDistance, FitMethod::TangentDistance, FitMethod::SquaredDistance}) {
+    INFO(method_name(method));
+    FitOptions options;
+    options.method = method;
+    options.iterations = 4;
+    options.smoothing = 1e-3;
+    const FitResult fit = fit_surface(topology, scaled(sphere.positions, 0.6), points, options);
+    REQUIRE(fit.history.size() == 5);
+    sphere.positions = fit.control;
+    const bfr_reference::BfrOracle oracle(sphere);
+    double sum = 0, largest = 0;
+    for (const Point& q : points) {
+      const double d = oracle.distance_to(q);
+      sum += d * d, largest = std::max(largest, d);
+    }
+    const double diagonal = diagonal_of(points);
+    CHECK(fit.diagonal == Approx(diagonal).epsilon(1e-15));
+    CHECK(fit.history.back().rms == Approx(std::sqrt(sum / points.size()) / diagonal).epsilon(1e-8));
+    CHECK(fit.history.back().max == Approx(largest / diagonal).epsilon(1e-8));
+  }
+}
+
+TEST_CASE("Fitting refuses bad inputs with clear errors", "[fitting]") {
+  const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string());
+  const Mesh sphere = quad_sphere(2);
+  const auto topology = test_runtime::topology_of(tables, sphere);
+  const std::vector<Point> points = ellipsoid_points(200, 0, 1);
+  FitOptions options;
+  CHECK_THROWS_WITH(fit_surface(topology, sphere.positions, {}, options), "no points to fit");
+  std::vector<Point> bad = points;
+  bad[17][1] = std::nan("");
+  CHECK_THROWS_WITH(fit_surface(topology, sphere.positions, bad, options), Catch::Contains("point 17"));
+  CHECK_THROWS_WITH(fit_surface(topology, {sphere.positions.begin(), sphere.positions.end() - 1}, points, options),
+                    Catch::Contains("control positions for a control mesh of"));
+  CHECK_THROWS_WITH(fit_surface(topology, sphere.positions, std::vector<Point>(5, Point{1, 2, 3}), options),
+                    Catch::Contains("all equal"));
+  options.smoothing = -1;
+  CHECK_THROWS_AS(fit_surface(topology, sphere.positions, points, options), FitError);
+  CHECK_THROWS_WITH(parse_fit_method("pdx"), Catch::Contains("'pdx'"));
+  // Too few points for the control points, and no smoothing: a singular system, said so.
+  CHECK_THROWS_WITH(fit_at_samples(*topology, {{0, 0.5, 0.5}}, {{0, 0, 0}}, 0), Catch::Contains("singular"));
+  // Triangle schemes: no closest points yet, hence no fit.
+  const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4", "sgt").string());
+  const Mesh ico = read_obj((kMeshes / "icosahedron.obj").string());
+  CHECK_THROWS_WITH(fit_surface(test_runtime::topology_of(loop, ico), ico.positions, points, FitOptions{}),
+                    Catch::Contains("triangle schemes"));
 }
