@@ -39,6 +39,9 @@ inline CliResult run_stencilgen_within(int seconds, const std::string& args) {
 inline CliResult run_stencileval(const std::string& args) { return run_command(STENCILEVAL_EXE, args); }
 inline CliResult run_stenciltess(const std::string& args) { return run_command(STENCILTESS_EXE, args); }
 #endif
+#ifdef STENCILFIT_EXE
+inline CliResult run_stencilfit(const std::string& args) { return run_command(STENCILFIT_EXE, args); }
+#endif
 
 // A fresh empty directory under the system temp dir.
 inline std::filesystem::path scratch_dir(const std::string& name) {

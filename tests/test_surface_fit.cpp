@@ -7,7 +7,10 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <iomanip>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <random>
 
 #include "bfr_distance.hpp"
@@ -268,4 +271,83 @@ TEST_CASE("Fitting refuses bad inputs with clear errors", "[fitting]") {
   const Mesh ico = read_obj((kMeshes / "icosahedron.obj").string());
   CHECK_THROWS_WITH(fit_surface(test_runtime::topology_of(loop, ico), ico.positions, points, FitOptions{}),
                     Catch::Contains("triangle schemes"));
+}
+
+namespace {
+
+void write_points(const std::filesystem::path& path, const std::vector<Point>& points) {
+  std::ofstream out(path);
+  out << std::setprecision(17);
+  for (const Point& p : points) out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+}
+
+void write_mesh(const std::filesystem::path& path, const Mesh& mesh) { write_obj(mesh, path.string()); }
+
+}  // namespace
+
+TEST_CASE("stencilfit: fits a perturbed control mesh to points, writes the mesh, a report and a plot", "[fitting][cli]") {
+  const std::string tables = generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string();
+  const auto dir = scratch_dir("stencilfit");
+  const Mesh mesh = read_obj((kMeshes / "chess-piece.obj").string());
+  const double diagonal = diagonal_of(mesh.positions);
+  write_points(dir / "points.xyz", bfr_samples(mesh, 8, 21).points);
+  Mesh start = mesh;
+  start.positions = perturbed(mesh.positions, 0.01 * diagonal, 4);
+  write_mesh(dir / "start.obj", start);
+  const CliResult r = run_stencilfit("--tables " + tables + " --points " + (dir / "points.xyz").string() + " --control " +
+                                     (dir / "start.obj").string() + " --smoothing 0 --iterations 20 --out " +
+                                     (dir / "fitted.obj").string() + " --report " + (dir / "r.json").string() +
+                                     " --plot " + (dir / "p.svg").string());
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.output, Catch::Contains("iteration   1  rms"));
+  const Mesh fitted = read_obj((dir / "fitted.obj").string());
+  CHECK(fitted.face_vertices == mesh.face_vertices);
+  CHECK(largest_difference(fitted.positions, mesh.positions) / diagonal < 1e-6);
+  const auto report = nlohmann::json::parse(std::ifstream(dir / "r.json"));
+  CHECK(report["method"] == "sdm");
+  CHECK(report["iterations"].size() >= 2);
+  CHECK(report["iterations"][0]["max"].get<double>() > 1e-3);
+  std::ifstream svg(dir / "p.svg");
+  const std::string text((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+  CHECK_THAT(text, Catch::StartsWith("<svg") && Catch::Contains("<polyline"));
+}
+
+TEST_CASE("stencilfit refuses bad inputs with one line naming the fault, and writes nothing", "[fitting][cli]") {
+  const std::string tables = generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string();
+  const std::string loop = generated_table("loop", "--valence 3-8 --n 4", "sgt").string();
+  const auto dir = scratch_dir("stencilfit-bad");
+  write_points(dir / "points.xyz", ellipsoid_points(100, 0, 3));
+  {
+    std::ofstream(dir / "nan.xyz") << "0 0 0\n1 2 3\n1 nan 2\n";
+    std::ofstream(dir / "empty.xyz") << "# nothing\n";
+    std::ofstream(dir / "columns.xyz") << "0 0 0\n1 2\n";
+    std::ofstream(dir / "short.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n";
+  }
+  write_mesh(dir / "sphere.obj", quad_sphere(2));
+  const std::string out = (dir / "out.obj").string();
+  const auto run = [&](const std::string& points, const std::string& extra, const std::string& table) {
+    return run_stencilfit("--tables " + table + " --points " + (dir / points).string() + " --control " +
+                          (dir / "sphere.obj").string() + " --out " + out + " " + extra);
+  };
+  const std::vector<std::tuple<std::string, std::string, std::string, std::string>> cases{
+      {"nan.xyz", "", tables, "nan.xyz:3"},
+      {"empty.xyz", "", tables, "no points"},
+      {"columns.xyz", "", tables, "columns.xyz:2"},
+      {"short.off", "", tables, "2 of 3 vertices"},
+      {"points.xyz", "--method xdm", tables, "'xdm'"},
+      {"points.xyz", "--smoothing -1", tables, "--smoothing"},
+      {"points.xyz", "--iterations -2", tables, "--iterations"},
+      {"points.xyz", "", loop, "triangle"},
+  };
+  for (const auto& [points, extra, table, message] : cases) {
+    INFO(points << " " << extra);
+    const CliResult r = run(points, extra, table);
+    INFO(r.output);
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains(message));
+    CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);
+    CHECK(!std::filesystem::exists(out));
+    CHECK(!std::filesystem::exists(out + ".partial"));
+  }
 }

@@ -27,18 +27,20 @@ double checked_coordinate(double x, const std::string& where) {
   return x;
 }
 
-std::vector<Point> read_xyz(const std::string& path, const std::string& text) {
-  std::vector<Point> points;
+// The text's lines in order, without comments ('#' to the end of the line),
+// split into words; blank lines are skipped. `each` gets the line number too.
+template <class Each>
+void for_each_line(const std::string& text, Each each) {
   std::size_t line_number = 0, start = 0;
+  std::vector<std::string_view> words;
   while (start < text.size()) {
     std::size_t end = text.find('\n', start);
     if (end == std::string::npos) end = text.size();
     std::string_view line(text.data() + start, end - start);
     start = end + 1;
     ++line_number;
-    const std::string where = path + ":" + std::to_string(line_number);
     if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-    std::vector<std::string_view> words;
+    words.clear();
     std::size_t i = 0;
     while (i < line.size()) {
       while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
@@ -47,20 +49,74 @@ std::vector<Point> read_xyz(const std::string& path, const std::string& text) {
       if (j > i) words.push_back(line.substr(i, j - i));
       i = j;
     }
-    if (words.empty()) continue;
+    if (!words.empty() && !each(line_number, words)) return;
+  }
+}
+
+Point parse_point(const std::vector<std::string_view>& words, const std::string& where) {
+  Point p{};
+  for (int k = 0; k < 3; ++k) {
+    const auto w = words[static_cast<std::size_t>(k)];
+    const auto [stop, err] = std::from_chars(w.data(), w.data() + w.size(), p[static_cast<std::size_t>(k)]);
+    if (err != std::errc() || stop != w.data() + w.size())
+      throw std::runtime_error(where + ": " + stencil_runtime::quoted_excerpt(w) + " is not a number");
+    checked_coordinate(p[static_cast<std::size_t>(k)], where);
+  }
+  return p;
+}
+
+std::vector<Point> read_xyz(const std::string& path, const std::string& text) {
+  std::vector<Point> points;
+  for_each_line(text, [&](std::size_t line, const std::vector<std::string_view>& words) {
+    const std::string where = path + ":" + std::to_string(line);
     if (words.size() != 3)
       throw std::runtime_error(where + ": expected three numbers `x y z`, got " + std::to_string(words.size()) + " columns");
-    Point p{};
-    for (int k = 0; k < 3; ++k) {
-      const auto w = words[static_cast<std::size_t>(k)];
-      const auto [stop, err] = std::from_chars(w.data(), w.data() + w.size(), p[static_cast<std::size_t>(k)]);
-      if (err != std::errc() || stop != w.data() + w.size())
-        throw std::runtime_error(where + ": " + stencil_runtime::quoted_excerpt(w) + " is not a number");
-      checked_coordinate(p[static_cast<std::size_t>(k)], where);
-    }
-    points.push_back(p);
-  }
+    points.push_back(parse_point(words, where));
+    return true;
+  });
   if (points.empty()) throw std::runtime_error(path + ": no points (expected lines `x y z`)");
+  return points;
+}
+
+// OFF: the line `OFF`, then `vertices faces edges`, then one `x y z` line per
+// vertex (the faces that follow are not read).
+std::vector<Point> read_off(const std::string& path, const std::string& text) {
+  std::vector<Point> points;
+  std::size_t expected = 0;
+  int stage = 0;  // 0: the OFF line, 1: the counts, 2: vertices
+  for_each_line(text, [&](std::size_t line, const std::vector<std::string_view>& words) {
+    const std::string where = path + ":" + std::to_string(line);
+    if (stage == 0) {
+      if (words.size() != 1 || words[0] != "OFF")
+        throw std::runtime_error(where + ": not an OFF file (its first line must be `OFF` alone)");
+      stage = 1;
+      return true;
+    }
+    if (stage == 1) {
+      if (words.size() != 3)
+        throw std::runtime_error(where + ": expected the counts `vertices faces edges`, got " +
+                                 std::to_string(words.size()) + " columns");
+      const auto w = words[0];
+      const auto [stop, err] = std::from_chars(w.data(), w.data() + w.size(), expected);
+      if (err != std::errc() || stop != w.data() + w.size() || expected == 0 || expected > limits::kMaxMeshElements)
+        throw std::runtime_error(where + ": the vertex count " + stencil_runtime::quoted_excerpt(w) +
+                                 " is not a number from 1 to " + std::to_string(limits::kMaxMeshElements));
+      // Each vertex line takes at least 6 bytes ("0 0 0\n"): a count the file cannot hold is refused before any allocation.
+      if (expected > text.size() / 6)
+        throw std::runtime_error(where + ": " + std::to_string(expected) + " vertices cannot fit in a file of " +
+                                 std::to_string(text.size()) + " bytes");
+      points.reserve(expected);
+      stage = 2;
+      return true;
+    }
+    if (words.size() < 3)
+      throw std::runtime_error(where + ": expected a vertex `x y z`, got " + std::to_string(words.size()) + " columns");
+    points.push_back(parse_point(words, where));
+    return points.size() < expected;
+  });
+  if (points.size() < expected || expected == 0)
+    throw std::runtime_error(path + ": the file ends after " + std::to_string(points.size()) + " of " +
+                             std::to_string(expected) + " vertices");
   return points;
 }
 
@@ -184,6 +240,7 @@ std::vector<Point> read_points(const std::string& path) {
   const std::string text = read_text_file(path, kMaxPointsFileBytes);
   const std::string ext = std::filesystem::path(path).extension().string();
   if (ext == ".ply") return read_ply(path, text);
+  if (ext == ".off") return read_off(path, text);
   return read_xyz(path, text);
 }
 

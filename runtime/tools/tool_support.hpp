@@ -20,6 +20,10 @@ int run_tool(CLI::App& app, int argc, char** argv, const std::function<int()>& b
 // A regular text file of at most `max_bytes`, whole; errors name the path.
 std::string read_text_file(const std::string& path, std::size_t max_bytes = std::size_t{64} << 20);
 
+// Writes `text` to a temporary file beside `path` and renames it into place,
+// so that a failure leaves nothing behind; errors name the path.
+void write_text_file(const std::string& path, const std::string& text);
+
 // A parameter as given on the command line: an exact rational ("1/3", "0",
 // "1") or a decimal ("0.3", "2.5e-3"), which is evaluated within a tolerance.
 struct ParameterText {

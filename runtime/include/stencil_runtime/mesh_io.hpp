@@ -1,6 +1,6 @@
 #pragma once
-// Reading control meshes (Wavefront OBJ) and writing tessellations (OBJ or
-// binary PLY).
+// Reading and writing control meshes (Wavefront OBJ) and writing
+// tessellations (OBJ or binary PLY).
 #include <string>
 
 #include "mesh.hpp"
@@ -21,5 +21,10 @@ Mesh read_obj(const std::string& path);
 // with per-vertex normals when the soup has them. Writes a temporary file
 // beside `path` and renames it, so a failure leaves nothing behind.
 void write_polygons(const PolygonSoup& soup, const std::string& path);
+
+// A control mesh as OBJ (`v` lines with every digit of the doubles, then `f`
+// lines, 1-based), in the mesh's vertex and face order; written like
+// write_polygons, so a failure leaves nothing behind.
+void write_obj(const Mesh& mesh, const std::string& path);
 
 }  // namespace stencil_runtime

@@ -190,7 +190,7 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
         accepted = true;
         break;
       }
-      mu = std::max(4 * mu, 1e-3);
+      mu = mu > 0 ? 8 * mu : 1e-6;
     }
     if (!accepted) {  // no damped step lowers the objective: a minimum to the model's accuracy
       surface.set_positions(control);
@@ -198,7 +198,7 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
       break;
     }
     record(iteration, lambda, mu, rejected);
-    mu = mu / 4 < 1e-9 ? 0 : mu / 4;
+    mu = mu / 4 < 1e-12 ? 0 : mu / 4;
     lambda = std::max(lambda * options.smoothing_decay, options.smoothing * options.smoothing_floor);
   }
   result.control = std::move(control);

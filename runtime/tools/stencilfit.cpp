@@ -1,0 +1,122 @@
+// stencilfit: fits the control positions of a control mesh so that its exact
+// limit surface approximates a set of points (PDM, TDM or SDM with parameter
+// correction by exact closest points; docs/fitting.md).
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "convergence_plot.hpp"
+#include "points_file.hpp"
+#include "stencil_runtime/error.hpp"
+#include "stencil_runtime/mesh_io.hpp"
+#include "stencil_runtime/surface_fit.hpp"
+#include "tool_support.hpp"
+
+namespace {
+
+using namespace stencil_runtime;
+
+nlohmann::json report_of(const FitResult& fit, const FitOptions& options, const std::string& tables,
+                         const std::string& points, std::size_t point_count, const Mesh& mesh) {
+  nlohmann::json iterations = nlohmann::json::array();
+  for (const FitIteration& it : fit.history)
+    iterations.push_back({{"iteration", it.iteration}, {"rms", it.rms}, {"max", it.max}, {"smoothing", it.smoothing},
+                          {"damping", it.damping}, {"rejected_steps", it.rejected}, {"seconds", it.seconds}});
+  return {{"tables", tables},
+          {"points", points},
+          {"point_count", point_count},
+          {"control_points", mesh.vertex_count()},
+          {"faces", mesh.face_count()},
+          {"method", method_name(options.method)},
+          {"error_unit", "fraction of the points' bounding-box diagonal"},
+          {"diagonal", fit.diagonal},
+          {"iterations", iterations}};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "stencilfit: fits a control mesh's positions to points, so that its exact limit surface under the tables'\n"
+      "scheme approximates them (quad schemes: Catmull-Clark, nonpoly; triangle schemes are refused, as closest points\n"
+      "are not available for them yet). The fitted mesh keeps the control mesh's connectivity and vertex order. Each\n"
+      "iteration finds every point's closest point on the current surface (its foot), solves a sparse least-squares\n"
+      "problem in the control positions with the chosen error model and a smoothing term, and keeps the step only if\n"
+      "the mean squared distance (plus smoothing) went down (Levenberg-Marquardt). Progress per iteration on stderr:\n"
+      "RMS and max distance of the points to the surface as fractions of the points' bounding-box diagonal.\n"
+      "Nothing is written unless the fit completes. docs/fitting.md describes the method.\n\n"
+      "  stencilfit --tables tables/catmull-clark --points scan.xyz --control start.obj --out fitted.obj\n"
+      "  stencilfit --tables tables/nonpoly --points scan.ply --control start.obj --method tdm --iterations 30 \\\n"
+      "             --smoothing 0 --report fit.json --plot fit.svg --out fitted.obj",
+      "stencilfit"};
+  std::string tables_spec, points_path, control_path, out_path, report_path, plot_path, method = "sdm";
+  FitOptions options;
+  app.add_option("--tables", tables_spec, "a quad scheme's .sgs table file, or the directory stencilgen wrote it to")
+      ->required();
+  app.add_option("--points", points_path, "the points: .xyz/.txt (`x y z` lines), .ply (vertices) or .off (vertices)")
+      ->required();
+  app.add_option("--control", control_path, "the initial control mesh (.obj): a closed mesh near the points")->required();
+  app.add_option("--out", out_path, "the fitted control mesh (.obj)")->required();
+  app.add_option("--method", method,
+                 "error model: pdm (point distance), tdm (tangent distance) or sdm (squared distance, default)");
+  app.add_option("--iterations", options.iterations, "at most this many iterations (default 20)");
+  app.add_option("--smoothing", options.smoothing,
+                 "weight of the smoothing term in the first iteration, halved each iteration down to 1/100 of it "
+                 "(default 1e-3; 0: none)");
+  app.add_option("--max-error", options.max_error,
+                 "stop once the largest distance is at most this fraction of the diagonal (default 0: run all "
+                 "iterations)");
+  app.add_option("--tolerance", options.tolerance,
+                 "closest-point tolerance, as a fraction of the diagonal (default 1e-9)");
+  app.add_option("--threads", options.threads, "threads (default 0: all cores)");
+  app.add_option("--report", report_path, "write the per-iteration errors and times as JSON");
+  app.add_option("--plot", plot_path, "draw error against iteration as SVG");
+  return stencil_tools::run_tool(app, argc, argv, [&] {
+    options.method = parse_fit_method(method);
+    if (options.iterations < 0 || options.iterations > 100000) throw std::runtime_error("--iterations must be 0..100000");
+    if (!(options.smoothing >= 0) || !std::isfinite(options.smoothing))
+      throw std::runtime_error("--smoothing must be a number >= 0");
+    if (!(options.max_error >= 0) || !std::isfinite(options.max_error))
+      throw std::runtime_error("--max-error must be a number >= 0");
+    if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
+      throw std::runtime_error("--tolerance must be a positive number");
+    if (options.threads < 0 || options.threads > 256) throw std::runtime_error("--threads must be 1..256 (or 0 for all cores)");
+    if (std::filesystem::path(out_path).extension() != ".obj") throw std::runtime_error(out_path + ": --out must end in .obj");
+
+    const auto tables = Tables::load(tables_spec);
+    const std::vector<Point> points = stencil_tools::read_points(points_path);
+    Mesh mesh = read_obj(control_path);
+    const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
+    std::fprintf(stderr, "%zu points, %zu control points (%zu faces), %s, %s\n", points.size(), mesh.vertex_count(),
+                 mesh.face_count(), tables->scheme().c_str(), method_name(options.method));
+    options.progress = [](const FitIteration& it) {
+      std::fprintf(stderr, "iteration %3d  rms %.3e  max %.3e  (of the diagonal)  %.2f s%s\n", it.iteration, it.rms,
+                   it.max, it.seconds,
+                   it.rejected > 0 ? ("  (" + std::to_string(it.rejected) + " damped retries)").c_str() : "");
+    };
+    const FitResult fit = fit_surface(topology, mesh.positions, points, options);
+    mesh.positions = fit.control;
+
+    // Everything is formatted before anything is written; a failed write removes what went before.
+    const std::string report =
+        report_path.empty() ? "" : report_of(fit, options, tables_spec, points_path, points.size(), mesh).dump(2) + "\n";
+    const std::string plot =
+        plot_path.empty() ? ""
+                          : stencil_tools::convergence_svg(fit.history, std::string("stencilfit ") + method_name(options.method) +
+                                                                            ", " + tables->scheme() + ", " +
+                                                                            std::to_string(points.size()) + " points");
+    write_obj(mesh, out_path);
+    std::vector<std::string> written{out_path};
+    try {
+      if (!report_path.empty()) stencil_tools::write_text_file(report_path, report), written.push_back(report_path);
+      if (!plot_path.empty()) stencil_tools::write_text_file(plot_path, plot);
+    } catch (...) {
+      for (const std::string& path : written) std::remove(path.c_str());
+      throw;
+    }
+    const FitIteration& last = fit.history.back();
+    std::fprintf(stderr, "fitted in %d iterations, %.2f s: rms %.3e, max %.3e of the diagonal %.6g\n", last.iteration,
+                 last.seconds, last.rms, last.max, fit.diagonal);
+    return 0;
+  });
+}
