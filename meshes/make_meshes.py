@@ -313,6 +313,8 @@ MESHES = [
     ("chess-piece.obj", make_chess_piece, 0, "pawn-like surface of revolution with poles of valence 8 and 6"),
     ("bumpy-sphere.obj", make_bumpy_sphere, 0, "cube-sphere (4 x 4 quads per side) with radial bumps"),
     ("rook.obj", make_rook, 0, "rook-like surface of revolution with a crown of 12 merlons"),
+    ("quad-sphere.obj", lambda: make_bumpy_sphere(m=3, amplitude=0.0), 0,
+     "cube-sphere (3 x 3 quads per side), a starting control mesh for stencilfit"),
 ]
 
 

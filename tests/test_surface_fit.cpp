@@ -224,7 +224,7 @@ TEST_CASE("The errors a fit reports are the points' distances to the fitted surf
   const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string());
   Mesh sphere = quad_sphere(2);
   const auto topology = test_runtime::topology_of(tables, sphere);
-  const std::vector<Point> points = ellipsoid_points(300, 1e-2, 9);
+  const std::vector<Point> points = ellipsoid_points(150, 1e-2, 9);
   for (const FitMethod method : {FitMethod::PointDistance, FitMethod::TangentDistance, FitMethod::SquaredDistance}) {
     INFO(method_name(method));
     FitOptions options;

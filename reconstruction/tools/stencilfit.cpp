@@ -1,6 +1,7 @@
 // stencilfit: fits the control positions of a control mesh so that its exact
 // limit surface approximates a set of points (PDM, TDM or SDM with parameter
-// correction by exact closest points; docs/fitting.md).
+// correction by exact closest points; docs/fitting.md). The control mesh is
+// given, or made from the points (CGAL reconstruction and simplification).
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -9,6 +10,7 @@
 #include "points_file.hpp"
 #include "stencil_runtime/error.hpp"
 #include "stencil_runtime/mesh_io.hpp"
+#include "stencil_reconstruction/initial_mesh.hpp"
 #include "stencil_runtime/surface_fit.hpp"
 #include "tool_support.hpp"
 
@@ -38,14 +40,18 @@ nlohmann::json report_of(const FitResult& fit, const FitOptions& options, const 
 int main(int argc, char** argv) {
   CLI::App app{
       "stencilfit: fits a control mesh's positions to points, so that its exact limit surface under the tables'\n"
-      "scheme approximates them (quad schemes: Catmull-Clark, nonpoly; triangle schemes are refused, as closest points\n"
-      "are not available for them yet). The fitted mesh keeps the control mesh's connectivity and vertex order. Each\n"
+      "scheme approximates them. The control mesh is --control, or, with --control-points N, made from the points\n"
+      "alone: CGAL's advancing-front reconstruction, its holes filled, simplified by edge collapses to N vertices (a\n"
+      "triangle mesh; quad schemes take it through their polygon step, so the tables need its valences).\n"
+      "Quad schemes only (Catmull-Clark, nonpoly): triangle schemes are refused, as closest points are not available\n"
+      "for them yet. The fitted mesh keeps the control mesh's connectivity and vertex order. Each\n"
       "iteration finds every point's closest point on the current surface (its foot), solves a sparse least-squares\n"
       "problem in the control positions with the chosen error model and a smoothing term, and keeps the step only if\n"
       "the mean squared distance (plus smoothing) went down (Levenberg-Marquardt). Progress per iteration on stderr:\n"
       "RMS and max distance of the points to the surface as fractions of the points' bounding-box diagonal.\n"
       "Nothing is written unless the fit completes. docs/fitting.md describes the method.\n\n"
       "  stencilfit --tables tables/catmull-clark --points scan.xyz --control start.obj --out fitted.obj\n"
+      "  stencilfit --tables tables/catmull-clark --points bunny.off --control-points 1000 --out bunny.obj\n"
       "  stencilfit --tables tables/nonpoly --points scan.ply --control start.obj --method tdm --iterations 30 \\\n"
       "             --smoothing 0 --report fit.json --plot fit.svg --out fitted.obj",
       "stencilfit"};
@@ -55,7 +61,11 @@ int main(int argc, char** argv) {
       ->required();
   app.add_option("--points", points_path, "the points: .xyz/.txt (`x y z` lines), .ply (vertices) or .off (vertices)")
       ->required();
-  app.add_option("--control", control_path, "the initial control mesh (.obj): a closed mesh near the points")->required();
+  std::size_t control_points = 0;
+  auto* control = app.add_option("--control", control_path, "the initial control mesh (.obj): a closed mesh near the points");
+  auto* made = app.add_option("--control-points", control_points,
+                              "make the initial control mesh from the points, with this many vertices (at least 4)");
+  control->excludes(made);
   app.add_option("--out", out_path, "the fitted control mesh (.obj)")->required();
   app.add_option("--method", method,
                  "error model: pdm (point distance), tdm (tangent distance) or sdm (squared distance, default)");
@@ -83,9 +93,25 @@ int main(int argc, char** argv) {
     if (options.threads < 0 || options.threads > 256) throw std::runtime_error("--threads must be 1..256 (or 0 for all cores)");
     if (std::filesystem::path(out_path).extension() != ".obj") throw std::runtime_error(out_path + ": --out must end in .obj");
 
+    if (control_path.empty() && control_points == 0)
+      throw std::runtime_error("give the initial control mesh (--control) or its size (--control-points)");
     const auto tables = Tables::load(tables_spec);
     const std::vector<Point> points = stencil_tools::read_points(points_path);
-    Mesh mesh = read_obj(control_path);
+    Mesh mesh;
+    if (!control_path.empty()) {
+      mesh = read_obj(control_path);
+    } else {
+      stencil_reconstruction::InitialMeshOptions initial;
+      initial.control_points = control_points;
+      initial.progress = [](const std::string& stage) { std::fprintf(stderr, "initial mesh: %s\n", stage.c_str()); };
+      stencil_reconstruction::InitialMeshReport made_report;
+      mesh = stencil_reconstruction::initial_control_mesh(points, initial, &made_report);
+      std::fprintf(stderr,
+                   "initial mesh: %zu vertices, %zu triangles (reconstruction %.2f s, %zu holes filled, simplification "
+                   "%.2f s)\n",
+                   mesh.vertex_count(), mesh.face_count(), made_report.reconstruction_seconds, made_report.holes_filled,
+                   made_report.simplification_seconds);
+    }
     const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
     std::fprintf(stderr, "%zu points, %zu control points (%zu faces), %s, %s\n", points.size(), mesh.vertex_count(),
                  mesh.face_count(), tables->scheme().c_str(), method_name(options.method));
