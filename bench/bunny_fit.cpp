@@ -8,7 +8,9 @@
 //     simplification) with about 1,000 and about 8,000 vertices;
 //   - SDM iterations (smoothing 1e-3 halving), each row: time since the start
 //     (initial mesh included), max and RMS distance of the points to the
-//     surface in the unit box and as a fraction of the diagonal.
+//     surface in the unit box and as a fraction of the diagonal;
+//   - adaptive fitting (seed 002's route) from about 1,000 control points with
+//     a budget of 8,440, to a max error of 0.048% of the diagonal.
 // Then the initial mesh's time against the number of points (10k to 1M
 // points sampled uniformly on the bunny's triangles; seed 004 claims linear).
 // Usage: bench_bunny_fit TABLES.sgs [TABLES.sgs ...] (valences up to 12 or more)
@@ -138,6 +140,28 @@ int main(int argc, char** argv) {
         std::printf("# initial mesh %.2f s\n", initial_seconds);
         std::fflush(stdout);
       }
+    }
+    std::printf("# adaptive (seed 002's route): from ~1,000 control points, red-green refinement of the faces above half\n"
+                "# of max error 0.048%% of the diagonal, budget 8,440, 3 SDM iterations per round\n");
+    for (int a = 1; a < argc; ++a) {
+      const auto tables = Tables::load(argv[a]);
+      const auto start = std::chrono::steady_clock::now();
+      stencil_reconstruction::InitialMeshOptions initial;
+      initial.control_points = 1000;
+      const Mesh mesh = stencil_reconstruction::initial_control_mesh(points, initial);
+      const double initial_seconds = seconds_since(start);
+      FitOptions options;
+      options.iterations = 3;
+      options.tolerance = 1e-7;
+      options.max_error = 0.00048;
+      const AdaptiveFit fit = fit_adaptively(tables, mesh, points, options, 8440);
+      for (const FitIteration& it : fit.fit.history)
+        std::printf("%-14s %8zu %5d %9.2f %11.5f %11.5f %10.4f%% %10.4f%%\n", tables->scheme().c_str(),
+                    it.control_points, it.iteration, initial_seconds + it.seconds, it.max * fit.fit.diagonal,
+                    it.rms * fit.fit.diagonal, 100 * it.max, 100 * it.rms);
+      std::printf("# %d refinement rounds, %zu control points, initial mesh %.2f s\n", fit.rounds,
+                  fit.mesh.vertex_count(), initial_seconds);
+      std::fflush(stdout);
     }
     std::printf("# the initial mesh (1,000 vertices) against the number of points sampled on the bunny's triangles\n");
     std::printf("%10s %12s %12s %12s %12s\n", "points", "total s", "reconstruct", "repair", "simplify");

@@ -339,6 +339,9 @@ TEST_CASE("stencilfit refuses bad inputs with one line naming the fault, and wri
       {"points.xyz", "--smoothing -1", tables, "--smoothing"},
       {"points.xyz", "--iterations -2", tables, "--iterations"},
       {"points.xyz", "", loop, "triangle"},
+      {"points.xyz", "--max-control-points 100", tables, "needs --max-error"},
+      {"points.xyz", "--max-control-points 10 --max-error 0.001", tables, "below the control mesh's 26"},
+      {"points.xyz", "--max-control-points 100 --max-error 1e-6", tables, "splits triangles"},
   };
   for (const auto& [points, extra, table, message] : cases) {
     INFO(points << " " << extra);
@@ -350,4 +353,104 @@ TEST_CASE("stencilfit refuses bad inputs with one line naming the fault, and wri
     CHECK(!std::filesystem::exists(out));
     CHECK(!std::filesystem::exists(out + ".partial"));
   }
+}
+
+namespace {
+
+double area_of(const Mesh& mesh) {
+  double area = 0;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const Point& a = mesh.positions[static_cast<std::size_t>(mesh.face_vertices[3 * f])];
+    const Point& b = mesh.positions[static_cast<std::size_t>(mesh.face_vertices[3 * f + 1])];
+    const Point& c = mesh.positions[static_cast<std::size_t>(mesh.face_vertices[3 * f + 2])];
+    const Point u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    area += 0.5 * std::hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]);
+  }
+  return area;
+}
+
+// Every directed edge once and its reverse once: closed, manifold, consistently oriented.
+bool closed_and_oriented(const Mesh& mesh) {
+  std::map<std::pair<int, int>, int> directed;
+  std::size_t offset = 0;
+  for (const int size : mesh.face_sizes) {
+    for (int c = 0; c < size; ++c)
+      ++directed[{mesh.face_vertices[offset + static_cast<std::size_t>(c)],
+                  mesh.face_vertices[offset + static_cast<std::size_t>((c + 1) % size)]}];
+    offset += static_cast<std::size_t>(size);
+  }
+  for (const auto& [edge, count] : directed)
+    if (count != 1 || directed.count({edge.second, edge.first}) == 0) return false;
+  return true;
+}
+
+std::vector<int> valences_of(const Mesh& mesh) {
+  std::vector<int> valence(mesh.vertex_count(), 0);
+  for (const int v : mesh.face_vertices) ++valence[static_cast<std::size_t>(v)];
+  return valence;
+}
+
+}  // namespace
+
+TEST_CASE("Red-green refinement: closed, oriented, the same polyhedron, no T-vertices, valences capped", "[fitting]") {
+  const Mesh ico = read_obj((kMeshes / "icosahedron.obj").string());
+  SECTION("one marked face: 3 midpoints, the face in 4, its 3 neighbours bisected") {
+    std::vector<bool> marked(ico.face_count(), false);
+    marked[7] = true;
+    const Mesh refined = refine_red_green(ico, marked, 64);
+    CHECK(refined.vertex_count() == 15);
+    CHECK(refined.face_count() == 26);
+    CHECK(closed_and_oriented(refined));
+    CHECK(area_of(refined) == Approx(area_of(ico)).epsilon(1e-14));
+    for (std::size_t v = 0; v < ico.vertex_count(); ++v) CHECK(refined.positions[v] == ico.positions[v]);
+  }
+  SECTION("a face with two split edges turns red; caps turn greens red") {
+    std::mt19937 rng(3);
+    for (int trial = 0; trial < 20; ++trial) {
+      std::vector<bool> marked(ico.face_count(), false);
+      for (std::size_t f = 0; f < marked.size(); ++f) marked[f] = rng() % 4 == 0;
+      for (const int cap : {5, 6, 64}) {
+        const Mesh refined = refine_red_green(ico, marked, cap);
+        CHECK(closed_and_oriented(refined));
+        CHECK(area_of(refined) == Approx(area_of(ico)).epsilon(1e-14));
+        const std::vector<int> valence = valences_of(refined);
+        CHECK(*std::max_element(valence.begin(), valence.end()) <= std::max(cap, 6));
+      }
+    }
+  }
+  CHECK_THROWS_WITH(refine_red_green(read_obj((kMeshes / "cube.obj").string()), std::vector<bool>(6, true), 8),
+                    Catch::Contains("splits triangles"));
+  CHECK_THROWS_WITH(refine_red_green(ico, {true}, 8), Catch::Contains("1 marks"));
+}
+
+TEST_CASE("Adaptive fitting refines where the error is large, within the budget, and beats the unrefined fit",
+          "[fitting]") {
+  const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string());
+  Mesh ico = read_obj((kMeshes / "icosahedron.obj").string());
+  for (Point& p : ico.positions) {
+    const double l = std::hypot(p[0], p[1], p[2]);
+    p = {0.9 * p[0] / l, 0.9 * 0.7 * p[1] / l, 0.9 * 0.5 * p[2] / l};
+  }
+  // A bump on the ellipsoid that 12 control points cannot follow.
+  std::vector<Point> points = ellipsoid_points(3000, 0, 8);
+  for (Point& p : points) {
+    const double bump = 0.15 * std::exp(-20 * ((p[0] - 1) * (p[0] - 1) + p[1] * p[1] + p[2] * p[2]));
+    p[0] += bump;
+  }
+  FitOptions options;
+  options.iterations = 4;
+  options.max_error = 0.004;
+  const FitResult plain = fit_surface(test_runtime::topology_of(tables, ico), ico.positions, points, options);
+  const AdaptiveFit adaptive = fit_adaptively(tables, ico, points, options, 120);
+  INFO("plain max " << plain.history.back().max << ", adaptive max " << adaptive.fit.history.back().max << " with "
+                    << adaptive.mesh.vertex_count() << " control points in " << adaptive.rounds << " rounds");
+  CHECK(adaptive.rounds >= 1);
+  CHECK(adaptive.mesh.vertex_count() > ico.vertex_count());
+  CHECK(adaptive.mesh.vertex_count() <= 120);
+  CHECK(closed_and_oriented(adaptive.mesh));
+  CHECK(adaptive.fit.history.back().max < 0.5 * plain.history.back().max);
+  CHECK(adaptive.fit.history.back().control_points == adaptive.mesh.vertex_count());
+  CHECK_THROWS_WITH(fit_adaptively(tables, ico, points, options, 11), Catch::Contains("below the control mesh's 12"));
+  options.max_error = 0;
+  CHECK_THROWS_WITH(fit_adaptively(tables, ico, points, options, 100), Catch::Contains("max error above 0"));
 }

@@ -23,7 +23,8 @@ nlohmann::json report_of(const FitResult& fit, const FitOptions& options, const 
   nlohmann::json iterations = nlohmann::json::array();
   for (const FitIteration& it : fit.history)
     iterations.push_back({{"iteration", it.iteration}, {"rms", it.rms}, {"max", it.max}, {"smoothing", it.smoothing},
-                          {"damping", it.damping}, {"rejected_steps", it.rejected}, {"seconds", it.seconds}});
+                          {"damping", it.damping}, {"rejected_steps", it.rejected}, {"seconds", it.seconds},
+                          {"control_points", it.control_points}});
   return {{"tables", tables},
           {"points", points},
           {"point_count", point_count},
@@ -76,6 +77,11 @@ int main(int argc, char** argv) {
   app.add_option("--max-error", options.max_error,
                  "stop once the largest distance is at most this fraction of the diagonal (default 0: run all "
                  "iterations)");
+  std::size_t max_control_points = 0;
+  app.add_option("--max-control-points", max_control_points,
+                 "adaptive refinement: while the max error is above --max-error, split the triangles whose points are "
+                 "farther (red-green, the worst first) and fit again, up to this many control points (a triangle "
+                 "control mesh; needs --max-error)");
   app.add_option("--tolerance", options.tolerance,
                  "closest-point tolerance, as a fraction of the diagonal (default 1e-9)");
   app.add_option("--threads", options.threads, "threads (default 0: all cores)");
@@ -93,6 +99,8 @@ int main(int argc, char** argv) {
     if (options.threads < 0 || options.threads > 256) throw std::runtime_error("--threads must be 1..256 (or 0 for all cores)");
     if (std::filesystem::path(out_path).extension() != ".obj") throw std::runtime_error(out_path + ": --out must end in .obj");
 
+    if (max_control_points > 0 && !(options.max_error > 0))
+      throw std::runtime_error("--max-control-points needs --max-error (the split threshold)");
     if (control_path.empty() && control_points == 0)
       throw std::runtime_error("give the initial control mesh (--control) or its size (--control-points)");
     const auto tables = Tables::load(tables_spec);
@@ -113,15 +121,27 @@ int main(int argc, char** argv) {
                    made_report.simplification_seconds);
     }
     const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
-    std::fprintf(stderr, "%zu points, %zu control points (%zu faces), %s, %s\n", points.size(), mesh.vertex_count(),
-                 mesh.face_count(), tables->scheme().c_str(), method_name(options.method));
-    options.progress = [](const FitIteration& it) {
-      std::fprintf(stderr, "iteration %3d  rms %.3e  max %.3e  (of the diagonal)  %.2f s%s\n", it.iteration, it.rms,
-                   it.max, it.seconds,
+    // The header goes out with the first iteration, after the fit's own checks of its inputs.
+    bool started = false;
+    options.progress = [&](const FitIteration& it) {
+      if (!started)
+        std::fprintf(stderr, "%zu points, %zu control points (%zu faces), %s, %s\n", points.size(), mesh.vertex_count(),
+                     mesh.face_count(), tables->scheme().c_str(), method_name(options.method));
+      started = true;
+      std::fprintf(stderr, "iteration %3d  rms %.3e  max %.3e  (of the diagonal)  %zu control points  %.2f s%s\n",
+                   it.iteration, it.rms, it.max, it.control_points, it.seconds,
                    it.rejected > 0 ? ("  (" + std::to_string(it.rejected) + " damped retries)").c_str() : "");
     };
-    const FitResult fit = fit_surface(topology, mesh.positions, points, options);
-    mesh.positions = fit.control;
+    FitResult fit;
+    if (max_control_points > 0) {
+      AdaptiveFit adaptive = fit_adaptively(tables, mesh, points, options, max_control_points);
+      std::fprintf(stderr, "%d refinement rounds: %zu control points\n", adaptive.rounds, adaptive.mesh.vertex_count());
+      mesh = std::move(adaptive.mesh);
+      fit = std::move(adaptive.fit);
+    } else {
+      fit = fit_surface(topology, mesh.positions, points, options);
+      mesh.positions = fit.control;
+    }
 
     // Everything is formatted before anything is written; a failed write removes what went before.
     const std::string report =
@@ -141,8 +161,8 @@ int main(int argc, char** argv) {
       throw;
     }
     const FitIteration& last = fit.history.back();
-    std::fprintf(stderr, "fitted in %d iterations, %.2f s: rms %.3e, max %.3e of the diagonal %.6g\n", last.iteration,
-                 last.seconds, last.rms, last.max, fit.diagonal);
+    std::fprintf(stderr, "fitted in %d iterations, %.2f s: rms %.3e, max %.3e of the diagonal %.6g, %zu control points\n",
+                 last.iteration, last.seconds, last.rms, last.max, fit.diagonal, mesh.vertex_count());
     return 0;
   });
 }

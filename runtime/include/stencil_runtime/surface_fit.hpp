@@ -21,6 +21,7 @@
 
 #include "mesh.hpp"
 #include "surface_topology.hpp"
+#include "tables.hpp"
 
 namespace stencil_runtime {
 
@@ -41,6 +42,7 @@ struct FitIteration {
   double smoothing = 0;  // lambda used in this iteration
   double damping = 0;    // the Levenberg-Marquardt weight of the accepted step
   int rejected = 0;      // steps tried and rejected (the objective grew) before the accepted one
+  std::size_t control_points = 0;  // of the control mesh fitted in this iteration
   double seconds = 0;    // since the fit started
 };
 
@@ -66,6 +68,9 @@ struct FitResult {
   std::vector<Point> control;        // the fitted control positions, in the control mesh's vertex order
   std::vector<FitIteration> history;  // the initial mesh, then one entry per accepted iteration
   double diagonal = 0;                // of the points' bounding box: the unit of rms and max
+  // Per control-mesh face, the largest distance of a point whose foot lies on
+  // it, for the final surface (absolute; 0 where no foot lies).
+  std::vector<double> face_max_error;
 };
 
 // The fit from `initial` control positions on `topology` (a quad scheme's:
@@ -74,6 +79,34 @@ struct FitResult {
 // other than the topology's.
 FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std::vector<Point>& initial,
                       const std::vector<Point>& points, const FitOptions& options);
+
+// Red-green refinement of a triangle control mesh (seed 003, section II-F):
+// the marked triangles split 1-to-4, a triangle with two or more split edges
+// split too (repeated until none is left), a triangle with one split edge
+// bisected towards its opposite corner (green), so that no T-vertex remains;
+// where a green bisection would raise a vertex's valence above max_valence
+// the triangle splits red instead.
+// New vertices sit at their edges' midpoints and follow the old ones; the
+// orientation is kept. Throws FitError for a face that is not a triangle or a
+// mark count other than the face count.
+Mesh refine_red_green(const Mesh& mesh, const std::vector<bool>& marked, int max_valence);
+
+// Adaptive fitting (seeds 002, 003): fit_surface on `mesh` (a triangle mesh),
+// then, while the max error is above options.max_error (which must be > 0)
+// and the control points are below max_control_points: split the faces whose
+// points are farther than options.max_error (the worst first, as many as the
+// budget allows; red-green, valences kept within the tables') and fit again
+// from the refined mesh. Returns the
+// last mesh with the fitted positions and the iterations of every round.
+// Throws FitError for a budget below the mesh's vertex count.
+struct AdaptiveFit {
+  Mesh mesh;
+  FitResult fit;
+  int rounds = 0;
+};
+AdaptiveFit fit_adaptively(const std::shared_ptr<const Tables>& tables, const Mesh& mesh,
+                           const std::vector<Point>& points, const FitOptions& options,
+                           std::size_t max_control_points);
 
 // One linear least-squares solve at given samples (no parameter correction):
 // the control positions minimising (1/m) sum |S(sample_k) - points_k|^2 +

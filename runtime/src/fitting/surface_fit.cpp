@@ -145,6 +145,7 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
     it.rms = std::sqrt(current.mean_square) / result.diagonal;
     it.max = current.max / result.diagonal;
     it.smoothing = lambda, it.damping = mu, it.rejected = rejected;
+    it.control_points = topology->vertex_count();
     it.seconds = elapsed();
     result.history.push_back(it);
     if (options.progress) options.progress(it);
@@ -202,6 +203,9 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
     lambda = std::max(lambda * options.smoothing_decay, options.smoothing * options.smoothing_floor);
   }
   result.control = std::move(control);
+  result.face_max_error.assign(topology->face_count(), 0.0);
+  for (const ClosestPoint& foot : current.feet)
+    result.face_max_error[foot.face] = std::max(result.face_max_error[foot.face], foot.distance);
   return result;
 }
 

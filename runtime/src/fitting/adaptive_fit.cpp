@@ -1,0 +1,69 @@
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+#include "stencil_runtime/surface_fit.hpp"
+
+namespace stencil_runtime {
+
+AdaptiveFit fit_adaptively(const std::shared_ptr<const Tables>& tables, const Mesh& mesh,
+                           const std::vector<Point>& points, const FitOptions& options,
+                           std::size_t max_control_points) {
+  if (!(options.max_error > 0)) throw FitError("adaptive refinement needs a max error above 0 (the split threshold)");
+  if (max_control_points < mesh.vertex_count())
+    throw FitError("the control-point budget " + std::to_string(max_control_points) + " is below the control mesh's " +
+                   std::to_string(mesh.vertex_count()) + " vertices");
+  for (std::size_t f = 0; f < mesh.face_count(); ++f)
+    if (mesh.face_sizes[f] != 3)
+      throw FitError("adaptive refinement splits triangles: face " + std::to_string(f) + " of the control mesh has " +
+                     std::to_string(mesh.face_sizes[f]) +
+                     " corners (give a triangle control mesh, or let --control-points make one)");
+  AdaptiveFit out;
+  out.mesh = mesh;
+  double elapsed = 0;
+  for (;;) {
+    const auto topology =
+        SurfaceTopology::create(tables, out.mesh.vertex_count(), out.mesh.face_sizes, out.mesh.face_vertices);
+    FitOptions round = options;
+    const auto offset = out.fit.history.empty() ? 0 : out.fit.history.back().iteration;
+    round.progress = [&](const FitIteration& it) {
+      if (!options.progress || (it.iteration == 0 && offset > 0)) return;
+      FitIteration shifted = it;
+      shifted.iteration += offset, shifted.seconds += elapsed;
+      options.progress(shifted);
+    };
+    FitResult fit = fit_surface(topology, out.mesh.positions, points, round);
+    for (FitIteration& it : fit.history) it.iteration += offset, it.seconds += elapsed;
+    elapsed = fit.history.back().seconds;
+    // The histories join: a round's iteration 0 repeats the previous round's last state on a refined mesh.
+    if (!out.fit.history.empty()) fit.history.erase(fit.history.begin());
+    fit.history.insert(fit.history.begin(), out.fit.history.begin(), out.fit.history.end());
+    out.fit = std::move(fit);
+    out.mesh.positions = out.fit.control;
+    // Faces above half the target split: those just below it would only need the next round.
+    const double threshold = 0.5 * options.max_error * out.fit.diagonal;
+    if (out.fit.history.back().max <= options.max_error || out.mesh.vertex_count() >= max_control_points) break;
+    // The faces above the threshold, worst first; each split adds about 1.5 vertices (three shared midpoints).
+    std::vector<std::size_t> order(out.mesh.face_count());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return out.fit.face_max_error[a] > out.fit.face_max_error[b];
+    });
+    const std::size_t room = max_control_points - out.mesh.vertex_count();
+    std::vector<bool> marked(out.mesh.face_count(), false);
+    std::size_t count = 0;
+    for (const std::size_t f : order) {
+      if (out.fit.face_max_error[f] <= threshold || 3 * (count + 1) > 2 * room) break;
+      marked[f] = true, ++count;
+    }
+    if (count == 0) break;
+    const std::vector<int> valences = tables->valences();
+    Mesh refined = refine_red_green(out.mesh, marked, *std::max_element(valences.begin(), valences.end()));
+    if (refined.vertex_count() > max_control_points) break;  // the closure needed more than the budget
+    out.mesh = std::move(refined);
+    ++out.rounds;
+  }
+  return out;
+}
+
+}  // namespace stencil_runtime
