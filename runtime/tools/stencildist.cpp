@@ -4,7 +4,7 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
+#include <string>
 
 #include "points_file.hpp"
 #include "stencil_runtime/closest_point.hpp"
@@ -17,18 +17,21 @@ namespace {
 
 using namespace stencil_runtime;
 
-// The result lines, written to `path.partial` and moved into place when whole.
-void write_results(const std::vector<ClosestPoint>& results, bool normals, bool signed_distance, FILE* out) {
+// The result lines: `face u v x y z distance [nx ny nz]`, or `none`.
+std::string result_lines(const std::vector<ClosestPoint>& results, bool normals, bool signed_distance) {
+  std::string out;
+  char line[512];
   for (const ClosestPoint& r : results) {
     if (!r.found) {
-      std::fprintf(out, "none\n");
+      out += "none\n";
       continue;
     }
-    std::fprintf(out, "%zu %.17g %.17g %.17g %.17g %.17g %.17g", r.face, r.u, r.v, r.point[0], r.point[1], r.point[2],
-                 signed_distance ? r.signed_distance : r.distance);
-    if (normals) std::fprintf(out, " %.17g %.17g %.17g", r.normal[0], r.normal[1], r.normal[2]);
-    std::fputc('\n', out);
+    int n = std::snprintf(line, sizeof line, "%zu %.17g %.17g %.17g %.17g %.17g %.17g", r.face, r.u, r.v, r.point[0],
+                          r.point[1], r.point[2], signed_distance ? r.signed_distance : r.distance);
+    if (normals) n += std::snprintf(line + n, sizeof line - n, " %.17g %.17g %.17g", r.normal[0], r.normal[1], r.normal[2]);
+    out.append(line, static_cast<std::size_t>(n)).push_back('\n');
   }
+  return out;
 }
 
 }  // namespace
@@ -82,25 +85,9 @@ int main(int argc, char** argv) {
     const std::vector<ClosestPoint> results = query.find(queries);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    if (out_path.empty()) {
-      write_results(results, normals, signed_distance, stdout);
-    } else {
-      const std::string temp = out_path + ".partial";
-      FILE* f = std::fopen(temp.c_str(), "w");
-      if (!f) throw std::runtime_error(out_path + ": cannot write");
-      write_results(results, normals, signed_distance, f);
-      const bool ok = std::ferror(f) == 0;
-      if (std::fclose(f) != 0 || !ok) {
-        std::remove(temp.c_str());
-        throw std::runtime_error(out_path + ": write failed");
-      }
-      std::error_code ec;
-      std::filesystem::rename(temp, out_path, ec);
-      if (ec) {
-        std::remove(temp.c_str());
-        throw std::runtime_error(out_path + ": cannot move the finished file into place: " + ec.message());
-      }
-    }
+    const std::string lines = result_lines(results, normals, signed_distance);
+    if (out_path.empty()) std::fwrite(lines.data(), 1, lines.size(), stdout);
+    else stencil_tools::write_text_file(out_path, lines);  // all or nothing
     double largest = 0, sum = 0;
     std::size_t found = 0;
     for (const ClosestPoint& r : results)
