@@ -139,6 +139,15 @@ def main():
         seed("parameter", f"seed{k}", text)
     for k, text in enumerate(["1\n2\n3\n", "# rates\n4\n\n5 # five\n", "0\n", "5000\n", "abc\n", "1 2\n", "7"]):
         seed("rates_file", f"seed{k}", text)
+    points_seeds = ["\x00" + "0 0 0\n1 2 3\n# c\n\n4 5 6\n", "\x00" + "1 2\n", "\x00" + "1 nan 2\n",
+                    "\x02" + "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "\x02" + "OFF\n99999999 0 0\n",
+                    "\x02" + "OFF\n2 0 0\n0 0 0\n",
+                    "\x01" + "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+                    "property float z\nend_header\n0 0 0\n1 1 1\n",
+                    "\x01" + "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty double x\n"
+                    "property double y\nproperty double z\nend_header\n" + "\x00" * 24]
+    for k, text in enumerate(points_seeds):
+        seed("points_file", f"seed{k}", text)
     for k, text in enumerate(["24", "12-24", "3,5,7", "1-4,8", "", "0", "5-3", "1,,2", "1234567", "3-8"]):
         seed("rate_spec", f"seed{k}", text)
 

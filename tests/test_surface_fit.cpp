@@ -261,6 +261,9 @@ TEST_CASE("Fitting refuses bad inputs with clear errors", "[fitting]") {
                     Catch::Contains("control positions for a control mesh of"));
   CHECK_THROWS_WITH(fit_surface(topology, sphere.positions, std::vector<Point>(5, Point{1, 2, 3}), options),
                     Catch::Contains("all equal"));
+  options.threads = -1;
+  CHECK_THROWS_WITH(fit_surface(topology, sphere.positions, points, options), Catch::Contains("threads"));
+  options.threads = 0;
   options.smoothing = -1;
   CHECK_THROWS_AS(fit_surface(topology, sphere.positions, points, options), FitError);
   CHECK_THROWS_WITH(parse_fit_method("pdx"), Catch::Contains("'pdx'"));

@@ -9,7 +9,6 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
-#include <memory>
 #include <vector>
 
 #include "stencil_runtime/stencil_rows.hpp"

@@ -117,6 +117,7 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
   for (const double x : {options.smoothing, options.smoothing_decay, options.smoothing_floor, options.max_error})
     if (!(x >= 0) || !std::isfinite(x)) throw FitError("smoothing, its decay and floor, and max_error must be finite and >= 0");
   if (!(options.tolerance > 0) || !std::isfinite(options.tolerance)) throw FitError("the tolerance must be positive");
+  if (options.threads < 0 || options.threads > 256) throw FitError("threads must be 0 (all cores) to 256");
 
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
