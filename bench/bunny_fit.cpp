@@ -13,7 +13,8 @@
 //     a budget of 8,440, to a max error of 0.048% of the diagonal.
 // Then the initial mesh's time against the number of points (10k to 1M
 // points sampled uniformly on the bunny's triangles; seed 004 claims linear).
-// Usage: bench_bunny_fit TABLES.sgs [TABLES.sgs ...] (valences up to 12 or more)
+// Usage: bench_bunny_fit TABLES.sgs [TABLES.sgs ...] (valences up to 12 or more);
+//        bench_bunny_fit --initial-mesh-only (the growth table alone)
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -108,9 +109,11 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: bench_bunny_fit TABLES.sgs [TABLES.sgs ...]\n");
+    std::fprintf(stderr, "usage: bench_bunny_fit TABLES.sgs [TABLES.sgs ...] | --initial-mesh-only\n");
     return 1;
   }
+  const bool fits = std::string(argv[1]) != "--initial-mesh-only";
+  if (!fits) argc = 1;
   try {
     const OffMesh bunny = read_bunny();
     std::vector<Point> points = bunny.vertices;
@@ -141,7 +144,8 @@ int main(int argc, char** argv) {
         std::fflush(stdout);
       }
     }
-    std::printf("# adaptive (seed 002's route): from ~1,000 control points, red-green refinement of the faces above half\n"
+    if (fits)
+      std::printf("# adaptive (seed 002's route): from ~1,000 control points, red-green refinement of the faces above half\n"
                 "# of max error 0.048%% of the diagonal, budget 8,440, 3 SDM iterations per round\n");
     for (int a = 1; a < argc; ++a) {
       const auto tables = Tables::load(argv[a]);
@@ -164,16 +168,17 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     }
     std::printf("# the initial mesh (1,000 vertices) against the number of points sampled on the bunny's triangles\n");
-    std::printf("%10s %12s %12s %12s %12s\n", "points", "total s", "reconstruct", "repair", "simplify");
-    for (const std::size_t count : {std::size_t{10000}, std::size_t{100000}, std::size_t{1000000}}) {
+    std::printf("%10s %10s %12s %12s %12s %12s\n", "points", "used", "total s", "reconstruct", "repair", "simplify");
+    for (const std::size_t count :
+         {std::size_t{10000}, std::size_t{30000}, std::size_t{100000}, std::size_t{300000}, std::size_t{1000000}}) {
       const std::vector<Point> sample = sample_triangles(bunny, count, 7);
       stencil_reconstruction::InitialMeshOptions initial;
       initial.control_points = 1000;
       stencil_reconstruction::InitialMeshReport report;
       const auto start = std::chrono::steady_clock::now();
       stencil_reconstruction::initial_control_mesh(sample, initial, &report);
-      std::printf("%10zu %12.2f %12.2f %12.2f %12.2f\n", count, seconds_since(start), report.reconstruction_seconds,
-                  report.repair_seconds, report.simplification_seconds);
+      std::printf("%10zu %10zu %12.2f %12.2f %12.2f %12.2f\n", count, report.points_used, seconds_since(start),
+                  report.reconstruction_seconds, report.repair_seconds, report.simplification_seconds);
       std::fflush(stdout);
     }
   } catch (const std::exception& e) {

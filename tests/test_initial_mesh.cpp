@@ -86,6 +86,22 @@ TEST_CASE("The initial mesh from points is closed, outward, of the requested siz
   }
 }
 
+TEST_CASE("A large scan is reduced to a subset before the reconstruction, and still gives a closed mesh", "[fitting]") {
+  const std::vector<Point> points = chess_piece_points(6);
+  InitialMeshOptions options;
+  options.control_points = 100;
+  options.max_points_per_control_point = 20;
+  options.min_points = 1000;
+  stencil_reconstruction::InitialMeshReport report;
+  const Mesh mesh = stencil_reconstruction::initial_control_mesh(points, options, &report);
+  CHECK(report.points_used == 2000);
+  CHECK(mesh.vertex_count() >= 98);
+  CHECK(mesh.vertex_count() <= 100);
+  CHECK(signed_volume(mesh) > 0);
+  const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-16 --n 4", "sgs").string());
+  CHECK_NOTHROW(SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices));
+}
+
 TEST_CASE("stencilfit from raw points: initial mesh, then a fit that approaches the points", "[fitting][cli]") {
   const auto dir = scratch_dir("stencilfit-raw");
   {

@@ -2,7 +2,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <algorithm>
 #include <map>
+#include <random>
 
 #include "advancing_front.hpp"
 #include "simplification.hpp"
@@ -71,8 +73,19 @@ Mesh initial_control_mesh(const std::vector<Point>& points, const InitialMeshOpt
   InitialMeshReport local;
   InitialMeshReport& r = report ? *report : local;
 
-  say("advancing-front reconstruction of " + std::to_string(points.size()) + " points");
   auto start = std::chrono::steady_clock::now();
+  // A coarse control mesh does not need every point of a large scan: a fixed
+  // pseudo-random subset (linear time) keeps the reconstruction and the
+  // simplification, which grow faster than linearly, to a bounded size.
+  const std::size_t kept = std::max(options.max_points_per_control_point * options.control_points, options.min_points);
+  if (cgal_points.size() > kept) {
+    std::mt19937_64 rng(20041);
+    std::shuffle(cgal_points.begin(), cgal_points.end(), rng);
+    cgal_points.resize(kept);
+    cgal_points.shrink_to_fit();
+  }
+  r.points_used = cgal_points.size();
+  say("advancing-front reconstruction of " + std::to_string(cgal_points.size()) + " points");
   TriangleMesh surface = advancing_front(cgal_points);
   r.reconstruction_seconds = seconds_since(start);
   say("closing the surface (" + std::to_string(surface.number_of_faces()) + " triangles)");

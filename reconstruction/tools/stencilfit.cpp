@@ -115,10 +115,10 @@ int main(int argc, char** argv) {
       stencil_reconstruction::InitialMeshReport made_report;
       mesh = stencil_reconstruction::initial_control_mesh(points, initial, &made_report);
       std::fprintf(stderr,
-                   "initial mesh: %zu vertices, %zu triangles (reconstruction %.2f s, %zu holes filled, simplification "
-                   "%.2f s)\n",
-                   mesh.vertex_count(), mesh.face_count(), made_report.reconstruction_seconds, made_report.holes_filled,
-                   made_report.simplification_seconds);
+                   "initial mesh: %zu vertices, %zu triangles (reconstruction from %zu points %.2f s, %zu holes filled, "
+                   "simplification %.2f s)\n",
+                   mesh.vertex_count(), mesh.face_count(), made_report.points_used, made_report.reconstruction_seconds,
+                   made_report.holes_filled, made_report.simplification_seconds);
     }
     const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
     // The header goes out with the first iteration, after the fit's own checks of its inputs.
