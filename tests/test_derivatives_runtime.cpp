@@ -226,7 +226,41 @@ TEST_CASE("derivatives are refused where they do not exist or are not exact, wit
   CHECK_THROWS_WITH(cc.second_derivatives(0, grid(0, 0, 1)), Catch::Contains("extraordinary vertex"));
   const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4", "sgt").string());
   const Surface ico = surface_of(loop, load("icosahedron"));
-  CHECK_THROWS_WITH(ico.derivatives(0, grid(1, 1, 3)), Catch::Contains("not yet for triangle schemes"));
+  CHECK_THROWS_WITH(ico.second_derivatives(0, grid(1, 1, 3)), Catch::Contains("not yet for triangle schemes"));
+  CHECK_THROWS_WITH(ico.derivatives(0, 0.0, 0.0), Catch::Contains("extraordinary vertex"));
+  const auto sqrt3 = Tables::load(generated_table("sqrt3", "--valence 3-8 --n 3", "sgt").string());
+  const Surface torus = surface_of(sqrt3, load("tri-torus"));
+  CHECK_THROWS_WITH(torus.derivatives(0, 0.25, 0.25), Catch::Contains("not polynomial"));
+}
+
+TEST_CASE("Loop derivatives through the runtime equal OpenSubdiv's on the bundled triangle meshes",
+          "[runtime][derivatives][opensubdiv]") {
+  const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4", "sgt").string());
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  for (const char* name : {"icosahedron", "tri-torus", "tri-mix"}) {
+    INFO(name);
+    const Mesh mesh = load(name);
+    const Surface surface = surface_of(loop, mesh);
+    bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices,
+                                      OpenSubdiv::OPENSUBDIV_VERSION::Sdc::SCHEME_LOOP);
+    double scale = 0;
+    for (const Point& p : mesh.positions) scale = std::max({scale, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+    for (std::size_t f = 0; f < mesh.face_count(); ++f)
+      for (int s = 0; s < 6; ++s) {
+        double u = uniform(rng), v = uniform(rng);
+        if (u + v > 1) u = 1 - u, v = 1 - v;
+        if (s == 0) u = 1e-3, v = 2e-3;  // next to corner 0, deep in the descent where it is extraordinary
+        const Derivatives ours = surface.derivatives(f, u, v);
+        const auto bfr = reference.derivatives(static_cast<int>(f), u, v);
+        INFO("face " << f << " at (" << u << ", " << v << ")");
+        for (int k = 0; k < 3; ++k) {
+          CHECK(std::abs(ours.point[k] - bfr[0][k]) <= 1e-12 * scale);
+          CHECK(std::abs(ours.du[k] - bfr[1][k]) <= 1e-11 * scale);
+          CHECK(std::abs(ours.dv[k] - bfr[2][k]) <= 1e-11 * scale);
+        }
+      }
+  }
 }
 
 TEST_CASE("stencileval --second-derivatives prints Bfr's second derivatives, and refuses nonpoly with the reason",

@@ -64,7 +64,9 @@ class Surface {
 
   // The limit point and its first partial derivatives along the face's (u, v)
   // (for an N-gon's sub-faces, along the face's own (u, v): each sub-face's
-  // coordinates are the tile's doubled). Quad schemes only so far. Computed by
+  // coordinates are the tile's doubled). Quad schemes, and Loop on triangle
+  // meshes (its regular patch is polynomial: exact to rounding anywhere but an
+  // extraordinary vertex); sqrt(3) is refused. Computed by
   // the scheme's own subdivision of the patch down to a regular patch: exact
   // to rounding where that patch is polynomial (Catmull-Clark), and for any
   // scheme at exact rationals whose descent reaches a stored grid (k/n of a

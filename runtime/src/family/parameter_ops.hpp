@@ -33,9 +33,30 @@ inline double add(double a, double b) { return a + b; }
 inline double subtract(double a, double b) { return a - b; }
 inline double multiply(double a, std::int64_t k) { return a * static_cast<double>(k); }
 inline int compare(double a, double b) { return a < b ? -1 : (a > b ? 1 : 0); }
+// A parameter with its derivatives along the original face's (u, v) (forward
+// differentiation): the same child maps, run on Duals, carry the Jacobian of
+// the map from the face's parameter to a sub-patch's, exactly (the maps are
+// affine with integer coefficients). Comparisons use the value alone.
+struct Dual {
+  double value = 0, du = 0, dv = 0;
+};
+inline double to_real(const Dual& x) { return x.value; }
+inline Dual add(const Dual& a, const Dual& b) { return {a.value + b.value, a.du + b.du, a.dv + b.dv}; }
+inline Dual subtract(const Dual& a, const Dual& b) { return {a.value - b.value, a.du - b.du, a.dv - b.dv}; }
+inline Dual multiply(const Dual& a, std::int64_t k) {
+  const double f = static_cast<double>(k);
+  return {a.value * f, a.du * f, a.dv * f};
+}
+inline int compare(const Dual& a, const Dual& b) { return compare(a.value, b.value); }
+inline Dual scale_minus(const Dual& x, std::int64_t k, std::int64_t c) {
+  return subtract(multiply(x, k), Dual{static_cast<double>(c), 0, 0});
+}
+inline Dual from(std::int64_t c, const Dual& x) { return subtract(Dual{static_cast<double>(c), 0, 0}, x); }
+
 template <class P>
 P integer(std::int64_t c) {
   if constexpr (std::is_same_v<P, Fraction>) return Fraction{c, 1};
+  else if constexpr (std::is_same_v<P, Dual>) return Dual{static_cast<double>(c), 0, 0};
   else return static_cast<double>(c);
 }
 

@@ -207,6 +207,52 @@ Approximation TrianglePatchDescent::evaluate(int valence, int region, std::vecto
   }
 }
 
+Derivatives TrianglePatchDescent::derivatives(int valence, int region, std::vector<Point>& q, Dual x, Dual y) const {
+  const int d = tables_.polynomial_degree();
+  if (d <= 0)
+    throw EvaluationError("this triangle scheme's regular patch is not polynomial (sqrt(3)), and its tables hold no "
+                          "derivative stencils: no derivatives for it yet");
+  const int m = tables_.dilation();
+  std::vector<Point> next;
+  for (int level = 0; valence != 6; ++level) {
+    if (level == kMaxLevels)
+      throw EvaluationError("the parameter is an extraordinary vertex (or within 2^-64 of one): no parametric "
+                            "derivative there");
+    const int c = cell_of(x, y, m);
+    const TriangleChild& child = tables_.children(valence, region)[static_cast<std::size_t>(c)];
+    apply(child.rows, q, next);
+    to_kind(x, y, child.rotation);
+    valence = child.valence, region = child.region;
+    q.swap(next);
+  }
+  // The regular cell's polynomial and its partials in the cell's (X, Y), then the chain rule.
+  const std::size_t terms = static_cast<std::size_t>((d + 1) * (d + 2) / 2);
+  const std::vector<double>& coefficients = tables_.polynomial();
+  const double X = x.value, Y = y.value;
+  std::vector<double> value, dX, dY;
+  for (int f = 0; f <= d; ++f)
+    for (int e = 0; e + f <= d; ++e) {
+      value.push_back(std::pow(X, e) * std::pow(Y, f));
+      dX.push_back(e > 0 ? e * std::pow(X, e - 1) * std::pow(Y, f) : 0.0);
+      dY.push_back(f > 0 ? f * std::pow(X, e) * std::pow(Y, f - 1) : 0.0);
+    }
+  Derivatives out;
+  for (std::size_t h = 0; h < q.size(); ++h) {
+    double w = 0, wx = 0, wy = 0;
+    for (std::size_t k = 0; k < terms; ++k) {
+      const double c = coefficients[h * terms + k];
+      w += c * value[k], wx += c * dX[k], wy += c * dY[k];
+    }
+    const double wu = wx * x.du + wy * y.du, wv = wx * x.dv + wy * y.dv;
+    for (std::size_t k = 0; k < 3; ++k) {
+      out.point[k] += w * q[h][k];
+      out.du[k] += wu * q[h][k];
+      out.dv[k] += wv * q[h][k];
+    }
+  }
+  return out;
+}
+
 template Approximation TrianglePatchDescent::evaluate<Fraction>(int, int, std::vector<Point>&, Fraction, Fraction, double) const;
 template Approximation TrianglePatchDescent::evaluate<double>(int, int, std::vector<Point>&, double, double, double) const;
 

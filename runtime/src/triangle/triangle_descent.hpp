@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "family/family.hpp"
+#include "family/parameter_ops.hpp"
 #include "tables/triangle_tables.hpp"
 
 namespace stencil_runtime {
@@ -31,6 +32,14 @@ class TrianglePatchDescent {
   // (x, y): the patch parameter. P is Fraction or double.
   template <class P>
   Approximation evaluate(int valence, int region, std::vector<Point>& points, P x, P y, double tolerance) const;
+
+  // The limit point and its derivatives along the original face's (u, v), for
+  // a scheme whose regular patch is polynomial (Loop): the descent runs to a
+  // regular cell and differentiates its polynomial; (x, y) carry the
+  // derivatives of the patch parameter along (u, v), and so every cell's.
+  // Throws EvaluationError at the extraordinary vertex itself (no parametric
+  // derivative there) and for a scheme without a polynomial regular patch.
+  Derivatives derivatives(int valence, int region, std::vector<Point>& points, Dual x, Dual y) const;
 
  private:
   Approximation nearest_sample(int valence, int region, const std::vector<Point>& q, double x, double y, double& sx,

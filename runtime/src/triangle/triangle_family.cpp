@@ -70,6 +70,9 @@ std::pair<int, std::array<P, 2>> ternary_child(const P& u, const P& v) {
       ++c;
     }
     return {best, at};
+  } else if constexpr (std::is_same_v<P, Dual>) {
+    throw EvaluationError("parameter (" + std::to_string(u.value) + ", " + std::to_string(v.value) +
+                          ") lies outside the triangle");
   } else {
     throw EvaluationError("parameter (" + u.str() + ", " + v.str() + ") lies outside the triangle");
   }
@@ -188,6 +191,20 @@ Approximation TriangleFamily::evaluate(std::size_t face, double u, double v, dou
   const auto fu = exact_fraction(u), fv = exact_fraction(v);
   if (fu && fv) return evaluate(face, ExactParameter{*fu, *fv}, tolerance, prepared);
   return descend(face, u, v, tolerance, prepared);
+}
+
+Derivatives TriangleFamily::derivatives(std::size_t face, double u, double v, const Point* prepared) const {
+  const TrianglePatchDescent& descent = checked_descent();
+  const auto [pf, q] = patch_parameter(face, Dual{u, 1, 0}, Dual{v, 0, 1});
+  const TrianglePatch& patch = patches_[pf];
+  std::vector<Point> points(patch.points.size());
+  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
+  return descent.derivatives(patch.valence, patch.region, points, q[0], q[1]);
+}
+
+Derivatives TriangleFamily::derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const {
+  // The regular patch's polynomial is evaluated in doubles either way.
+  return derivatives(face, at.u.to_double(), at.v.to_double(), prepared);
 }
 
 std::string TriangleFamily::preparation() const {

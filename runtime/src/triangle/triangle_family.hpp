@@ -33,6 +33,10 @@ class TriangleFamily final : public Family {
   using Family::stencil;  // and at a real parameter
   Approximation evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const override;
   Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const override;
+  // First derivatives along the face's (u, v): Loop (polynomial regular
+  // patch) anywhere but an extraordinary vertex; sqrt(3) refused.
+  Derivatives derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
+  Derivatives derivatives(std::size_t face, double u, double v, const Point* prepared) const override;
   // Sub-patches (closest points) are not built for triangle patches yet: every one of these refuses.
   bool hull_bounds() const override { unavailable(); }
   void root(std::size_t, const Point*, SubPatch&) const override { unavailable(); }
