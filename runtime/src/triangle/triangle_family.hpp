@@ -46,6 +46,10 @@ class TriangleFamily final : public Family {
   void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
   void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
               std::array<float, 3>* out) const override;
+  // Loop: the unit normal at each of those points (the descent's derivatives);
+  // sqrt(3) is refused.
+  void normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
+               std::array<float, 3>* out) const override;
 
   // Below the public interface (tests, benchmarks):
   const TriangleTables& tables() const { return tables_; }

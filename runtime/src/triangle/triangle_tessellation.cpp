@@ -110,4 +110,32 @@ void TriangleFamily::points(const TessellationLayout& layout, std::size_t begin,
   }
 }
 
+void TriangleFamily::normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
+                             std::array<float, 3>* out_all) const {
+  const TrianglePatchDescent& descent = checked_descent();
+  std::vector<Point> local;
+  for (std::size_t f = begin; f != end; ++f) {
+    const TrianglePatch& p = patches_[f];
+    const long n = layout.rates[f];
+    std::array<float, 3>* out = out_all + layout.point_offsets[f];
+    // The same points as points(), differentiated in the patch's own
+    // coordinates: the patch's rotation keeps the orientation, so du x dv
+    // there points the same way as on the face.
+    auto put = [&](long a, long b) {
+      long pa = 0, pb = 0;
+      p.to_patch(a, b, 3 * n, pa, pb);
+      local.resize(p.points.size());
+      for (std::size_t h = 0; h < local.size(); ++h) local[h] = pos[p.points[h]];
+      const double g = 3.0 * static_cast<double>(n);
+      const Point normal = descent.derivatives(p.valence, p.region, local, Dual{static_cast<double>(pa) / g, 1, 0},
+                                               Dual{static_cast<double>(pb) / g, 0, 1}).normal();
+      *out++ = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
+    };
+    for (long j = 0; j < n; ++j)
+      for (long i = 0; i + j <= n - 1; ++i) put(3 * i + 1, 3 * j + 1);
+    for (long j = 0; j + 1 < n; ++j)
+      for (long i = 0; i + j <= n - 2; ++i) put(3 * i + 2, 3 * j + 2);
+  }
+}
+
 }  // namespace stencil_runtime
