@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
       "alone: CGAL's advancing-front reconstruction, its holes filled, simplified by edge collapses to N vertices (a\n"
       "triangle mesh; quad schemes take it through their polygon step, so the tables need its valences).\n"
       "Quad schemes only (Catmull-Clark, nonpoly): triangle schemes are refused, as closest points are not available\n"
-      "for them yet. The fitted mesh keeps the control mesh's connectivity and vertex order. Each\n"
+      "for them yet. Without --max-control-points the fitted mesh keeps the control mesh's connectivity and vertex\n"
+      "order. Each\n"
       "iteration finds every point's closest point on the current surface (its foot), solves a sparse least-squares\n"
       "problem in the control positions with the chosen error model and a smoothing term, and keeps the step only if\n"
       "the mean squared distance (plus smoothing) went down (Levenberg-Marquardt). Progress per iteration on stderr:\n"
@@ -70,7 +71,8 @@ int main(int argc, char** argv) {
   app.add_option("--out", out_path, "the fitted control mesh (.obj)")->required();
   app.add_option("--method", method,
                  "error model: pdm (point distance), tdm (tangent distance) or sdm (squared distance, default)");
-  app.add_option("--iterations", options.iterations, "at most this many iterations (default 20)");
+  app.add_option("--iterations", options.iterations,
+                 "at most this many iterations (default 20; with --max-control-points, per refinement round)");
   app.add_option("--smoothing", options.smoothing,
                  "weight of the smoothing term in the first iteration, halved each iteration down to 1/100 of it "
                  "(default 1e-3; 0: none)");
@@ -79,9 +81,10 @@ int main(int argc, char** argv) {
                  "iterations)");
   std::size_t max_control_points = 0;
   app.add_option("--max-control-points", max_control_points,
-                 "adaptive refinement: while the max error is above --max-error, split the triangles whose points are "
-                 "farther (red-green, the worst first) and fit again, up to this many control points (a triangle "
-                 "control mesh; needs --max-error)");
+                 "adaptive refinement: while the max error is above --max-error, split the triangles with points "
+                 "farther than half of it (red-green, the worst first) and fit again (--iterations per round), up to "
+                 "this many control points; the refined mesh's new vertices follow the old ones (a triangle control "
+                 "mesh; needs --max-error)");
   app.add_option("--tolerance", options.tolerance,
                  "closest-point tolerance, as a fraction of the diagonal (default 1e-9)");
   app.add_option("--threads", options.threads, "threads (default 0: all cores)");
