@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <sstream>
@@ -182,8 +183,17 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
       }
   if (slot[0] < 0 || slot[1] < 0 || slot[2] < 0) throw std::runtime_error(path + ": the vertices have no x, y and z properties");
 
-  std::vector<Point> points(count);
   const std::size_t body = header_end + std::strlen("end_header\n");
+  // A count the file cannot hold is refused before anything is allocated: a
+  // binary vertex takes its properties' bytes, an ASCII one at least two
+  // bytes per value ("0 ").
+  std::size_t least = 0;
+  for (const Property& p : properties) least += format == "ascii" ? 2 : static_cast<std::size_t>(std::abs(p.bytes));
+  const std::size_t available = data.size() > body ? data.size() - body : 0;
+  if (least == 0 || count > available / least)
+    throw std::runtime_error(path + ": truncated: " + std::to_string(count) + " points cannot fit in the " +
+                             std::to_string(available) + " bytes after the PLY header");
+  std::vector<Point> points(count);
   if (format == "ascii") {
     std::size_t start = body;
     for (std::size_t p = 0; p < count; ++p) {
