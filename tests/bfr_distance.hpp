@@ -1,6 +1,6 @@
 #pragma once
-// The distance from a point to a Catmull-Clark limit surface by brute force on
-// OpenSubdiv's Bfr: an oracle for closest points and for fitting errors.
+// The distance from a point to a Catmull-Clark or Loop limit surface by brute
+// force on OpenSubdiv's Bfr: an oracle for closest points and for fitting errors.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -21,9 +21,10 @@ inline double point_distance(const Point& a, const Point& b) { return std::hypot
 // Every face of a mesh as a cached Bfr surface with its patch points.
 class BfrOracle {
  public:
-  explicit BfrOracle(const Mesh& mesh)
+  explicit BfrOracle(const Mesh& mesh, osd::Sdc::SchemeType scheme = osd::Sdc::SCHEME_CATMARK)
       : refiner_(bfr_reference::make_refiner(static_cast<int>(mesh.vertex_count()), mesh.face_sizes, mesh.face_vertices,
-                                             osd::Sdc::SCHEME_CATMARK)) {
+                                             scheme)),
+        triangles_(scheme == osd::Sdc::SCHEME_LOOP) {
     osd::Bfr::SurfaceFactory::Options options;
     options.SetApproxLevelSmooth(bfr_reference::kApproxLevel).SetApproxLevelSharp(bfr_reference::kApproxLevel);
     osd::Bfr::RefinerSurfaceFactory<> factory(*refiner_, options);
@@ -42,8 +43,8 @@ class BfrOracle {
     faces_[f].surface.Evaluate(uv, faces_[f].patch.data(), 3, p.data(), du.data(), dv.data());
   }
 
-  // The distance from q to the surface: 24 x 24 samples per face, the best
-  // three of each face polished.
+  // The distance from q to the surface: 24 x 24 samples per face (the half
+  // with u + v <= 1 on Loop's triangles), the best three of each face polished.
   double distance_to(const Point& q) const {
     double best = INFINITY;
     constexpr int kSamples = 24;
@@ -51,7 +52,7 @@ class BfrOracle {
       std::vector<std::pair<double, std::pair<double, double>>> samples;
       Point p{}, du{}, dv{};
       for (int j = 0; j <= kSamples; ++j)
-        for (int i = 0; i <= kSamples; ++i) {
+        for (int i = 0; i <= (triangles_ ? kSamples - j : kSamples); ++i) {
           evaluate(f, double(i) / kSamples, double(j) / kSamples, p, du, dv);
           samples.push_back({point_distance(p, q), {double(i) / kSamples, double(j) / kSamples}});
         }
@@ -82,7 +83,11 @@ class BfrOracle {
       bool moved = false;
       for (const auto& s : directions) {
         for (double t = 1; t > 1e-12 && !moved; t /= 2) {
-          const double nu = std::clamp(u + t * s[0], 0.0, 1.0), nv = std::clamp(v + t * s[1], 0.0, 1.0);
+          double nu = std::clamp(u + t * s[0], 0.0, 1.0), nv = std::clamp(v + t * s[1], 0.0, 1.0);
+          if (triangles_ && nu + nv > 1) {  // back onto the triangle's long edge
+            const double excess = 0.5 * (nu + nv - 1);
+            nu = std::clamp(nu - excess, 0.0, 1.0), nv = 1 - nu;
+          }
           Point np{}, ndu{}, ndv{};
           evaluate(f, nu, nv, np, ndu, ndv);
           const double nd = point_distance(np, q);
@@ -103,6 +108,7 @@ class BfrOracle {
     std::vector<double> patch;
   };
   std::unique_ptr<osd::Far::TopologyRefiner> refiner_;
+  bool triangles_ = false;
   std::vector<Face> faces_;
 };
 

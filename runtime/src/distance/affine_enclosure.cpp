@@ -10,7 +10,8 @@ namespace stencil_runtime {
 
 using namespace point_ops;
 
-AffineEnclosure::AffineEnclosure(const AffineParameters& parameters) : at_(parameters.at), residual_(parameters.residual) {
+AffineEnclosure::AffineEnclosure(const AffineParameters& parameters)
+    : at_(parameters.at), residual_(parameters.residual), triangle_(parameters.triangle) {
   // Least squares: [o u v] = P^T G (G^T G)^-1, G's rows (1, g_i). The weights
   // of point i in (o, u, v) are row i of G (G^T G)^-1.
   const Eigen::Index n = static_cast<Eigen::Index>(at_.size());
@@ -64,11 +65,14 @@ double AffineEnclosure::lower_bound(const std::vector<Point>& points, const Poin
   const double slack = residual_ * (length(u) + length(v) + length(o)) + 64 * std::numeric_limits<double>::epsilon() * magnitude;
   const double across = std::sqrt(std::max(across2, 0.0)) + slack;
   low -= slack, high += slack;
+  // L's image of the unit domain: the parallelogram a b c d, or the triangle a b d.
   const Point a = o, b{o[0] + u[0], o[1] + u[1], o[2] + u[2]}, d{o[0] + v[0], o[1] + v[1], o[2] + v[2]},
               c{b[0] + v[0], b[1] + v[1], b[2] + v[2]};
-  if (!flat) {  // a degenerate parallelogram: the ball around it
+  if (!flat) {  // a degenerate image: the ball around it
     const double spread = std::hypot(across, std::max(-low, high));
-    return std::min(point_triangle_distance(q, a, b, c), point_triangle_distance(q, a, c, d)) - spread;
+    const double image = triangle_ ? point_triangle_distance(q, a, b, d)
+                                   : std::min(point_triangle_distance(q, a, b, c), point_triangle_distance(q, a, c, d));
+    return image - spread;
   }
   // q's height above the plane, and its foot's distance in the plane from the parallelogram.
   const Point w = minus(q, o);
@@ -78,9 +82,13 @@ double AffineEnclosure::lower_bound(const std::vector<Point>& points, const Poin
   const double det = uu * vv - uv * uv;
   const double s = (vv * fu - uv * fv) / det, t = (uu * fv - uv * fu) / det;
   double in_plane = 0;
-  if (!(s >= 0 && s <= 1 && t >= 0 && t <= 1))
+  if (triangle_) {
+    if (!(s >= 0 && t >= 0 && s + t <= 1))
+      in_plane = std::min({point_segment_distance(foot, a, b), point_segment_distance(foot, b, d), point_segment_distance(foot, d, a)});
+  } else if (!(s >= 0 && s <= 1 && t >= 0 && t <= 1)) {
     in_plane = std::min({point_segment_distance(foot, a, b), point_segment_distance(foot, b, c), point_segment_distance(foot, c, d),
                          point_segment_distance(foot, d, a)});
+  }
   const double sideways = std::max(in_plane - across, 0.0);
   const double upwards = height > high ? height - high : (height < low ? low - height : 0.0);
   return std::sqrt(sideways * sideways + upwards * upwards);

@@ -4,7 +4,8 @@
 // affine functions (Family::affine_parameters: control point i at parameter
 // g_i, sum_i phi_i(x) g_i = x, sum_i phi_i(x) = 1, phi_i >= 0), any affine map
 // L gives S(x) = L(x) + sum_i phi_i(x) (P_i - L(g_i)), so the surface over the
-// sub-patch's unit square lies in the parallelogram L([0,1]^2) plus the hull
+// sub-patch's unit square lies in the parallelogram L([0,1]^2) (for a
+// triangle sub-patch: the triangle L of its unit triangle) plus the hull
 // of the residuals E_i = P_i - L(g_i): inside the slab made by growing the
 // parallelogram in its plane by the residuals' largest part across its normal
 // and along the normal by their range. L is the least-squares fit of the
@@ -32,6 +33,7 @@ class AffineEnclosure {
   std::vector<std::array<double, 2>> at_;
   std::vector<std::array<double, 3>> fit_;  // per control point: its weights in L's origin, u and v columns
   double residual_ = 0;
+  bool triangle_ = false;  // the unit domain is the triangle X, Y >= 0, X + Y <= 1 (else the square)
 };
 
 // The distance from q to the triangle (a, b, c).

@@ -50,8 +50,16 @@ struct Seeds {
 };
 using SeedTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Seeds>, Seeds, 3, std::size_t>;
 
-// Patch parameters of the seeds: the centre and the centres of the quarters.
-constexpr double kSeedAt[5][2] = {{0.5, 0.5}, {0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}};
+// Patch parameters of the seeds: the centre, and half-way from it to each corner.
+std::vector<std::array<double, 2>> seed_parameters(const SubDomain& patch) {
+  const auto c = patch.centre();
+  std::vector<std::array<double, 2>> out{c};
+  for (int k = 0; k < patch.corners(); ++k) {
+    const auto corner = patch.corner(k);
+    out.push_back({0.5 * (c[0] + corner[0]), 0.5 * (c[1] + corner[1])});
+  }
+  return out;
+}
 
 struct EmbreeDevice {
   RTCDevice device = rtcNewDevice(nullptr);
@@ -140,20 +148,22 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
   });
 
   // Seeds, and each prepared face's orientation against its original face.
-  seeds.points.assign(faces * 5, {});
-  seeds.faces.assign(faces * 5, 0);
-  seeds.at.assign(faces * 5, {});
+  const std::vector<std::array<double, 2>> seed_at = seed_parameters(roots.empty() ? SubDomain() : roots[0].domain);
+  const std::size_t per_face = seed_at.size();
+  seeds.points.assign(faces * per_face, {});
+  seeds.faces.assign(faces * per_face, 0);
+  seeds.at.assign(faces * per_face, {});
   orientation.assign(faces, 1);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces, 64), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t f = r.begin(); f < r.end(); ++f) {
-      for (int s = 0; s < 5; ++s) {
-        const std::size_t i = 5 * f + s;
-        seeds.points[i] = family->evaluate(roots[f], kSeedAt[s][0], kSeedAt[s][1], tolerance).point;
+      for (std::size_t s = 0; s < per_face; ++s) {
+        const std::size_t i = per_face * f + s;
+        seeds.points[i] = family->evaluate(roots[f], seed_at[s][0], seed_at[s][1], tolerance).point;
         seeds.faces[i] = f;
-        seeds.at[i] = {kSeedAt[s][0], kSeedAt[s][1]};
+        seeds.at[i] = seed_at[s];
       }
-      const FaceParameterReal a = family->original(f, 0.25, 0.25), b = family->original(f, 0.75, 0.25),
-                              c = family->original(f, 0.25, 0.75);
+      const FaceParameterReal a = family->original(f, 0.25, 0.25), b = family->original(f, 0.5, 0.25),
+                              c = family->original(f, 0.25, 0.5);
       const double det = (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u);
       orientation[f] = det < 0 ? -1 : 1;
     }
@@ -231,8 +241,8 @@ ClosestPoint ClosestPointQuery::Impl::find(const Point& q) const {
   double len = std::sqrt(dot(n, n));
   if (!(len > 0)) {  // a degenerate parametrisation at this point: the normal a little inside the sub-patch
     const SubPatch& s = h.patch;
-    x = s.x0 + s.size * (0.999 * std::clamp((h.x - s.x0) / s.size, 1e-6, 1 - 1e-6) + 0.0005);
-    y = s.y0 + s.size * (0.999 * std::clamp((h.y - s.y0) / s.size, 1e-6, 1 - 1e-6) + 0.0005);
+    const auto c = s.domain.centre();
+    x = h.x + 1e-3 * (c[0] - h.x), y = h.y + 1e-3 * (c[1] - h.y);
     search.derivatives(s, x, y, d);
     n = cross(d.du, d.dv);
     len = std::sqrt(dot(n, n));
@@ -252,7 +262,7 @@ ClosestPointQuery::ClosestPointQuery(const Surface& surface, const ClosestPointO
   impl_->topology = surface.shared_topology();
   impl_->family = &impl_->topology->family();
   impl_->options = options;
-  for (int kind = 0; kind <= limits::kMaxValence; ++kind) {
+  for (int kind = 0; kind <= impl_->family->max_kind(); ++kind) {
     const AffineParameters* affine = impl_->family->affine_parameters(kind);
     impl_->enclosures.push_back(affine ? AffineEnclosure(*affine) : AffineEnclosure());
   }

@@ -101,18 +101,34 @@ bool FaceSearch::improve(const SubPatch& s, double x, double y, const Point& poi
 
 void FaceSearch::derivatives(const SubPatch& s, double& x, double& y, Derivatives& out) const {
   if (family_.derivatives(s, x, y, out)) return;  // exact (at a grid point next to (x, y) for non-polynomial schemes)
-  // Central differences of exact evaluations (one-sided at the border) where
-  // the family has no derivative: next to an extraordinary vertex.
-  const double h = s.size * 1e-5;
-  const double x1 = s.x0 + s.size, y1 = s.y0 + s.size;
-  const double xa = std::max(s.x0, x - h), xb = std::min(x1, x + h), ya = std::max(s.y0, y - h), yb = std::min(y1, y + h);
+  // Central differences of exact evaluations (one-sided at the border) in the
+  // sub-patch's own coordinates, where the family has no derivative: next to
+  // an extraordinary vertex, or a scheme without derivatives (sqrt(3)).
+  const double h = 1e-5;
+  const auto l = s.domain.local(x, y);
   const double tol = tolerance_ * 1e-4;
-  out.point = family_.evaluate(s, x, y, tol).point;
-  const Point fxa = family_.evaluate(s, xa, y, tol).point, fxb = family_.evaluate(s, xb, y, tol).point;
-  const Point fya = family_.evaluate(s, x, ya, tol).point, fyb = family_.evaluate(s, x, yb, tol).point;
+  const auto value = [&](double X, double Y) {
+    const auto p = s.domain.at(X, Y);
+    return family_.evaluate(s, p[0], p[1], tol).point;
+  };
+  // The partial along own axis `axis`: the widest of the central, forward and backward differences that stays inside.
+  const auto partial = [&](int axis) {
+    const double dX = axis == 0 ? h : 0, dY = axis == 0 ? 0 : h;
+    const bool ahead = s.domain.contains_local(l[0] + dX, l[1] + dY), behind = s.domain.contains_local(l[0] - dX, l[1] - dY);
+    const double a = behind ? -1.0 : 0.0, b = ahead ? 1.0 : 0.0;
+    Point d{0, 0, 0};
+    if (a == b) return d;
+    const Point fa = value(l[0] + a * dX, l[1] + a * dY), fb = value(l[0] + b * dX, l[1] + b * dY);
+    for (int k = 0; k < 3; ++k) d[k] = (fb[k] - fa[k]) / ((b - a) * h);
+    return d;
+  };
+  out.point = value(l[0], l[1]);
+  const Point dX = partial(0), dY = partial(1);
+  // To the patch's parameters: d/dx = dX/dx d/dX + dY/dx d/dY.
+  const auto j = s.domain.inverse_jacobian();
   for (int k = 0; k < 3; ++k) {
-    out.du[k] = (fxb[k] - fxa[k]) / (xb - xa);
-    out.dv[k] = (fyb[k] - fya[k]) / (yb - ya);
+    out.du[k] = j[0] * dX[k] + j[2] * dY[k];
+    out.dv[k] = j[1] * dX[k] + j[3] * dY[k];
   }
 }
 
@@ -132,8 +148,9 @@ void FaceSearch::polish(const SubPatch& s, double x, double y, const Point& q, F
     const double gu = dot(r, d.du), gv = dot(r, d.dv), det = a * c - b * b;
     if (!(det > 1e-300)) break;
     const double dx = -(c * gu - b * gv) / det, dy = -(a * gv - b * gu) / det;
-    const double nx = std::clamp(x + dx, s.x0, s.x0 + s.size), ny = std::clamp(y + dy, s.y0, s.y0 + s.size);
-    const bool small = std::fabs(nx - x) + std::fabs(ny - y) < 1e-13 * s.size;
+    double nx = x + dx, ny = y + dy;
+    s.domain.clamp(nx, ny);
+    const bool small = std::fabs(nx - x) + std::fabs(ny - y) < 1e-13 * s.domain.size();
     x = nx, y = ny;
     if (small) {
       if (!snapped) consider(s, x, y, q, best);  // else the grid point is as near as it gets
@@ -161,10 +178,8 @@ void FaceSearch::refine(const Point& q, FaceHit& best) const {
     Derivatives d;
     if (family_.derivatives(best.patch, x, y, d) && x == best.x && y == best.y && tangent_cosine(d, q) <= kOrthogonal) return;
   }
-  const auto holds = [](const SubPatch& k, double x, double y) {
-    return x >= k.x0 && x <= k.x0 + k.size && y >= k.y0 && y <= k.y0 + k.size;
-  };
-  SubPatch children[4];
+  const auto holds = [](const SubPatch& k, double x, double y) { return k.domain.contains(x, y, 1e-14); };  // own coordinates round
+  SubPatch children[kMaxSubPatchChildren];
   // The sub-patches on the path hold their control points relative to an
   // origin near them (`offsets`): deep sub-patches are tiny, and points
   // rounded at the size of the coordinates would leave derivatives (point
@@ -178,7 +193,8 @@ void FaceSearch::refine(const Point& q, FaceHit& best) const {
     int pick = 0;
     double nearest = INFINITY;
     for (int k = 0; k < n; ++k) {
-      const double e = std::fabs(children[k].x0 + 0.5 * children[k].size - x) + std::fabs(children[k].y0 + 0.5 * children[k].size - y);
+      const auto c = children[k].domain.centre();
+      const double e = std::fabs(c[0] - x) + std::fabs(c[1] - y) + (holds(children[k], x, y) ? 0.0 : 1.0);
       if (e < nearest) nearest = e, pick = k;
     }
     SubPatch& child = children[pick];
@@ -192,8 +208,14 @@ void FaceSearch::refine(const Point& q, FaceHit& best) const {
     path.push_back(std::move(child));
   };
   // Derivatives on the path's end, the point moved back by its origin.
+  // Where the family has none (sqrt(3), an extraordinary vertex): differences
+  // of exact evaluations on the whole patch, whose step does not shrink with
+  // the path (on a deep sub-patch the evaluations' bounds would swamp them).
   const auto derivatives_at = [&](const std::vector<SubPatch>& path, double& x, double& y, Derivatives& out) {
-    if (!family_.derivatives(path.back(), x, y, out)) return false;
+    if (!family_.derivatives(path.back(), x, y, out)) {
+      derivatives(path.front(), x, y, out);
+      return true;
+    }
     for (int k = 0; k < 3; ++k) out.point[k] += offsets.back()[k];
     return true;
   };
@@ -206,12 +228,12 @@ void FaceSearch::refine(const Point& q, FaceHit& best) const {
   family_.root(best.face, prepared_.data(), path[0]);
   const auto reach = [&](double x, double y, double size) {
     while (path.size() > 1 && !holds(path.back(), x, y)) path.pop_back(), offsets.pop_back();
-    while (path.back().size > size && path.back().size > kSmallest) descend(path, x, y);
+    while (path.back().domain.size() > size && path.back().domain.size() > kSmallest) descend(path, x, y);
   };
   double x = best.x, y = best.y;
-  reach(x, y, best.patch.size);
+  reach(x, y, best.patch.domain.size());
   Derivatives d;
-  if (!derivatives_at(path, x, y, d)) return;  // an extraordinary vertex: no tangents
+  derivatives_at(path, x, y, d);
   improve(path.back(), x, y, d.point, 0, q, best);
   double t = 1;  // the damping of the Newton step
   for (int iteration = 0; iteration < kRefineSteps; ++iteration) {
@@ -223,11 +245,14 @@ void FaceSearch::refine(const Point& q, FaceHit& best) const {
     const Point r = minus(d.point, q);
     double hxx = dot(d.du, d.du), hxy = dot(d.du, d.dv), hyy = dot(d.dv, d.dv);
     const double gu = dot(r, d.du), gv = dot(r, d.dv);
-    double xh = std::min(x + kSecondStep * s.size, s.x0 + s.size), yh = y, xv = x, yv = std::min(y + kSecondStep * s.size, s.y0 + s.size);
-    if (xh == x) xh = std::max(x - kSecondStep * s.size, s.x0);
-    if (yv == y) yv = std::max(y - kSecondStep * s.size, s.y0);
+    // Points a step along x and along y, inside the sub-patch (ahead, else behind).
+    const double h = kSecondStep * s.domain.size();
+    double xh = x + h, yh = y, xv = x, yv = y + h;
+    if (!s.domain.contains(xh, yh)) xh = x - h;
+    if (!s.domain.contains(xv, yv)) yv = y - h;
     Derivatives dh, dw;
-    if (derivatives_at(path, xh, yh, dh) && derivatives_at(path, xv, yv, dw) && xh != x && yv != y && yh == y && xv == x) {
+    if (s.domain.contains(xh, yh) && s.domain.contains(xv, yv) && derivatives_at(path, xh, yh, dh) &&
+        derivatives_at(path, xv, yv, dw) && xh != x && yv != y && yh == y && xv == x) {
       const double ex = xh - x, ey = yv - y;
       const double suu = (dot(r, dh.du) - dot(r, d.du)) / ex, svv = (dot(r, dw.dv) - dot(r, d.dv)) / ey;
       const double suv = 0.5 * ((dot(r, dh.dv) - dot(r, d.dv)) / ex + (dot(r, dw.du) - dot(r, d.du)) / ey);
@@ -239,16 +264,20 @@ void FaceSearch::refine(const Point& q, FaceHit& best) const {
     // A damped step, halved until the point comes nearer.
     bool moved = false;
     for (; t > kSmallestDamping; t /= 2) {
-      double nx = std::clamp(x + t * sx, 0.0, 1.0), ny = std::clamp(y + t * sy, 0.0, 1.0);
+      double nx = x + t * sx, ny = y + t * sy;
+      path.front().domain.clamp(nx, ny);  // inside the patch
       const double step = std::fabs(nx - x) + std::fabs(ny - y);
       if (!(step > 0)) return;  // nothing left to move (against the patch's border, or converged in doubles)
       reach(nx, ny, 2 * step);
       Derivatives n;
       if (!derivatives_at(path, nx, ny, n)) return;
-      // Nearer; or, where distances no longer differ in doubles, more nearly orthogonal.
+      // Nearer; or, where distances no longer differ beyond the rounding of
+      // the points (evaluated in sub-patches of different depths, each
+      // rounding at the size of the coordinates), more nearly orthogonal.
       const double now = length(r), then = length(minus(n.point, q));
-      const bool nearer = then < now || (then <= now * (1 + 4 * std::numeric_limits<double>::epsilon()) &&
-                                         tangent_cosine(n, q) < tangent_cosine(d, q));
+      const double rounding = 32 * std::numeric_limits<double>::epsilon() *
+                              (now + std::max({std::fabs(q[0]), std::fabs(q[1]), std::fabs(q[2])}));
+      const bool nearer = then < now || (then <= now + rounding && tangent_cosine(n, q) < tangent_cosine(d, q));
       if (nearer || (nx == x && ny == y)) {
         if (nx == x && ny == y) return;  // the grid does not resolve the step: as near as the tables go
         x = nx, y = ny, d = n, moved = true;
@@ -281,7 +310,7 @@ void FaceSearch::add(std::size_t face, const Point& q, const FaceHit& best) {
 
 void FaceSearch::run(const Point& q, FaceHit& best) {
   const auto later = [](const Node& a, const Node& b) { return a.bound > b.bound; };
-  SubPatch children[4];
+  SubPatch children[kMaxSubPatchChildren];
   double unresolved = 0;  // the largest gap left by sub-patches too deep to split
   std::size_t examined = 0;
   while (!open_.empty() && open_.front().bound < best.distance - tolerance_) {
@@ -293,7 +322,7 @@ void FaceSearch::run(const Point& q, FaceHit& best) {
     Node node = std::move(open_.back());
     open_.pop_back();
     const SubPatch& s = node.patch;
-    const double cx = s.x0 + 0.5 * s.size, cy = s.y0 + 0.5 * s.size;
+    const auto [cx, cy] = s.domain.centre();
     // The centre; where it is the nearest point so far, Gauss-Newton from there.
     if (consider(s, cx, cy, q, best)) polish(s, cx, cy, q, best);
     if (node.depth == kMaxDepth) {

@@ -13,6 +13,7 @@
 #include "mesh/connectivity.hpp"
 #include "range_runner.hpp"
 #include "refinement.hpp"
+#include "sub_domain.hpp"
 #include "stencil_runtime/derivatives.hpp"
 #include "stencil_runtime/exact_parameter.hpp"
 #include "stencil_runtime/face_domain.hpp"
@@ -49,25 +50,30 @@ struct Approximation {
 
 // A piece of a prepared face's patch after local subdivision by the scheme's
 // own rules: its control points, and the part of the patch's parameter domain
-// it covers (quads: the square [x0, x0 + size] x [y0, y0 + size] of the patch
-// coordinates, extraordinary vertex at (0,0)). Where the scheme's weights are
-// non-negative, the limit surface over it lies in the convex hull of its points.
+// it covers (sub_domain.hpp; quads: a square of the patch coordinates,
+// extraordinary vertex at (0,0); triangles: a triangle of them). Where the
+// scheme's weights are non-negative, the limit surface over it lies in the
+// convex hull of its points.
 struct SubPatch {
   std::size_t face = 0;  // the prepared face
-  int kind = 0;          // the family's patch kind (quads: the valence, 4 for regular)
+  int kind = 0;          // the family's patch kind (quads: the valence, 4 for regular; triangles: triangle_family.hpp)
   std::vector<Point> points;
-  double x0 = 0, y0 = 0, size = 1;
+  SubDomain domain;
 };
+
+// The most children a sub-patch has under one step (sqrt(3)'s composite step splits a triangle in nine).
+constexpr int kMaxSubPatchChildren = 9;
 
 // Where the sub-patches of one kind reproduce affine functions of their
 // parameter: the parameter g_i of each control point (in the sub-patch's own
-// unit frame, in the order of SubPatch::points) with sum_i phi_i(x) g_i = x
+// unit frame (square or triangle, `triangle`), in the order of SubPatch::points) with sum_i phi_i(x) g_i = x
 // and sum_i phi_i(x) = 1, and the largest deviation from both found when
 // checking them on exact evaluations. The closest-point search then bounds a
 // sub-patch's surface by its control points' distance from an affine image of
 // its domain, a much tighter enclosure than their hull.
 struct AffineParameters {
   std::vector<std::array<double, 2>> at;
+  bool triangle = false;
   double residual = 0;
 };
 
@@ -135,11 +141,11 @@ class Family {
   // its children under one step of the scheme, the limit point at a patch
   // parameter inside a sub-patch, and which original face and parameter a
   // prepared face's patch parameter is. Whether the control points of every
-  // sub-patch bound its surface (all subdivision weights non-negative); a
-  // family without sub-patches (triangles, so far) throws EvaluationError here.
+  // sub-patch bound its surface (all subdivision weights non-negative); tables
+  // without patch subdivision data throw EvaluationError here.
   virtual bool hull_bounds() const = 0;
   virtual void root(std::size_t prepared_face, const Point* prepared, SubPatch& out) const = 0;
-  virtual int split(const SubPatch& in, SubPatch* children) const = 0;  // at most 4 children
+  virtual int split(const SubPatch& in, SubPatch* children) const = 0;  // at most kMaxSubPatchChildren
   virtual Approximation evaluate(const SubPatch& in, double x, double y, double tolerance) const = 0;
   virtual FaceParameterReal original(std::size_t prepared_face, double x, double y) const = 0;
   // The limit point and its derivatives in the patch parameters at, or next
@@ -148,8 +154,10 @@ class Family {
   // sub-patch's finest stored grid. False where there is none (an
   // extraordinary vertex, tables without derivatives, a family without them).
   virtual bool derivatives(const SubPatch& /*in*/, double& /*x*/, double& /*y*/, Derivatives& /*out*/) const { return false; }
-  // Sub-patches of kind `kind` that reproduce affine functions (null: none known).
+  // Sub-patches of kind `kind` that reproduce affine functions (null: none
+  // known), and the largest kind number the family uses.
   virtual const AffineParameters* affine_parameters(int /*kind*/) const { return nullptr; }
+  virtual int max_kind() const = 0;
 
   // The unit normals at the points of prepared faces [begin, end) of a planned
   // layout (where points() puts the positions). The default: a family without

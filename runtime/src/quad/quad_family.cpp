@@ -270,8 +270,7 @@ void QuadFamily::root(std::size_t prepared_face, const Point* prepared, SubPatch
   out.kind = patch.valence;
   out.points.resize(patch.points.size());
   for (std::size_t h = 0; h < out.points.size(); ++h) out.points[h] = prepared[patch.points[h]];
-  out.x0 = out.y0 = 0;
-  out.size = 1;
+  out.domain = SubDomain::unit(false);
 }
 
 int QuadFamily::split(const SubPatch& in, SubPatch* children) const {
@@ -281,9 +280,10 @@ int QuadFamily::split(const SubPatch& in, SubPatch* children) const {
     SubPatch& out = children[c];
     d.child(in.kind, in.points, cx, cy, out.points, out.kind);
     out.face = in.face;
-    out.size = in.size / 2;
-    out.x0 = in.x0 + cx * out.size;
-    out.y0 = in.y0 + cy * out.size;
+    const double half = in.domain.x_axis[0] / 2;  // a square along the patch's axes
+    out.domain = in.domain;
+    out.domain.x_axis = {half, 0}, out.domain.y_axis = {0, half};
+    out.domain.origin = {in.domain.origin[0] + cx * half, in.domain.origin[1] + cy * half};
   }
   return 4;
 }
@@ -291,7 +291,8 @@ int QuadFamily::split(const SubPatch& in, SubPatch* children) const {
 Approximation QuadFamily::evaluate(const SubPatch& in, double x, double y, double tolerance) const {
   std::vector<Point> points = in.points;
   // The sub-patch's own parameters; exact fractions where the double is one (the descent then lands exactly).
-  const double sx = std::clamp((x - in.x0) / in.size, 0.0, 1.0), sy = std::clamp((y - in.y0) / in.size, 0.0, 1.0);
+  auto [sx, sy] = in.domain.local(x, y);
+  in.domain.clamp_local(sx, sy);
   const auto fx = exact_fraction(sx), fy = exact_fraction(sy);
   if (fx && fy) return checked_descent().evaluate(in.kind, points, *fx, *fy, tolerance);
   return checked_descent().evaluate(in.kind, points, sx, sy, tolerance);
@@ -299,7 +300,8 @@ Approximation QuadFamily::evaluate(const SubPatch& in, double x, double y, doubl
 
 bool QuadFamily::derivatives(const SubPatch& in, double& x, double& y, Derivatives& out) const {
   const QuadPatchDescent& descent = checked_descent();
-  double sx = std::clamp((x - in.x0) / in.size, 0.0, 1.0), sy = std::clamp((y - in.y0) / in.size, 0.0, 1.0);
+  auto [sx, sy] = in.domain.local(x, y);
+  in.domain.clamp_local(sx, sy);
   std::vector<Point> points = in.points;
   if (descent.polynomial_regular()) {
     if (in.kind != 4 && sx == 0 && sy == 0) return false;  // no parametric derivative at the extraordinary vertex
@@ -313,8 +315,9 @@ bool QuadFamily::derivatives(const SubPatch& in, double& x, double& y, Derivativ
     out = descent.derivatives(in.kind, points, Fraction::make(i, grid), Fraction::make(j, grid));
     sx = static_cast<double>(i) / static_cast<double>(grid), sy = static_cast<double>(j) / static_cast<double>(grid);
   }
-  x = in.x0 + sx * in.size, y = in.y0 + sy * in.size;
-  for (int k = 0; k < 3; ++k) out.du[k] /= in.size, out.dv[k] /= in.size;
+  const double size = in.domain.x_axis[0];  // a square along the patch's axes
+  x = in.domain.origin[0] + sx * size, y = in.domain.origin[1] + sy * size;
+  for (int k = 0; k < 3; ++k) out.du[k] /= size, out.dv[k] /= size;
   return true;
 }
 

@@ -41,6 +41,7 @@ class QuadFamily final : public Family {
   int split(const SubPatch& in, SubPatch* children) const override;
   Approximation evaluate(const SubPatch& in, double x, double y, double tolerance) const override;
   const AffineParameters* affine_parameters(int kind) const override;
+  int max_kind() const override { return limits::kMaxValence; }
   bool derivatives(const SubPatch& in, double& x, double& y, Derivatives& out) const override;
   FaceParameterReal original(std::size_t prepared_face, double x, double y) const override;
   void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;

@@ -7,6 +7,7 @@
 // (triangle_tessellation.cpp).
 #include <array>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -37,12 +38,20 @@ class TriangleFamily final : public Family {
   // patch) anywhere but an extraordinary vertex; sqrt(3) refused.
   Derivatives derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
   Derivatives derivatives(std::size_t face, double u, double v, const Point* prepared) const override;
-  // Sub-patches (closest points) are not built for triangle patches yet: every one of these refuses.
-  bool hull_bounds() const override { unavailable(); }
-  void root(std::size_t, const Point*, SubPatch&) const override { unavailable(); }
-  int split(const SubPatch&, SubPatch*) const override { unavailable(); }
-  Approximation evaluate(const SubPatch&, double, double, double) const override { unavailable(); }
-  FaceParameterReal original(std::size_t, double, double) const override { unavailable(); }
+  // Sub-patches (closest points, triangle_sub_patches.cpp): a triangle of the
+  // patch's parameters, its kind the valence and region, kind =
+  // valence + (kMaxValence + 1) region; split into the tables' cells (Loop 4,
+  // sqrt(3) 9). Exact derivatives in them for Loop (not at the EV itself);
+  // sqrt(3) has none (the search then takes differences).
+  bool hull_bounds() const override;
+  void root(std::size_t prepared_face, const Point* prepared, SubPatch& out) const override;
+  int split(const SubPatch& in, SubPatch* children) const override;
+  Approximation evaluate(const SubPatch& in, double x, double y, double tolerance) const override;
+  FaceParameterReal original(std::size_t prepared_face, double x, double y) const override;
+  bool derivatives(const SubPatch& in, double& x, double& y, Derivatives& out) const override;
+  const AffineParameters* affine_parameters(int kind) const override;
+  int max_kind() const override { return kind_of(limits::kMaxValence, 3); }
+  static int kind_of(int valence, int region) { return valence + (limits::kMaxValence + 1) * region; }
   void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
   void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
               std::array<float, 3>* out) const override;
@@ -62,10 +71,6 @@ class TriangleFamily final : public Family {
   std::pair<std::size_t, std::array<double, 2>> locate(std::size_t face, double u, double v) const;
 
  private:
-  [[noreturn]] static void unavailable() {
-    throw EvaluationError("closest points are not available for triangle schemes (Loop, sqrt(3)) yet: only for quad schemes "
-                          "(Catmull-Clark, nonpoly)");
-  }
   template <class P>
   std::pair<std::size_t, std::array<P, 2>> locate_any(std::size_t face, P u, P v) const;
   template <class P>
@@ -89,6 +94,8 @@ class TriangleFamily final : public Family {
   TriangleTopology topology_;
   std::vector<TrianglePatch> patches_;
   std::optional<TrianglePatchDescent> descent_;  // when the tables hold the patch subdivision
+  mutable std::once_flag affine_once_;
+  mutable std::unique_ptr<const AffineParameters> affine_;  // of the regular kind, where the scheme reproduces affine functions
 };
 
 // Index of up centre (i, j) and down centre (i, j) among a face's n^2 tessellation

@@ -1,0 +1,195 @@
+// Sub-patches of triangle patches, for closest points (family.hpp): the
+// patch's control points carried down the tables' cells, each cell a triangle
+// of the patch's parameters.
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+#include "tables/sparse_rows.hpp"
+#include "triangle_family.hpp"
+#include "triangle_steps.hpp"
+
+namespace stencil_runtime {
+
+namespace {
+
+// Corner k (0, 1, 2) of cell `cell` of the m^2 split, in the parent kind's
+// coordinates, in the cell's own corner order (the order the descent's
+// cell_of() maps to (0,0), (1,0), (0,1)): up cell (a, b) has corners (a, b),
+// (a+1, b), (a, b+1), down cell (a, b) has (a+1, b), (a+1, b+1), (a, b+1),
+// all over m; cells are numbered as in docs/table-format.md.
+std::array<double, 2> cell_corner(int m, int cell, int k) {
+  const int ups = m * (m + 1) / 2;
+  const bool down = cell >= ups;
+  int index = down ? cell - ups : cell, width = down ? m - 1 : m, b = 0;
+  while (index >= width) index -= width, --width, ++b;
+  const int a = index;
+  static constexpr int kUp[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+  static constexpr int kDown[3][2] = {{1, 0}, {1, 1}, {0, 1}};
+  const int* c = down ? kDown[k] : kUp[k];
+  return {static_cast<double>(a + c[0]) / m, static_cast<double>(b + c[1]) / m};
+}
+
+}  // namespace
+
+bool TriangleFamily::hull_bounds() const {
+  checked_descent();
+  return tables_.children_nonnegative();
+}
+
+void TriangleFamily::root(std::size_t prepared_face, const Point* prepared, SubPatch& out) const {
+  const TrianglePatch& patch = patches_[prepared_face];
+  out.face = prepared_face;
+  out.kind = kind_of(patch.valence, patch.region);
+  out.points.resize(patch.points.size());
+  for (std::size_t h = 0; h < out.points.size(); ++h) out.points[h] = prepared[patch.points[h]];
+  out.domain = SubDomain::unit(true);
+}
+
+int TriangleFamily::split(const SubPatch& in, SubPatch* children) const {
+  checked_descent();
+  const int m = tables_.dilation(), valence = in.kind % (limits::kMaxValence + 1), region = in.kind / (limits::kMaxValence + 1);
+  const std::vector<TriangleChild>& cells = tables_.children(valence, region);
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const TriangleChild& cell = cells[c];
+    SubPatch& out = children[c];
+    apply(cell.rows, in.points, out.points);
+    out.face = in.face;
+    out.kind = kind_of(cell.valence, cell.region);
+    // The kind's corner k is the cell's corner rotation + k.
+    std::array<std::array<double, 2>, 3> corner;
+    for (int k = 0; k < 3; ++k) {
+      const auto local = cell_corner(m, static_cast<int>(c), (cell.rotation + k) % 3);
+      corner[static_cast<std::size_t>(k)] = in.domain.at(local[0], local[1]);
+    }
+    out.domain = SubDomain::unit(true);
+    out.domain.origin = corner[0];
+    out.domain.x_axis = {corner[1][0] - corner[0][0], corner[1][1] - corner[0][1]};
+    out.domain.y_axis = {corner[2][0] - corner[0][0], corner[2][1] - corner[0][1]};
+  }
+  return static_cast<int>(cells.size());
+}
+
+Approximation TriangleFamily::evaluate(const SubPatch& in, double x, double y, double tolerance) const {
+  std::vector<Point> points = in.points;
+  auto l = in.domain.local(x, y);
+  in.domain.clamp_local(l[0], l[1]);
+  const int valence = in.kind % (limits::kMaxValence + 1), region = in.kind / (limits::kMaxValence + 1);
+  // Exact fractions where the doubles are (the descent then lands on the tables' grids exactly).
+  const auto fx = exact_fraction(l[0]), fy = exact_fraction(l[1]);
+  if (fx && fy) {
+    try {
+      return checked_descent().evaluate(valence, region, points, *fx, *fy, tolerance);
+    } catch (const ParameterOverflow&) {
+      points = in.points;
+    }
+  }
+  return checked_descent().evaluate(valence, region, points, l[0], l[1], tolerance);
+}
+
+bool TriangleFamily::derivatives(const SubPatch& in, double& x, double& y, Derivatives& out) const {
+  const TrianglePatchDescent& descent = checked_descent();
+  if (tables_.polynomial_degree() <= 0) return false;  // sqrt(3): no exact derivatives
+  auto l = in.domain.local(x, y);
+  const bool inside = in.domain.contains_local(l[0], l[1]);
+  in.domain.clamp_local(l[0], l[1]);
+  const int valence = in.kind % (limits::kMaxValence + 1), region = in.kind / (limits::kMaxValence + 1);
+  if (valence != 6 && l[0] == 0 && l[1] == 0) return false;  // the extraordinary vertex: no parametric derivative
+  // The own coordinates carry their derivatives along the patch's (x, y), so the result is along those.
+  const auto j = in.domain.inverse_jacobian();
+  std::vector<Point> points = in.points;
+  try {
+    out = descent.derivatives(valence, region, points, Dual{l[0], j[0], j[1]}, Dual{l[1], j[2], j[3]});
+  } catch (const EvaluationError&) {  // within 2^-64 of the extraordinary vertex
+    return false;
+  }
+  if (!inside) {  // (x, y) moves only where it was outside (the round trip through own coordinates rounds)
+    const auto p = in.domain.at(l[0], l[1]);
+    x = p[0], y = p[1];
+  }
+  return true;
+}
+
+FaceParameterReal TriangleFamily::original(std::size_t face, double x, double y) const {
+  // Patch coordinates back to the prepared face's (the inverse of TrianglePatch::to_patch).
+  double u = x, v = y;
+  switch (patches_[face].rotation) {
+    case 0: break;
+    case 1: u = 1 - x - y, v = x; break;
+    default: u = y, v = 1 - x - y; break;
+  }
+  // Up the hierarchy: each child's parameter to its parent's (the inverse of loop_child() or ternary_child()).
+  for (std::size_t level = hierarchy_.levels.size(); level-- > 0;) {
+    const FaceHierarchy::Level& l = hierarchy_.levels[level];
+    const auto& offsets = l.child_offsets;
+    const std::size_t parent = static_cast<std::size_t>(std::upper_bound(offsets.begin(), offsets.end(), face) - offsets.begin()) - 1;
+    const int c = static_cast<int>(face - offsets[parent]);
+    double pu = 0, pv = 0;
+    if (l.scale == 3) {
+      const TernaryCell& cell = ternary_cells()[static_cast<std::size_t>(c)];
+      const double X = cell.down ? cell.a + 1 - v : u + cell.a;
+      const double Y = cell.down ? u + v + cell.b : v + cell.b;
+      pu = X / 3, pv = Y / 3;
+    } else {
+      switch (c) {
+        case 0: pu = u / 2, pv = v / 2; break;
+        case 1: pu = (2 - u - v) / 2, pv = u / 2; break;
+        case 2: pu = v / 2, pv = (2 - u - v) / 2; break;
+        default: pu = (1 - v) / 2, pv = (u + v) / 2; break;
+      }
+    }
+    u = pu, v = pv;
+    face = parent;
+  }
+  return {face, u, v};
+}
+
+const AffineParameters* TriangleFamily::affine_parameters(int kind) const {
+  if (kind != kind_of(6, 0) || !descent_ || !tables_.children_nonnegative()) return nullptr;
+  std::call_once(affine_once_, [this] {
+    // The regular patch's basis phi_h reproduces affine functions when the
+    // scheme has linear precision: sum_h phi_h(x) g_h = x for the control
+    // points' lattice positions g_h. Those are found by least squares over
+    // every stored sample of the regular patch (its basis is locally linearly
+    // independent), and the reproduction then checked at every sample: the
+    // largest deviation is the residual (a scheme without it gets none).
+    const int n = tables_.rates().back();
+    const TriangleTables::Grid grid = tables_.grid(6, n, 0);
+    const std::size_t count = tables_.layout(6, 0).size();
+    std::vector<std::array<double, 2>> at;
+    std::vector<const double*> rows;
+    const double g = 3.0 * n;
+    for (long j = 0; j <= n; ++j)
+      for (long i = 0; i + j <= n; ++i) {
+        rows.push_back(grid.weights(TriangleTables::GridPoint::Node, i, j)), at.push_back({i / double(n), j / double(n)});
+        if (i + j <= n - 1)
+          rows.push_back(grid.weights(TriangleTables::GridPoint::Up, i, j)), at.push_back({(3 * i + 1) / g, (3 * j + 1) / g});
+        if (i + j <= n - 2)
+          rows.push_back(grid.weights(TriangleTables::GridPoint::Down, i, j)), at.push_back({(3 * i + 2) / g, (3 * j + 2) / g});
+      }
+    Eigen::MatrixXd phi(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(count));
+    Eigen::MatrixXd target(static_cast<Eigen::Index>(rows.size()), 2);
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      for (std::size_t h = 0; h < count; ++h) phi(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(h)) = rows[r][h];
+      target(static_cast<Eigen::Index>(r), 0) = at[r][0], target(static_cast<Eigen::Index>(r), 1) = at[r][1];
+    }
+    if (phi.rows() < phi.cols()) return;
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(phi);
+    if (qr.rank() < phi.cols()) return;  // the samples do not determine the positions
+    const Eigen::MatrixXd positions = qr.solve(target);
+    const Eigen::MatrixXd deviation = phi * positions - target;
+    const Eigen::VectorXd sums = phi.rowwise().sum();
+    const double residual = std::max(deviation.cwiseAbs().maxCoeff(), (sums.array() - 1).abs().maxCoeff());
+    if (!(residual < 1e-9)) return;  // no linear precision
+    auto out = std::make_unique<AffineParameters>();
+    out->triangle = true;
+    out->residual = residual;
+    for (std::size_t h = 0; h < count; ++h)
+      out->at.push_back({positions(static_cast<Eigen::Index>(h), 0), positions(static_cast<Eigen::Index>(h), 1)});
+    affine_ = std::move(out);
+  });
+  return affine_.get();
+}
+
+}  // namespace stencil_runtime
