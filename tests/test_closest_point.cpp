@@ -217,17 +217,29 @@ bool inside_by_parity(const PolygonSoup& soup, const Point& q) {
 }
 
 // Signed distances against inside/outside by ray parity on a fine exact
-// tessellation (rate 16: within 1e-4 of the diagonal of the surface), for
+// tessellation (rate 16 or 27: within 1e-4 of the diagonal of the surface), for
 // points farther than 1e-2 of the diagonal from the surface.
 TEST_CASE("signed distances are negative exactly inside every bundled closed mesh", "[runtime][distance]") {
-  for (const char* scheme : {"catmull-clark", "nonpoly"}) {
-    const auto tables = Tables::load(generated_table(scheme, "--valence 3-8 --n 16", "sgs").string());
-    for (const char* name : {"cube.obj", "torus-3-5.obj", "chess-piece.obj", "bumpy-sphere.obj", "rook.obj"}) {
+  struct Case {
+    const char* scheme;
+    const char* extension;
+    std::vector<const char*> meshes;
+  };
+  const std::vector<const char*> quads{"cube.obj", "torus-3-5.obj", "chess-piece.obj", "bumpy-sphere.obj", "rook.obj"};
+  const std::vector<const char*> triangles{"icosahedron.obj", "tri-torus.obj", "tri-mix.obj"};
+  for (const Case& c : {Case{"catmull-clark", "sgs", quads}, Case{"nonpoly", "sgs", quads}, Case{"loop", "sgt", triangles},
+                        Case{"sqrt3", "sgt", triangles}}) {
+    const char* scheme = c.scheme;
+    // sqrt(3)'s tessellation rates are multiples of 3 apart: 1..27 holds 16 only in part, so its grid is 27.
+    const bool sqrt3 = std::string(scheme) == "sqrt3";
+    const int rate = sqrt3 ? 27 : 16;
+    const auto tables = Tables::load(generated_table(scheme, sqrt3 ? "--valence 3-8 --n 1,3,9,27" : "--valence 3-8 --n 16", c.extension).string());
+    for (const char* name : c.meshes) {
       CAPTURE(scheme, name);
       const Mesh mesh = read_obj((kMeshes / name).string());
       const Surface surface = surface_of(tables, mesh);
       const ClosestPointQuery query(surface);
-      const PolygonSoup soup = tessellate(surface, std::vector<int>(mesh.face_count(), 16));
+      const PolygonSoup soup = tessellate(surface, std::vector<int>(mesh.face_count(), rate));
       const double diagonal = diagonal_of(mesh);
       Point lo = mesh.positions[0], hi = lo;
       for (const Point& p : mesh.positions)

@@ -99,11 +99,14 @@ bool FaceSearch::improve(const SubPatch& s, double x, double y, const Point& poi
   return true;
 }
 
-void FaceSearch::derivatives(const SubPatch& s, double& x, double& y, Derivatives& out) const {
-  if (family_.derivatives(s, x, y, out)) return;  // exact (at a grid point next to (x, y) for non-polynomial schemes)
-  // Central differences of exact evaluations (one-sided at the border) in the
-  // sub-patch's own coordinates, where the family has no derivative: next to
-  // an extraordinary vertex, or a scheme without derivatives (sqrt(3)).
+void FaceSearch::derivatives(const SubPatch& sub, double& x, double& y, Derivatives& out) const {
+  if (family_.derivatives(sub, x, y, out)) return;  // exact (at a grid point next to (x, y) for non-polynomial schemes)
+  // Central differences of exact evaluations (one-sided at the border), where
+  // the family has no derivative (an extraordinary vertex, or a scheme without
+  // derivatives: sqrt(3)), on the whole patch: a step relative to a deep
+  // sub-patch would leave the evaluations' bounds to swamp the differences.
+  SubPatch s;
+  family_.root(sub.face, prepared_.data(), s);
   const double h = 1e-5;
   const auto l = s.domain.local(x, y);
   const double tol = tolerance_ * 1e-4;
@@ -209,11 +212,10 @@ void FaceSearch::refine(const Point& q, FaceHit& best) const {
   };
   // Derivatives on the path's end, the point moved back by its origin.
   // Where the family has none (sqrt(3), an extraordinary vertex): differences
-  // of exact evaluations on the whole patch, whose step does not shrink with
-  // the path (on a deep sub-patch the evaluations' bounds would swamp them).
+  // of exact evaluations on the whole patch (derivatives()).
   const auto derivatives_at = [&](const std::vector<SubPatch>& path, double& x, double& y, Derivatives& out) {
     if (!family_.derivatives(path.back(), x, y, out)) {
-      derivatives(path.front(), x, y, out);
+      derivatives(path.front(), x, y, out);  // differences on the whole patch
       return true;
     }
     for (int k = 0; k < 3; ++k) out.point[k] += offsets.back()[k];

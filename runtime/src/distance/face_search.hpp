@@ -54,7 +54,7 @@ class FaceSearch {
   // The limit point and its partial derivatives in the patch parameters at
   // (x, y) of a sub-patch: exact where the family has them (Family::derivatives,
   // which may move (x, y) to its grid), else central differences of exact
-  // evaluations (one-sided at the sub-patch's border).
+  // evaluations on the whole patch (one-sided at its border).
   void derivatives(const SubPatch& s, double& x, double& y, Derivatives& out) const;
 
  private:
