@@ -48,14 +48,15 @@ struct BfrSamples {
   std::vector<Point> points;
 };
 
-BfrSamples bfr_samples(const Mesh& mesh, int per_face, unsigned seed) {
-  bfr_reference::BfrLimit limit(mesh.positions, mesh.face_sizes, mesh.face_vertices);
+BfrSamples bfr_samples(const Mesh& mesh, int per_face, unsigned seed, osd::Sdc::SchemeType scheme = osd::Sdc::SCHEME_CATMARK) {
+  bfr_reference::BfrLimit limit(mesh.positions, mesh.face_sizes, mesh.face_vertices, scheme);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> uniform(0, 1);
   BfrSamples out;
   for (std::size_t f = 0; f < mesh.face_count(); ++f)
     for (int s = 0; s < per_face; ++s) {
-      const double u = uniform(rng), v = uniform(rng);
+      double u = uniform(rng), v = uniform(rng);
+      if (scheme == osd::Sdc::SCHEME_LOOP && u + v > 1) u = 1 - u, v = 1 - v;  // Loop's triangle u + v <= 1
       out.samples.push_back({f, u, v});
       out.points.push_back(limit.evaluate(static_cast<int>(f), u, v));
     }
@@ -80,6 +81,20 @@ TEST_CASE("fit_at_samples recovers Catmull-Clark control points from Bfr's limit
     INFO(name);
     const Mesh mesh = read_obj((kMeshes / name).string());
     const BfrSamples data = bfr_samples(mesh, 12, 7);
+    const auto topology = test_runtime::topology_of(tables, mesh);
+    const std::vector<Point> fitted = fit_at_samples(*topology, data.samples, data.points, 0);
+    const double error = largest_difference(fitted, mesh.positions) / diagonal_of(mesh.positions);
+    INFO("largest control-point error / diagonal " << error);
+    CHECK(error < 1e-9);
+  }
+}
+
+TEST_CASE("fit_at_samples recovers Loop control points from Bfr's limit points at known parameters", "[fitting]") {
+  const auto tables = Tables::load(generated_table("loop", "--valence 3-8 --n 8", "sgt").string());
+  for (const char* name : {"icosahedron.obj", "tri-torus.obj", "tri-mix.obj"}) {
+    INFO(name);
+    const Mesh mesh = read_obj((kMeshes / name).string());
+    const BfrSamples data = bfr_samples(mesh, 12, 7, osd::Sdc::SCHEME_LOOP);
     const auto topology = test_runtime::topology_of(tables, mesh);
     const std::vector<Point> fitted = fit_at_samples(*topology, data.samples, data.points, 0);
     const double error = largest_difference(fitted, mesh.positions) / diagonal_of(mesh.positions);
@@ -149,12 +164,17 @@ std::vector<Point> scaled(std::vector<Point> points, double s) {
   return points;
 }
 
-// Exact limit points of a surface at the cell centres of a 4 x 4 grid on every face.
+// Exact limit points of a surface at the cell centres of a 4 x 4 grid on every
+// quad face, or at the nodes (i/9, j/9) inside every triangle face.
 std::vector<Point> grid_points(const Surface& surface) {
   std::vector<Point> points;
+  const bool triangles = surface.topology().tables().family() == SchemeFamily::Triangle;
   for (std::size_t f = 0; f < surface.topology().face_count(); ++f)
     for (int j = 0; j < 4; ++j)
-      for (int i = 0; i < 4; ++i) points.push_back(surface.evaluate(f, test_runtime::grid(2 * i + 1, 2 * j + 1, 8)));
+      for (int i = 0; i < 4; ++i) {
+        if (!triangles) points.push_back(surface.evaluate(f, test_runtime::grid(2 * i + 1, 2 * j + 1, 8)));
+        else if (i + j <= 3) points.push_back(surface.evaluate(f, test_runtime::grid(2 * i + 1, 2 * j + 1, 9)));
+      }
   return points;
 }
 
@@ -188,6 +208,26 @@ TEST_CASE("SDM recovers the control points of the surface the points lie on, fro
     const FitResult fit = fit_surface(test_runtime::topology_of(tables, mesh), start, data.points, options);
     CHECK(fit.history.front().max > 1e-3);
     CHECK(largest_difference(fit.control, mesh.positions) / diagonal < 1e-6);
+  }
+  SECTION("Loop, points from Bfr at random parameters") {
+    const Mesh tri = read_obj((kMeshes / "tri-mix.obj").string());
+    const double tri_diagonal = diagonal_of(tri.positions);
+    const auto tables = Tables::load(generated_table("loop", "--valence 3-8 --n 8", "sgt").string());
+    const BfrSamples data = bfr_samples(tri, 8, 11, osd::Sdc::SCHEME_LOOP);
+    const FitResult fit = fit_surface(test_runtime::topology_of(tables, tri), perturbed(tri.positions, 0.01 * tri_diagonal, 3),
+                                      data.points, options);
+    CHECK(fit.history.front().max > 1e-3);
+    CHECK(largest_difference(fit.control, tri.positions) / tri_diagonal < 1e-6);
+  }
+  SECTION("sqrt(3), its exact limit points") {
+    const Mesh tri = read_obj((kMeshes / "tri-mix.obj").string());
+    const double tri_diagonal = diagonal_of(tri.positions);
+    const auto tables = Tables::load(generated_table("sqrt3", "--valence 3-8 --n 1,3,9,27", "sgt").string());
+    const auto topology = test_runtime::topology_of(tables, tri);
+    const FitResult fit = fit_surface(topology, perturbed(tri.positions, 0.01 * tri_diagonal, 3),
+                                      grid_points(Surface(topology, tri.positions)), options);
+    CHECK(fit.history.front().max > 1e-3);
+    CHECK(largest_difference(fit.control, tri.positions) / tri_diagonal < 1e-6);
   }
   SECTION("nonpoly, its exact limit points") {
     const auto tables = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 8", "sgs").string());
@@ -269,11 +309,6 @@ TEST_CASE("Fitting refuses bad inputs with clear errors", "[fitting]") {
   CHECK_THROWS_WITH(parse_fit_method("pdx"), Catch::Contains("'pdx'"));
   // Too few points for the control points, and no smoothing: a singular system, said so.
   CHECK_THROWS_WITH(fit_at_samples(*topology, {{0, 0.5, 0.5}}, {{0, 0, 0}}, 0), Catch::Contains("singular"));
-  // Triangle schemes: no closest points yet, hence no fit.
-  const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4", "sgt").string());
-  const Mesh ico = read_obj((kMeshes / "icosahedron.obj").string());
-  CHECK_THROWS_WITH(fit_surface(test_runtime::topology_of(loop, ico), ico.positions, points, FitOptions{}),
-                    Catch::Contains("triangle schemes"));
 }
 
 namespace {

@@ -44,6 +44,13 @@ class Tables {
   int regular_valence() const { return family_ == SchemeFamily::Quad ? 4 : 6; }
   // Corners of the faces the scheme's patches cover: 4 or 3.
   int face_corners() const { return family_ == SchemeFamily::Quad ? 4 : 3; }
+  // Whether the regular patch's basis is polynomial (Catmull-Clark, Loop), so
+  // that exact rows and first derivatives exist at every parameter; false for
+  // the others (nonpoly, sqrt(3)) and for tables without patch subdivision data.
+  bool polynomial_regular() const;
+  // The factor by which one step of the scheme's own patch subdivision scales
+  // the parameters: 2, or 3 for sqrt(3)'s composite step.
+  int dilation() const;
 
   // The family's own tables, for the family code below the public interface;
   // throw EvaluationError when the tables are of the other family.

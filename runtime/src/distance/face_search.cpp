@@ -114,19 +114,27 @@ void FaceSearch::derivatives(const SubPatch& sub, double& x, double& y, Derivati
     const auto p = s.domain.at(X, Y);
     return family_.evaluate(s, p[0], p[1], tol).point;
   };
-  // The partial along own axis `axis`: the widest of the central, forward and backward differences that stays inside.
-  const auto partial = [&](int axis) {
-    const double dX = axis == 0 ? h : 0, dY = axis == 0 ? 0 : h;
-    const bool ahead = s.domain.contains_local(l[0] + dX, l[1] + dY), behind = s.domain.contains_local(l[0] - dX, l[1] - dY);
-    const double a = behind ? -1.0 : 0.0, b = ahead ? 1.0 : 0.0;
-    Point d{0, 0, 0};
-    if (a == b) return d;
-    const Point fa = value(l[0] + a * dX, l[1] + a * dY), fb = value(l[0] + b * dX, l[1] + b * dY);
-    for (int k = 0; k < 3; ++k) d[k] = (fb[k] - fa[k]) / ((b - a) * h);
-    return d;
+  // The derivative along the lattice direction (a, b): central where both
+  // sides are inside, else one-sided; false where neither side is (a
+  // triangle's corners (1,0) and (0,1) block one axis both ways).
+  const auto directional = [&](double a, double b, Point& d) {
+    const bool ahead = s.domain.contains_local(l[0] + a * h, l[1] + b * h);
+    const bool behind = s.domain.contains_local(l[0] - a * h, l[1] - b * h);
+    if (!ahead && !behind) return false;
+    const double lo = behind ? -1.0 : 0.0, hi = ahead ? 1.0 : 0.0;
+    const Point fa = value(l[0] + lo * a * h, l[1] + lo * b * h), fb = value(l[0] + hi * a * h, l[1] + hi * b * h);
+    for (int k = 0; k < 3; ++k) d[k] = (fb[k] - fa[k]) / ((hi - lo) * h);
+    return true;
   };
   out.point = value(l[0], l[1]);
-  const Point dX = partial(0), dY = partial(1);
+  Point dX{0, 0, 0}, dY{0, 0, 0}, diagonal{0, 0, 0};
+  const bool along_x = directional(1, 0, dX), along_y = directional(0, 1, dY);
+  // A blocked axis from the diagonal (1, -1), along the triangle's long edge: its derivative is dX - dY.
+  if (along_x != along_y && directional(1, -1, diagonal))
+    for (int k = 0; k < 3; ++k) {
+      if (along_y) dX[k] = dY[k] + diagonal[k];
+      else dY[k] = dX[k] - diagonal[k];
+    }
   // To the patch's parameters: d/dx = dX/dx d/dX + dY/dx d/dY.
   const auto j = s.domain.inverse_jacobian();
   for (int k = 0; k < 3; ++k) {

@@ -65,8 +65,10 @@ FootFrame estimated_frame(const Surface& surface, const ClosestPoint& foot, doub
     const int s = domain.subface(foot.u, foot.v, su, sv);
     u0 = s % domain.u_tiles, v0 = s / domain.u_tiles, scale = 0.5;
   }
-  const double cu = std::clamp(std::round(su / h), 1.0, 1 / h - 1) * h;
-  const double cv = std::clamp(std::round(sv / h), 1.0, 1 / h - 1) * h;
+  double cu = std::clamp(std::round(su / h), 1.0, 1 / h - 1) * h;
+  double cv = std::clamp(std::round(sv / h), 1.0, 1 / h - 1) * h;
+  if (domain.kind == FaceDomain::Kind::Triangle)  // the 3 x 3 samples inside the triangle u + v <= 1
+    while (cu + cv > 1 - 2 * h) (cu > cv ? cu : cv) -= h;
   Point a, b;
   tangent_pair(foot.normal, a, b);
   Eigen::Matrix<double, 9, 5> A;

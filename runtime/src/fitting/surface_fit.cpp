@@ -54,13 +54,20 @@ double diagonal_of(const std::vector<Point>& points) {
 
 // Stencil rows exist at every parameter where the scheme's regular patches are
 // polynomial; elsewhere only where the patch's descent reaches a stored grid.
-// There a foot moves to the nearest node of the grid 1 / (n 2^18), n the
-// largest stored rate: every such node is a stored node after at most 18
-// subdivision steps, and the move (below 4e-6 / n of a face) changes the
-// model's point only along the tangent plane, to first order.
-RealSample row_sample(const ClosestPoint& foot, bool polynomial, double grid) {
-  if (polynomial) return {foot.face, foot.u, foot.v};
-  return {foot.face, std::round(foot.u * grid) / grid, std::round(foot.v * grid) / grid};
+// There a foot moves to the nearest node of the grid 1 / G, G = n d^k, n the
+// largest stored rate and d^k = 2^18 (3^11 for sqrt(3), whose steps scale by
+// 3): every such node is a stored node after at most k subdivision steps, and
+// the move (below 4e-6 / n of a face) changes the model's point only along the
+// tangent plane, to first order. The node is an exact fraction (a ternary one
+// has no double). On a triangle it stays in u + v <= 1.
+Sample grid_sample(const ClosestPoint& foot, std::int64_t grid, bool triangle) {
+  const double g = static_cast<double>(grid);
+  auto i = static_cast<std::int64_t>(std::llround(foot.u * g)), j = static_cast<std::int64_t>(std::llround(foot.v * g));
+  if (triangle && i + j > grid) {  // both rounded up across the long edge: the one rounded up more goes down
+    if (static_cast<double>(i) - foot.u * g > static_cast<double>(j) - foot.v * g) --i;
+    else --j;
+  }
+  return {foot.face, ExactParameter{Fraction::make(i, grid), Fraction::make(j, grid)}};
 }
 
 double smoothing_energy(const Eigen::SparseMatrix<double>& laplacian, const std::vector<Point>& control) {
@@ -133,9 +140,13 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
   query_options.tolerance = options.tolerance * result.diagonal;
   query_options.threads = options.threads;
   ClosestPointQuery query(surface, query_options);
-  // Catmull-Clark's regular patches are polynomial: exact second derivatives and exact rows everywhere.
+  // Catmull-Clark's regular patches are polynomial: exact second derivatives
+  // and exact rows everywhere; Loop's give exact rows everywhere.
   const bool exact_second = fitting::has_second_derivatives(surface);
-  const double grid = std::ldexp(static_cast<double>(topology->tables().rates().back()), 18);
+  const Tables& tables = topology->tables();
+  const bool rows_anywhere = tables.polynomial_regular();
+  const bool triangle = tables.family() == SchemeFamily::Triangle;
+  const std::int64_t grid = static_cast<std::int64_t>(tables.rates().back()) * (tables.dilation() == 3 ? 177147 : 262144);  // 3^11, 2^18
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
 
   std::vector<Point> control = initial;
@@ -159,9 +170,16 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
   double lambda = options.smoothing;
   for (int iteration = 1; iteration <= options.iterations; ++iteration) {
     if (options.max_error > 0 && current.max / result.diagonal <= options.max_error) break;
-    std::vector<RealSample> samples(points.size());
-    for (std::size_t k = 0; k < points.size(); ++k) samples[k] = row_sample(current.feet[k], exact_second, grid);
-    const StencilRows rows = topology->stencils(samples);
+    StencilRows rows;
+    if (rows_anywhere) {
+      std::vector<RealSample> samples(points.size());
+      for (std::size_t k = 0; k < points.size(); ++k) samples[k] = {current.feet[k].face, current.feet[k].u, current.feet[k].v};
+      rows = topology->stencils(samples);
+    } else {
+      std::vector<Sample> samples(points.size());
+      for (std::size_t k = 0; k < points.size(); ++k) samples[k] = grid_sample(current.feet[k], grid, triangle);
+      rows = topology->stencils(samples);
+    }
     std::vector<Eigen::Matrix3d> weights;
     if (options.method != FitMethod::PointDistance) {
       weights.resize(points.size());

@@ -75,6 +75,13 @@ std::uint64_t Tables::scheme_hash() const { return quad_ ? quad_->scheme_hash() 
 
 const std::vector<int>& Tables::rates() const { return quad_ ? quad_->rates() : triangle_->rates(); }
 
+bool Tables::polynomial_regular() const {
+  if (quad_) return quad_->descent() && quad_->descent()->degree > 0;
+  return triangle_->has_descent() && triangle_->polynomial_degree() > 0;
+}
+
+int Tables::dilation() const { return quad_ ? 2 : triangle_->dilation(); }
+
 bool Tables::has_rate(int n) const { return quad_ ? quad_->has_rate(n) : triangle_->has_rate(n); }
 
 int Tables::rate_at_least(int wanted) const {
