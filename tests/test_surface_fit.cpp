@@ -208,6 +208,12 @@ TEST_CASE("SDM recovers the control points of the surface the points lie on, fro
     const FitResult fit = fit_surface(test_runtime::topology_of(tables, mesh), start, data.points, options);
     CHECK(fit.history.front().max > 1e-3);
     CHECK(largest_difference(fit.control, mesh.positions) / diagonal < 1e-6);
+    // The warm start: once the feet settle on their faces the matrix keeps its
+    // pattern, and the symbolic analysis is reused.
+    INFO(fit.factorizations << " factorisations, " << fit.symbolic_analyses << " symbolic analyses");
+    CHECK(fit.factorizations >= 10);
+    CHECK(fit.symbolic_analyses >= 1);
+    CHECK(fit.symbolic_analyses * 2 < fit.factorizations);
   }
   SECTION("Loop, points from Bfr at random parameters") {
     const Mesh tri = read_obj((kMeshes / "tri-mix.obj").string());

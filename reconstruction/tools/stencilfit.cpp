@@ -43,22 +43,23 @@ int main(int argc, char** argv) {
       "stencilfit: fits a control mesh's positions to points, so that its exact limit surface under the tables'\n"
       "scheme approximates them. The control mesh is --control, or, with --control-points N, made from the points\n"
       "alone: CGAL's advancing-front reconstruction, its holes filled, simplified by edge collapses to N vertices (a\n"
-      "triangle mesh; quad schemes take it through their polygon step, so the tables need its valences).\n"
-      "Quad schemes only (Catmull-Clark, nonpoly): triangle schemes are refused, as closest points are not available\n"
-      "for them yet. Without --max-control-points the fitted mesh keeps the control mesh's connectivity and vertex\n"
-      "order. Each iteration finds every point's closest point on the current surface (its foot), solves a sparse\n"
+      "triangle mesh; quad schemes take it through their polygon step, so the tables need its valences). Every\n"
+      "scheme: Catmull-Clark, nonpoly, Loop and sqrt(3) (a triangle scheme needs a triangle control mesh).\n"
+      "Without --max-control-points the fitted mesh keeps the control mesh's connectivity and vertex order. Each\n"
+      "iteration finds every point's closest point on the current surface (its foot), solves a sparse\n"
       "least-squares problem in the control positions with the chosen error model and a smoothing term, and keeps\n"
       "the step only if the mean squared distance (plus smoothing) went down (Levenberg-Marquardt). Progress per\n"
       "iteration on stderr: RMS and max distance of the points to the surface as fractions of the points'\n"
       "bounding-box diagonal. Nothing is written unless the fit completes. docs/fitting.md describes the method.\n\n"
       "  stencilfit --tables tables/catmull-clark --points scan.xyz --control start.obj --out fitted.obj\n"
       "  stencilfit --tables tables/catmull-clark --points bunny.off --control-points 1000 --out bunny.obj\n"
+      "  stencilfit --tables tables/loop --points bunny.off --control-points 1000 --out bunny-loop.obj\n"
       "  stencilfit --tables tables/nonpoly --points scan.ply --control start.obj --method tdm --iterations 30 \\\n"
       "             --smoothing 0 --report fit.json --plot fit.svg --out fitted.obj",
       "stencilfit"};
   std::string tables_spec, points_path, control_path, out_path, report_path, plot_path, method = "sdm";
   FitOptions options;
-  app.add_option("--tables", tables_spec, "a quad scheme's .sgs table file, or the directory stencilgen wrote it to")
+  app.add_option("--tables", tables_spec, "a .sgs (quad scheme) or .sgt (triangle scheme) table file, or the directory stencilgen wrote it to")
       ->required();
   app.add_option("--points", points_path, "the points: .xyz/.txt (`x y z` lines), .ply (vertices) or .off (vertices)")
       ->required();

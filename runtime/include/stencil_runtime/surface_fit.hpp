@@ -71,10 +71,13 @@ struct FitResult {
   // Per control-mesh face, the largest distance of a point whose foot lies on
   // it, for the final surface (absolute; 0 where no foot lies).
   std::vector<double> face_max_error;
+  // The sparse Cholesky's work: numeric factorisations, and the symbolic
+  // analyses among them (the rest reused the previous analysis: the warm start).
+  int factorizations = 0, symbolic_analyses = 0;
 };
 
-// The fit from `initial` control positions on `topology` (a quad scheme's:
-// closest points are not available for triangle schemes yet). Throws FitError
+// The fit from `initial` control positions on `topology` (any scheme: a
+// triangle scheme needs a triangle control mesh). Throws FitError
 // for no points, a point or option that is not finite, or a control count
 // other than the topology's.
 FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std::vector<Point>& initial,

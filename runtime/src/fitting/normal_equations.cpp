@@ -1,5 +1,6 @@
 #include "fitting/normal_equations.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "stencil_runtime/surface_fit.hpp"
@@ -58,7 +59,26 @@ NormalEquations::NormalEquations(const StencilRows& rows, const std::vector<Eige
   hessian_.setFromTriplets(entries.begin(), entries.end());
 }
 
-std::vector<Point> NormalEquations::solve(double mu, const std::vector<Point>& current) {
+const FactorCache::Solver& FactorCache::factorize(const Eigen::SparseMatrix<double>& matrix) {
+  const auto* outer = matrix.outerIndexPtr();
+  const auto* inner = matrix.innerIndexPtr();
+  const std::size_t columns = static_cast<std::size_t>(matrix.outerSize()), entries = static_cast<std::size_t>(matrix.nonZeros());
+  const bool same = matrix.isCompressed() && rows_ == matrix.rows() && outer_.size() == columns + 1 &&
+                    inner_.size() == entries && std::equal(outer_.begin(), outer_.end(), outer) &&
+                    std::equal(inner_.begin(), inner_.end(), inner);
+  if (!same) {
+    solver_.analyzePattern(matrix);
+    ++analyses_;
+    rows_ = matrix.rows();
+    outer_.assign(outer, outer + columns + 1);
+    inner_.assign(inner, inner + entries);
+  }
+  solver_.factorize(matrix);
+  ++factorizations_;
+  return solver_;
+}
+
+std::vector<Point> NormalEquations::solve(double mu, const std::vector<Point>& current, FactorCache& cache) const {
   const Eigen::Index n = static_cast<Eigen::Index>(n_);
   const Eigen::Index size = hessian_.rows();
   Eigen::SparseMatrix<double> damped = hessian_;
@@ -73,18 +93,15 @@ std::vector<Point> NormalEquations::solve(double mu, const std::vector<Point>& c
         else rhs(i, c) += mu * current[static_cast<std::size_t>(i)][c];
       }
   }
-  if (!analysed_) {
-    solver_.analyzePattern(damped);
-    analysed_ = true;
-  }
-  solver_.factorize(damped);
+  damped.makeCompressed();
+  const FactorCache::Solver& solver = cache.factorize(damped);
   // LDL^T of a semidefinite matrix can succeed with a zero pivot: check the
   // pivots against the matrix's scale too.
   const double scale = damped.diagonal().cwiseAbs().maxCoeff();
-  if (solver_.info() != Eigen::Success || !(solver_.vectorD().minCoeff() > 1e-13 * scale))
+  if (solver.info() != Eigen::Success || !(solver.vectorD().minCoeff() > 1e-13 * scale))
     throw FitError("the fit's least-squares system is singular (" + std::to_string(n_) +
                    " control points are not all determined by the points): add smoothing or points");
-  const Eigen::MatrixXd solution = solver_.solve(rhs);
+  const Eigen::MatrixXd solution = solver.solve(rhs);
   std::vector<Point> out(n_);
   for (Eigen::Index i = 0; i < n; ++i)
     for (int c = 0; c < 3; ++c)

@@ -17,6 +17,7 @@
 
 namespace stencil_runtime {
 
+using fitting::FactorCache;
 using fitting::NormalEquations;
 
 const char* method_name(FitMethod method) {
@@ -108,7 +109,8 @@ std::vector<Point> fit_at_samples(const SurfaceTopology& topology, const std::ve
       fitting::control_laplacian(topology.vertex_count(), topology.face_sizes(), topology.face_vertices());
   NormalEquations equations(rows, {}, 1.0 / static_cast<double>(points.size()), points, laplacian,
                             smoothing / static_cast<double>(topology.vertex_count()));
-  return equations.solve(0, std::vector<Point>(topology.vertex_count()));
+  FactorCache cache;
+  return equations.solve(0, std::vector<Point>(topology.vertex_count()), cache);
 }
 
 FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std::vector<Point>& initial,
@@ -168,6 +170,7 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
   // its undamped steps never increase it; TDM and SDM start damped.
   double mu = options.method == FitMethod::PointDistance ? 0 : 1e-3;
   double lambda = options.smoothing;
+  FactorCache factors;  // the symbolic analysis carried from one iteration to the next
   for (int iteration = 1; iteration <= options.iterations; ++iteration) {
     if (options.max_error > 0 && current.max / result.diagonal <= options.max_error) break;
     StencilRows rows;
@@ -200,7 +203,7 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
     int rejected = 0;
     bool accepted = false;
     for (; rejected < 12; ++rejected) {
-      std::vector<Point> trial = equations.solve(mu / n, control);
+      std::vector<Point> trial = equations.solve(mu / n, control, factors);
       surface.set_positions(trial);
       query.update(surface);
       Feet next = feet_of(query, points);
@@ -222,6 +225,7 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
     lambda = std::max(lambda * options.smoothing_decay, options.smoothing * options.smoothing_floor);
   }
   result.control = std::move(control);
+  result.factorizations = factors.factorizations(), result.symbolic_analyses = factors.analyses();
   result.face_max_error.assign(topology->face_count(), 0.0);
   for (const ClosestPoint& foot : current.feet)
     result.face_max_error[foot.face] = std::max(result.face_max_error[foot.face], foot.distance);
