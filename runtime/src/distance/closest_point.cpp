@@ -84,6 +84,7 @@ struct ClosestPointQuery::Impl {
   EmbreeDevice device;
   RTCScene scene = nullptr;
   double build_seconds = 0;
+  double seed_tolerance = 0;  // how far a seed may be from the surface point it stands for
 
   ~Impl() {
     if (scene) rtcReleaseScene(scene);
@@ -150,6 +151,10 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
   // Seeds, and each prepared face's orientation against its original face.
   const std::vector<std::array<double, 2>> seed_at = seed_parameters(roots.empty() ? SubDomain() : roots[0].domain);
   const std::size_t per_face = seed_at.size();
+  // Seeds only pick where Gauss-Newton starts (the branch and bound then
+  // proves the answer with its own evaluations): where evaluation is
+  // approximate (non-polynomial schemes between their grids) a loose bound will do.
+  seed_tolerance = std::max(tolerance, 1e-4 * diagonal);
   seeds.points.assign(faces * per_face, {});
   seeds.faces.assign(faces * per_face, 0);
   seeds.at.assign(faces * per_face, {});
@@ -158,7 +163,7 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
     for (std::size_t f = r.begin(); f < r.end(); ++f) {
       for (std::size_t s = 0; s < per_face; ++s) {
         const std::size_t i = per_face * f + s;
-        seeds.points[i] = family->evaluate(roots[f], seed_at[s][0], seed_at[s][1], tolerance).point;
+        seeds.points[i] = family->evaluate(roots[f], seed_at[s][0], seed_at[s][1], seed_tolerance).point;
         seeds.faces[i] = f;
         seeds.at[i] = seed_at[s];
       }
@@ -200,7 +205,7 @@ ClosestPoint ClosestPointQuery::Impl::find(const Point& q) const {
   double nearest_d2 = 0;
   seed_tree->knnSearch(q.data(), 1, &nearest, &nearest_d2);
   const double seed_distance = std::sqrt(nearest_d2);
-  if (seed_distance < best.distance + tolerance) {
+  if (seed_distance < best.distance + tolerance + seed_tolerance) {
     const auto& at = seeds.at[nearest];
     FaceHit seeded;
     seeded.distance = INFINITY;

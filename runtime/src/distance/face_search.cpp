@@ -26,6 +26,10 @@ constexpr double kGilbertGap = 1e-8;
 // a tangent taken as orthogonal, and the smallest sub-patch it descends to.
 constexpr int kRefineSteps = 64;
 constexpr double kOrthogonal = 1e-12;
+// The same where the tangents are differences of evaluations (sqrt(3), an
+// extraordinary vertex): they are good to about 1e-9, and Newton steps on
+// them stop helping there.
+constexpr double kOrthogonalDifferences = 1e-8;
 constexpr double kSmallest = 1e-14;
 // The parameter step (relative to the sub-patch) for second derivatives by
 // differences, and the smallest damping of a Newton step tried.
@@ -221,8 +225,10 @@ void FaceSearch::refine(const Point& q, FaceHit& best) const {
   // Derivatives on the path's end, the point moved back by its origin.
   // Where the family has none (sqrt(3), an extraordinary vertex): differences
   // of exact evaluations on the whole patch (derivatives()).
+  bool differenced = false;  // whether the last derivatives_at() took differences
   const auto derivatives_at = [&](const std::vector<SubPatch>& path, double& x, double& y, Derivatives& out) {
-    if (!family_.derivatives(path.back(), x, y, out)) {
+    differenced = !family_.derivatives(path.back(), x, y, out);
+    if (differenced) {
       derivatives(path.front(), x, y, out);  // differences on the whole patch
       return true;
     }
@@ -244,10 +250,11 @@ void FaceSearch::refine(const Point& q, FaceHit& best) const {
   reach(x, y, best.patch.domain.size());
   Derivatives d;
   derivatives_at(path, x, y, d);
+  bool d_differenced = differenced;
   improve(path.back(), x, y, d.point, 0, q, best);
   double t = 1;  // the damping of the Newton step
   for (int iteration = 0; iteration < kRefineSteps; ++iteration) {
-    if (tangent_cosine(d, q) <= kOrthogonal) return;
+    if (tangent_cosine(d, q) <= (d_differenced ? kOrthogonalDifferences : kOrthogonal)) return;
     // Newton for |S - q|^2 / 2: gradient J^T r, Hessian J^T J + sum_k r_k
     // S_k'' with the second derivatives from differences of exact first
     // derivatives a grid step away (Gauss-Newton where that is not positive).
@@ -281,6 +288,7 @@ void FaceSearch::refine(const Point& q, FaceHit& best) const {
       reach(nx, ny, 2 * step);
       Derivatives n;
       if (!derivatives_at(path, nx, ny, n)) return;
+      const bool n_differenced = differenced;
       // Nearer; or, where distances no longer differ beyond the rounding of
       // the points (evaluated in sub-patches of different depths, each
       // rounding at the size of the coordinates), more nearly orthogonal.
@@ -290,7 +298,7 @@ void FaceSearch::refine(const Point& q, FaceHit& best) const {
       const bool nearer = then < now || (then <= now + rounding && tangent_cosine(n, q) < tangent_cosine(d, q));
       if (nearer || (nx == x && ny == y)) {
         if (nx == x && ny == y) return;  // the grid does not resolve the step: as near as the tables go
-        x = nx, y = ny, d = n, moved = true;
+        x = nx, y = ny, d = n, d_differenced = n_differenced, moved = true;
         improve(path.back(), x, y, d.point, 0, q, best);
         break;
       }

@@ -116,8 +116,9 @@ Approximation TrianglePatchDescent::nearest_sample(int valence, int region, cons
   };
   const double g = 3.0 * n;
   Candidate best{TriangleTables::GridPoint::Up, i0, j0, (3 * i0 + 1) / g, (3 * j0 + 1) / g};
+  const auto squared = [&](const Candidate& c) { return (c.x - x) * (c.x - x) + (c.y - y) * (c.y - y); };
   auto consider = [&](const Candidate& c) {
-    if (std::hypot(c.x - x, c.y - y) < std::hypot(best.x - x, best.y - y)) best = c;
+    if (squared(c) < squared(best)) best = c;
   };
   if (i0 + j0 <= n - 2) consider({TriangleTables::GridPoint::Down, i0, j0, (3 * i0 + 2) / g, (3 * j0 + 2) / g});
   for (long dj = 0; dj <= 1; ++dj)
@@ -190,12 +191,18 @@ Approximation TrianglePatchDescent::evaluate(int valence, int region, std::vecto
       if (!tables_.children_nonnegative())
       throw EvaluationError("this scheme's subdivision has negative weights, so evaluation between the parameters its "
                             "tables hold has no bound; give exact rationals the tables hold");
-      double sx = 0, sy = 0;
-      Approximation approx = nearest_sample(valence, region, q, to_real(x), to_real(y), sx, sy);
-      approx.bound += rounding + 4 * kEpsilon * largest_magnitude(q);
-      if (approx.bound <= tolerance || level == kMaxLevels) {
-        approx.bound = common_cell_bound(valence, region, q, to_real(x), to_real(y), sx, sy, approx.point, approx.bound - rounding) + rounding;
-        return approx;
+      // The bound below is max_j |P_j - f(s)|, at least half of max_j |P_j - P_0|: while that
+      // exceeds twice the tolerance the cell is too large, and the sample need not be evaluated.
+      double spread = 0;
+      for (const Point& p : q) spread = std::max(spread, norm(p, q[0]));
+      if (spread <= 2 * tolerance || level == kMaxLevels) {
+        double sx = 0, sy = 0;
+        Approximation approx = nearest_sample(valence, region, q, to_real(x), to_real(y), sx, sy);
+        approx.bound += rounding + 4 * kEpsilon * largest_magnitude(q);
+        if (approx.bound <= tolerance || level == kMaxLevels) {
+          approx.bound = common_cell_bound(valence, region, q, to_real(x), to_real(y), sx, sy, approx.point, approx.bound - rounding) + rounding;
+          return approx;
+        }
       }
     }
     const int c = cell_of(x, y, m);

@@ -76,9 +76,17 @@ Approximation TriangleFamily::evaluate(const SubPatch& in, double x, double y, d
   auto l = in.domain.local(x, y);
   in.domain.clamp_local(l[0], l[1]);
   const int valence = in.kind % (limits::kMaxValence + 1), region = in.kind / (limits::kMaxValence + 1);
-  // Exact fractions where the doubles are (the descent then lands on the tables' grids exactly).
+  // Exact fractions where the doubles are (the descent then lands on the
+  // tables' grids exactly). sqrt(3)'s steps scale by 3 and never shrink a
+  // binary fraction's denominator: unless a stored grid holds it already, its
+  // descent in fractions would only be slower.
   const auto fx = exact_fraction(l[0]), fy = exact_fraction(l[1]);
-  if (fx && fy) {
+  bool reachable = fx && fy;
+  if (reachable && tables_.dilation() == 3)
+    reachable = std::any_of(tables_.rates().begin(), tables_.rates().end(), [&](int n) {
+      return (3 * static_cast<std::int64_t>(n)) % fx->den == 0 && (3 * static_cast<std::int64_t>(n)) % fy->den == 0;
+    });
+  if (reachable) {
     try {
       return checked_descent().evaluate(valence, region, points, *fx, *fy, tolerance);
     } catch (const ParameterOverflow&) {
