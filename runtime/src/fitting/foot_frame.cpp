@@ -91,14 +91,7 @@ FootFrame estimated_frame(const Surface& surface, const ClosestPoint& foot, doub
 
 }  // namespace
 
-bool has_second_derivatives(const Surface& surface) {
-  try {
-    surface.second_derivatives(0, 0.375, 0.375);
-    return true;
-  } catch (const EvaluationError&) {
-    return false;
-  }
-}
+bool has_second_derivatives(const Surface& surface) { return surface.topology().tables().polynomial_regular(); }
 
 FootFrame foot_frame(const Surface& surface, const ClosestPoint& foot, bool exact_second_derivatives, double tolerance) {
   if (exact_second_derivatives) {

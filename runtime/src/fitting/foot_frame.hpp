@@ -12,8 +12,8 @@ struct FootFrame {
   double k1 = 0, k2 = 0;
 };
 
-// Whether the surface's scheme has exact second derivatives (Catmull-Clark:
-// its regular patches are polynomial).
+// Whether the surface's scheme has exact second derivatives (Catmull-Clark,
+// Loop: their regular patches are polynomial).
 bool has_second_derivatives(const Surface& surface);
 
 // The frame at `foot`. With exact second derivatives: the shape operator from

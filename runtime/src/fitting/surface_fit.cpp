@@ -142,8 +142,8 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
   query_options.tolerance = options.tolerance * result.diagonal;
   query_options.threads = options.threads;
   ClosestPointQuery query(surface, query_options);
-  // Catmull-Clark's regular patches are polynomial: exact second derivatives
-  // and exact rows everywhere; Loop's give exact rows everywhere.
+  // Catmull-Clark's and Loop's regular patches are polynomial: exact second
+  // derivatives and exact rows everywhere.
   const bool exact_second = fitting::has_second_derivatives(surface);
   const Tables& tables = topology->tables();
   const bool rows_anywhere = tables.polynomial_regular();

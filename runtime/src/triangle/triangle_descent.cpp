@@ -214,9 +214,8 @@ Approximation TrianglePatchDescent::evaluate(int valence, int region, std::vecto
   }
 }
 
-Derivatives TrianglePatchDescent::derivatives(int valence, int region, std::vector<Point>& q, Dual x, Dual y) const {
-  const int d = tables_.polynomial_degree();
-  if (d <= 0)
+void TrianglePatchDescent::descend_to_regular(int& valence, int& region, std::vector<Point>& q, Dual& x, Dual& y) const {
+  if (tables_.polynomial_degree() <= 0)
     throw EvaluationError("this triangle scheme's regular patch is not polynomial (sqrt(3)), and its tables hold no "
                           "derivative stencils: no derivatives for it yet");
   const int m = tables_.dilation();
@@ -232,32 +231,61 @@ Derivatives TrianglePatchDescent::derivatives(int valence, int region, std::vect
     valence = child.valence, region = child.region;
     q.swap(next);
   }
-  // The regular cell's polynomial and its partials in the cell's (X, Y), then the chain rule.
+}
+
+SecondDerivatives TrianglePatchDescent::regular_derivatives(const std::vector<Point>& q, const Dual& x, const Dual& y) const {
+  // The regular cell's polynomial and its partials in the cell's (X, Y), then
+  // the chain rule through the affine map (u, v) -> (X, Y): X_u = x.du, X_v =
+  // x.dv, Y_u = y.du, Y_v = y.dv, and no second-order terms.
+  const int d = tables_.polynomial_degree();
   const std::size_t terms = static_cast<std::size_t>((d + 1) * (d + 2) / 2);
   const std::vector<double>& coefficients = tables_.polynomial();
   const double X = x.value, Y = y.value;
-  std::vector<double> value, dX, dY;
+  // pw[e] = X^e (0 for e < 0), likewise for Y.
+  const auto power = [](double t, int e) { return e < 0 ? 0.0 : std::pow(t, e); };
+  std::vector<double> value, dX, dY, dXX, dXY, dYY;
   for (int f = 0; f <= d; ++f)
     for (int e = 0; e + f <= d; ++e) {
-      value.push_back(std::pow(X, e) * std::pow(Y, f));
-      dX.push_back(e > 0 ? e * std::pow(X, e - 1) * std::pow(Y, f) : 0.0);
-      dY.push_back(f > 0 ? f * std::pow(X, e) * std::pow(Y, f - 1) : 0.0);
+      value.push_back(power(X, e) * power(Y, f));
+      dX.push_back(e * power(X, e - 1) * power(Y, f));
+      dY.push_back(f * power(X, e) * power(Y, f - 1));
+      dXX.push_back(e * (e - 1) * power(X, e - 2) * power(Y, f));
+      dXY.push_back(e * f * power(X, e - 1) * power(Y, f - 1));
+      dYY.push_back(f * (f - 1) * power(X, e) * power(Y, f - 2));
     }
-  Derivatives out;
+  const double xu = x.du, xv = x.dv, yu = y.du, yv = y.dv;
+  SecondDerivatives out;
   for (std::size_t h = 0; h < q.size(); ++h) {
-    double w = 0, wx = 0, wy = 0;
+    double w = 0, wx = 0, wy = 0, wxx = 0, wxy = 0, wyy = 0;
     for (std::size_t k = 0; k < terms; ++k) {
       const double c = coefficients[h * terms + k];
       w += c * value[k], wx += c * dX[k], wy += c * dY[k];
+      wxx += c * dXX[k], wxy += c * dXY[k], wyy += c * dYY[k];
     }
-    const double wu = wx * x.du + wy * y.du, wv = wx * x.dv + wy * y.dv;
+    const double wu = wx * xu + wy * yu, wv = wx * xv + wy * yv;
+    const double wuu = wxx * xu * xu + 2 * wxy * xu * yu + wyy * yu * yu;
+    const double wuv = wxx * xu * xv + wxy * (xu * yv + xv * yu) + wyy * yu * yv;
+    const double wvv = wxx * xv * xv + 2 * wxy * xv * yv + wyy * yv * yv;
     for (std::size_t k = 0; k < 3; ++k) {
       out.point[k] += w * q[h][k];
       out.du[k] += wu * q[h][k];
       out.dv[k] += wv * q[h][k];
+      out.duu[k] += wuu * q[h][k];
+      out.duv[k] += wuv * q[h][k];
+      out.dvv[k] += wvv * q[h][k];
     }
   }
   return out;
+}
+
+Derivatives TrianglePatchDescent::derivatives(int valence, int region, std::vector<Point>& q, Dual x, Dual y) const {
+  descend_to_regular(valence, region, q, x, y);
+  return regular_derivatives(q, x, y);
+}
+
+SecondDerivatives TrianglePatchDescent::second_derivatives(int valence, int region, std::vector<Point>& q, Dual x, Dual y) const {
+  descend_to_regular(valence, region, q, x, y);
+  return regular_derivatives(q, x, y);
 }
 
 template Approximation TrianglePatchDescent::evaluate<Fraction>(int, int, std::vector<Point>&, Fraction, Fraction, double) const;

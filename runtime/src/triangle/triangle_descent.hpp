@@ -40,8 +40,17 @@ class TrianglePatchDescent {
   // Throws EvaluationError at the extraordinary vertex itself (no parametric
   // derivative there) and for a scheme without a polynomial regular patch.
   Derivatives derivatives(int valence, int region, std::vector<Point>& points, Dual x, Dual y) const;
+  // The same with the second derivatives along (u, v) (the cells' maps are
+  // affine: the chain rule has no second-order terms).
+  SecondDerivatives second_derivatives(int valence, int region, std::vector<Point>& points, Dual x, Dual y) const;
 
  private:
+  // Down the cells holding (x, y) until the cell is regular (valence 6);
+  // throws EvaluationError for a scheme without a polynomial regular patch and
+  // at the extraordinary vertex itself.
+  void descend_to_regular(int& valence, int& region, std::vector<Point>& points, Dual& x, Dual& y) const;
+  // The regular cell's polynomial at (x, y) with its first and second derivatives along (u, v).
+  SecondDerivatives regular_derivatives(const std::vector<Point>& points, const Dual& x, const Dual& y) const;
   Approximation nearest_sample(int valence, int region, const std::vector<Point>& q, double x, double y, double& sx,
                                double& sy) const;
   double common_cell_bound(int valence, int region, std::vector<Point> q, double x, double y, double sx, double sy,

@@ -202,6 +202,19 @@ Derivatives TriangleFamily::derivatives(std::size_t face, double u, double v, co
   return descent.derivatives(patch.valence, patch.region, points, q[0], q[1]);
 }
 
+SecondDerivatives TriangleFamily::second_derivatives(std::size_t face, double u, double v, const Point* prepared) const {
+  const TrianglePatchDescent& descent = checked_descent();
+  const auto [pf, q] = patch_parameter(face, Dual{u, 1, 0}, Dual{v, 0, 1});
+  const TrianglePatch& patch = patches_[pf];
+  std::vector<Point> points(patch.points.size());
+  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
+  return descent.second_derivatives(patch.valence, patch.region, points, q[0], q[1]);
+}
+
+SecondDerivatives TriangleFamily::second_derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const {
+  return second_derivatives(face, at.u.to_double(), at.v.to_double(), prepared);
+}
+
 Derivatives TriangleFamily::derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const {
   // The regular patch's polynomial is evaluated in doubles either way.
   return derivatives(face, at.u.to_double(), at.v.to_double(), prepared);

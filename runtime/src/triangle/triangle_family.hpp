@@ -38,6 +38,9 @@ class TriangleFamily final : public Family {
   // patch) anywhere but an extraordinary vertex; sqrt(3) refused.
   Derivatives derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
   Derivatives derivatives(std::size_t face, double u, double v, const Point* prepared) const override;
+  // Second derivatives along (u, v), likewise (Loop only).
+  SecondDerivatives second_derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
+  SecondDerivatives second_derivatives(std::size_t face, double u, double v, const Point* prepared) const override;
   // Sub-patches (closest points, triangle_sub_patches.cpp): a triangle of the
   // patch's parameters, its kind the valence and region, kind =
   // valence + (kMaxValence + 1) region; split into the tables' cells (Loop 4,
