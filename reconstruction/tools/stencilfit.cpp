@@ -2,6 +2,7 @@
 // limit surface approximates a set of points (PDM, TDM or SDM with parameter
 // correction by exact closest points; docs/fitting.md). The control mesh is
 // given, or made from the points (CGAL reconstruction and simplification).
+#include <iostream>
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -111,6 +112,7 @@ int main(int argc, char** argv) {
     Mesh mesh;
     if (!control_path.empty()) {
       mesh = read_obj(control_path);
+      for (const std::string& warning : mesh.warnings) std::cerr << warning << '\n';
     } else {
       stencil_reconstruction::InitialMeshOptions initial;
       initial.control_points = control_points;
@@ -123,7 +125,7 @@ int main(int argc, char** argv) {
                    mesh.vertex_count(), mesh.face_count(), made_report.points_used, made_report.reconstruction_seconds,
                    made_report.holes_filled, made_report.simplification_seconds);
     }
-    const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
+    const auto topology = SurfaceTopology::create(tables, mesh);
     // The header goes out with the first iteration, after the fit's own checks of its inputs.
     bool started = false;
     options.progress = [&](const FitIteration& it) {

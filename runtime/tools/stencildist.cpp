@@ -4,6 +4,7 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <string>
 
 #include "points_file.hpp"
@@ -68,13 +69,14 @@ int main(int argc, char** argv) {
     if (threads < 0 || threads > 256) throw std::runtime_error("--threads must be 1..256 (or 0 for all cores)");
     const auto tables = Tables::load(tables_spec);
     const Mesh mesh = read_obj(mesh_path);
+    for (const std::string& warning : mesh.warnings) std::cerr << warning << '\n';
     const std::vector<Point> queries = stencil_tools::read_points(points_path);
     Point lo = mesh.positions.at(0), hi = lo;
     for (const Point& p : mesh.positions)
       for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
     const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 
-    const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
+    const auto topology = SurfaceTopology::create(tables, mesh);
     const Surface surface(topology, mesh.positions);
     ClosestPointOptions options;
     options.tolerance = tolerance * diagonal;

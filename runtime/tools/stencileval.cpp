@@ -1,5 +1,6 @@
 // stencileval: limit points of a control mesh at exact rational parameters,
 // from the tables written by stencilgen, for any scheme family.
+#include <iostream>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -102,8 +103,11 @@ int main(int argc, char** argv) {
       "the surface has no parametric derivative and the query is refused. The last line then holds\n"
       "`x y z dux duy duz dvx dvy dvz` (and/or `nx ny nz`), the lines before it each vector by name.\n"
       "--second-derivatives adds d2/du2, d2/dudv and d2/dv2 (after du and dv, before the normal): exact to rounding\n"
-      "where the scheme's regular patches are polynomial (Catmull-Clark), anywhere but an extraordinary vertex;\n"
-      "refused for other schemes (their tables hold no second derivative).\n\n"
+      "where the scheme's regular patches are polynomial (Catmull-Clark, Loop), anywhere but an extraordinary\n"
+      "vertex; refused for other schemes (their tables hold no second derivative).\n"
+      "OpenSubdiv's OBJ tag lines (`t crease ...`, `t corner ...`, `t hole ...`) are read: a crease or corner of\n"
+      "non-zero sharpness, a hole, or `smoothtriangles` on a quad mesh with triangles is refused, naming the line\n"
+      "(only smooth closed meshes are evaluated); tags without effect there are accepted, unknown ones warned about.\n\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --face 0 --uv 1/3,1/2\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --batch queries.txt   (lines: F U V)\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --face 0 --uv 0.3,0.7\n"
@@ -133,7 +137,8 @@ int main(int argc, char** argv) {
       throw std::runtime_error("--batch replaces --face and --uv; give one or the other");
     const auto tables = Tables::load(tables_spec);
     const Mesh mesh = read_obj(mesh_path);  // after the tables, so that a bad table file is reported first
-    const Surface surface(SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices),
+    for (const std::string& warning : mesh.warnings) std::cerr << warning << '\n';
+    const Surface surface(SurfaceTopology::create(tables, mesh),
                           mesh.positions);
     if (!batch.empty()) {
       std::istringstream in(stencil_tools::read_text_file(batch));

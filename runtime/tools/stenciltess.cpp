@@ -80,6 +80,7 @@ int main(int argc, char** argv) {
     const auto t0 = Clock::now();
     const auto tables = Tables::load(tables_spec);
     const Mesh mesh = read_obj(mesh_path);
+    for (const std::string& warning : mesh.warnings) std::cerr << warning << '\n';
     std::vector<int> rates;
     if (app.count("--rate")) rates.assign(mesh.face_count(), rate);
     else if (!rates_file.empty()) rates = stencil_tools::rates_from_file(rates_file, mesh.face_count());
@@ -93,7 +94,7 @@ int main(int argc, char** argv) {
     } else {
       throw std::runtime_error("choose the rates: --rate N, --rates FILE, --tolerance T or --camera ... --pixels P");
     }
-    const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
+    const auto topology = SurfaceTopology::create(tables, mesh);
     const TessellationPlan plan(topology, rates, {threads});
     const double setup = seconds_since(t0);
     if (plan.largest_wanted_rate() > tables->rates().back())

@@ -4,6 +4,7 @@
 // from outside), and positions; and the polygons a tessellation produces.
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "error.hpp"
@@ -12,10 +13,44 @@ namespace stencil_runtime {
 
 using Point = std::array<double, 3>;
 
+// OpenSubdiv's boundary interpolation options (Sdc::Options::VtxBoundaryInterpolation).
+enum class BoundaryInterpolation { None, EdgeOnly, EdgeAndCorner };
+
+// The OBJ tag lines of OpenSubdiv's test shapes (`t name I/F/S ints floats
+// strings`), as read_obj found them. Each feature keeps the file line it came
+// from, so that whoever cannot honour it can name it. Vertex and face indices
+// are 0-based, as in the tags.
+struct MeshTags {
+  struct Crease {
+    int a = 0, b = 0;
+    double sharpness = 0;
+    long line = 0;
+  };
+  struct Corner {
+    int vertex = 0;
+    double sharpness = 0;
+    long line = 0;
+  };
+  struct Hole {
+    int face = 0;
+    long line = 0;
+  };
+  std::vector<Crease> creases;  // one per edge, in file order (sharpness 0 included)
+  std::vector<Corner> corners;
+  std::vector<Hole> holes;
+  BoundaryInterpolation boundary = BoundaryInterpolation::EdgeOnly;  // OpenSubdiv's tools' default
+  bool chaikin_creases = false;                                      // `creasemethod chaikin`
+  bool smooth_triangles = false;                                     // `smoothtriangles smooth`
+  long smooth_triangles_line = 0;
+};
+
 struct Mesh {
   std::vector<Point> positions;
   std::vector<int> face_sizes;
   std::vector<int> face_vertices;  // concatenated, counter-clockwise seen from outside
+  MeshTags tags;
+  std::string source;                 // the file it was read from (empty when made in code), for messages
+  std::vector<std::string> warnings;  // e.g. unknown tag lines, each naming its file and line
 
   std::size_t face_count() const { return face_sizes.size(); }
   std::size_t vertex_count() const { return positions.size(); }

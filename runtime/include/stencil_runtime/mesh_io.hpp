@@ -8,13 +8,19 @@
 namespace stencil_runtime {
 
 // Wavefront OBJ: `v x y z` and `f a b c ...` lines (1-based or negative
-// indices, `a/t/n` forms accepted; other lines ignored). Refuses, with a
+// indices, `a/t/n` forms accepted), and OpenSubdiv's tag lines `t name I/F/S
+// ...` into Mesh::tags (crease, corner, hole, interpolateboundary,
+// creasemethod, smoothtriangles; an unknown tag becomes a warning in
+// Mesh::warnings); other lines are ignored. Refuses, with a
 // LoadError naming the file and line: a file that is not a regular file or is
 // larger than limits::kMaxMeshFileBytes, a line longer than
 // limits::kMaxMeshLineBytes, coordinates that are not finite or exceed
 // limits::kMaxCoordinate, bad or out-of-range indices, faces with fewer than
 // three or more than limits::kMaxFaceSize vertices, more than
-// limits::kMaxMeshElements vertices or faces, and a file without faces.
+// limits::kMaxMeshElements vertices or faces, a file without faces, a
+// malformed tag line, and tags naming vertices, edges or faces that do not
+// exist. Reading a tag does not mean it is honoured: SurfaceTopology::create
+// with the Mesh refuses the ones the runtime cannot evaluate.
 Mesh read_obj(const std::string& path);
 
 // OBJ (text) or binary little-endian PLY, chosen by the extension (.obj/.ply),

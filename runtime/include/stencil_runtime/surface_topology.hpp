@@ -14,6 +14,7 @@
 
 #include "exact_parameter.hpp"
 #include "face_domain.hpp"
+#include "mesh.hpp"
 #include "stencil_rows.hpp"
 #include "tables.hpp"
 
@@ -45,6 +46,14 @@ class SurfaceTopology {
   // stencilgen call that adds a missing valence.
   static std::shared_ptr<const SurfaceTopology> create(std::shared_ptr<const Tables> tables, std::size_t vertex_count,
                                                        std::vector<int> face_sizes, std::vector<int> face_vertices);
+  // The same from a mesh read from a file, after checking its tags: the
+  // runtime evaluates smooth closed meshes, so a sharp or semi-sharp crease,
+  // a corner of non-zero sharpness, a hole, or `smoothtriangles` on a quad
+  // scheme's mesh with triangles is refused with a MeshError naming the file
+  // and line of the tag (the smooth surface would be silently wrong).
+  // Tags without effect on a closed smooth mesh (sharpness 0, boundary
+  // interpolation, crease method) are accepted.
+  static std::shared_ptr<const SurfaceTopology> create(std::shared_ptr<const Tables> tables, const Mesh& mesh);
 
   const Tables& tables() const { return *tables_; }
   const std::shared_ptr<const Tables>& shared_tables() const { return tables_; }

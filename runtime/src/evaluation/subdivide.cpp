@@ -23,7 +23,10 @@ Mesh subdivide(const Tables& tables, const Mesh& mesh) {
     next = std::move(step.mesh);
     steps = std::move(step.steps);
   }
-  Mesh out{mesh.positions, std::move(next.face_sizes), std::move(next.face_vertices)};
+  Mesh out;
+  out.positions = mesh.positions;
+  out.face_sizes = std::move(next.face_sizes);
+  out.face_vertices = std::move(next.face_vertices);
   for (const RefinementStep& s : steps) {
     std::vector<Point> refined(s.rows());
     s.apply(out.positions.data(), refined.data());

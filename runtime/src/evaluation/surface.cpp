@@ -37,7 +37,11 @@ void Surface::set_positions(const Point* control, std::size_t count) {
 Mesh Surface::prepared_mesh() const {
   if (!has_positions_) throw EvaluationError("the surface has no control positions yet (set_positions)");
   const Connectivity& c = topology_->family().prepared();
-  return {prepared_, c.face_sizes, c.face_vertices};
+  Mesh out;
+  out.positions = prepared_;
+  out.face_sizes = c.face_sizes;
+  out.face_vertices = c.face_vertices;
+  return out;
 }
 
 Point Surface::evaluate(std::size_t face, const ExactParameter& at) const {

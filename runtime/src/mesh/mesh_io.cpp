@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "obj_tags.hpp"
 #include "stencil_runtime/limits.hpp"
 
 namespace stencil_runtime {
@@ -55,6 +56,7 @@ Mesh read_obj(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw LoadError(path + ": cannot open");
   Mesh mesh;
+  mesh.source = path;
   std::string line;
   long number = 0;
   auto fail = [&](const std::string& what) { throw LoadError(path + ":" + std::to_string(number) + ": " + what); };
@@ -93,9 +95,14 @@ Mesh read_obj(const std::string& path) {
       if (count < 3) fail("a face needs at least three vertices");
       if (mesh.face_sizes.size() >= limits::kMaxMeshElements) fail("more than 2^30 faces");
       mesh.face_sizes.push_back(count);
+    } else if (tag == "t") {
+      detail::read_obj_tag(std::string_view(line).substr(pos), number, path + ":" + std::to_string(number), mesh, fail);
     }
   }
   if (mesh.face_sizes.empty()) throw LoadError(path + ": no faces");
+  detail::check_obj_tags(mesh, [&](long at, const std::string& what) {
+    throw LoadError(path + ":" + std::to_string(at) + ": " + what);
+  });
   return mesh;
 }
 

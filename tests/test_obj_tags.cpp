@@ -1,0 +1,140 @@
+// OpenSubdiv's OBJ tag lines: read with their line numbers, checked against
+// the mesh, and refused where the runtime cannot honour them (creases,
+// corners, holes, smooth triangles), so that a tagged mesh is never evaluated
+// as if its tags were absent. Tags without effect on a closed smooth mesh
+// leave the surface exactly as the untagged file gives it.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "cli.hpp"
+#include "runtime_api.hpp"
+
+using namespace stencil_runtime;
+using namespace test_runtime;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
+
+std::string cube_text() {
+  std::ifstream in(kMeshes / "cube.obj");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+long line_count(const std::string& text) {
+  long n = 0;
+  for (char c : text) n += c == '\n';
+  return n;
+}
+
+// The cube with `tags` appended; returns the path.
+fs::path tagged_cube(const fs::path& dir, const std::string& name, const std::string& tags) {
+  const fs::path path = dir / (name + ".obj");
+  std::ofstream(path) << cube_text() << tags;
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("OBJ tags are read with their lines and checked against the mesh", "[runtime][tags]") {
+  const fs::path dir = scratch_dir("obj-tags");
+  const long first = line_count(cube_text()) + 1;  // the first appended line
+  const Mesh m = read_obj(tagged_cube(dir, "all",
+                                      "t crease 3/2/0 0 1 3 2.5 0.5\n"
+                                      "t corner 1/1/0 7 4\n"
+                                      "t hole 2/0/0 1 5\n"
+                                      "t interpolateboundary 1/0/0 1\n"
+                                      "t creasemethod 0/0/1 chaikin\n"
+                                      "t smoothtriangles 0/0/1 smooth\n"
+                                      "t somethingnew 1/0 3\n")
+                              .string());
+  REQUIRE(m.tags.creases.size() == 2);  // the chain 0-1-3: two edges, one sharpness each
+  CHECK(m.tags.creases[0].a == 0);
+  CHECK(m.tags.creases[0].b == 1);
+  CHECK(m.tags.creases[0].sharpness == 2.5);
+  CHECK(m.tags.creases[1].a == 1);
+  CHECK(m.tags.creases[1].b == 3);
+  CHECK(m.tags.creases[1].sharpness == 0.5);
+  CHECK(m.tags.creases[1].line == first);
+  REQUIRE(m.tags.corners.size() == 1);
+  CHECK(m.tags.corners[0].vertex == 7);
+  CHECK(m.tags.corners[0].sharpness == 4);
+  CHECK(m.tags.corners[0].line == first + 1);
+  REQUIRE(m.tags.holes.size() == 2);
+  CHECK(m.tags.holes[1].face == 5);
+  CHECK(m.tags.boundary == BoundaryInterpolation::EdgeAndCorner);
+  CHECK(m.tags.chaikin_creases);
+  CHECK(m.tags.smooth_triangles);
+  REQUIRE(m.warnings.size() == 1);
+  CHECK_THAT(m.warnings[0], Catch::Contains(":" + std::to_string(first + 6) + ": warning: unknown tag `somethingnew`"));
+
+  // Malformed tags and tags naming what is not there: errors with the line.
+  const std::pair<const char*, const char*> bad[] = {
+      {"t crease 2/1/0 0 6 1\n", "not joined by an edge"},  // 0-6 is a diagonal of a cube face
+      {"t crease 2/1/0 0 1\n", "1 numbers announced, 0 given"},
+      {"t crease 2/1/0 0 1 -1\n", "negative"},
+      {"t crease 3/2/0 0 1 3 1 2 3\n", "more arguments"},
+      {"t crease 3/3/0 0 1 3 1 2 3\n", "one sharpness or one per edge"},
+      {"t corner 1/1/0 8 1\n", "refers to vertex 8, but the mesh has 8"},
+      {"t hole 1/0/0 6\n", "refers to face 6, but the mesh has 6"},
+      {"t hole 1/0/0 -1\n", "negative"},
+      {"t interpolateboundary 1/0/0 3\n", "interpolateboundary"},
+      {"t creasemethod 0/0/1 sharp\n", "normal or chaikin"},
+      {"t crease a/1/0 0 1 1\n", "argument count"},
+      {"t crease 2/nan/0 0 1 1\n", "argument count"},
+      {"t corner 1/1/0 3 nan\n", "not a finite number"},
+      {"t\n", "needs a name"},
+  };
+  for (const auto& [tag, message] : bad) {
+    INFO(tag);
+    const fs::path path = tagged_cube(dir, "bad", tag);
+    CHECK_THROWS_WITH(read_obj(path.string()), Catch::Contains(path.string() + ":" + std::to_string(first)) &&
+                                                   Catch::Contains(message));
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("tags the runtime cannot honour are refused, tags without effect change nothing", "[runtime][tags]") {
+  const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 4", "sgs").string());
+  const fs::path dir = scratch_dir("obj-tags-use");
+  const long first = line_count(cube_text()) + 1;
+  const std::pair<const char*, const char*> refused[] = {
+      {"t crease 2/1/0 0 1 2.5\n", "crease of sharpness 2.5 on the edge 0-1"},
+      {"t crease 2/1/0 0 1 0.25\n", "crease of sharpness 0.25"},
+      {"t corner 1/1/0 3 1\n", "corner of sharpness 1 at vertex 3"},
+      {"t hole 1/0/0 2\n", "hole (face 2)"},
+  };
+  for (const auto& [tag, message] : refused) {
+    INFO(tag);
+    const Mesh m = read_obj(tagged_cube(dir, "refused", tag).string());
+    CHECK_THROWS_WITH(SurfaceTopology::create(tables, m), Catch::Contains(":" + std::to_string(first) + ": ") &&
+                                                              Catch::Contains(message) && Catch::Contains("not supported"));
+    // The tool says the same and exits with 1.
+    const CliResult r = run_stencileval("--tables " + generated_table("catmull-clark", "--valence 3-8 --n 4", "sgs").parent_path().string() +
+                                        " --mesh " + (dir / "refused.obj").string() + " --face 0 --uv 1/2,1/2");
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains(message));
+  }
+  // Smooth triangles matter on a quad scheme's mesh with triangles only.
+  {
+    std::ofstream(dir / "tet.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
+                                      "t smoothtriangles 0/0/1 smooth\n";
+    CHECK_THROWS_WITH(SurfaceTopology::create(tables, read_obj((dir / "tet.obj").string())),
+                      Catch::Contains("tet.obj:9") && Catch::Contains("smoothtriangles"));
+  }
+  // Without effect on a closed smooth mesh: the same surface, bit for bit.
+  const Mesh plain = read_obj((kMeshes / "cube.obj").string());
+  const Mesh tagged = read_obj(tagged_cube(dir, "inert",
+                                           "t crease 2/1/0 0 1 0\nt corner 1/1/0 3 0\nt interpolateboundary 1/0/0 0\n"
+                                           "t creasemethod 0/0/1 chaikin\nt smoothtriangles 0/0/1 smooth\n")
+                                   .string());
+  const Surface a(SurfaceTopology::create(tables, plain), plain.positions);
+  const Surface b(SurfaceTopology::create(tables, tagged), tagged.positions);
+  for (std::size_t f = 0; f < plain.face_count(); ++f) CHECK(a.evaluate(f, grid(1, 3, 4)) == b.evaluate(f, grid(1, 3, 4)));
+  fs::remove_all(dir);
+}
