@@ -111,6 +111,11 @@ def main():
     seed("obj_mesh", "pyramid-polygons.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\n"
          "f 4 3 2 1\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n")
     seed("obj_mesh", "short-vertex.obj", "v 1 2\nf 1 1 1\n")
+    # OpenSubdiv's tag lines: inert ones, refused ones, malformed ones.
+    seed("obj_mesh", "cube-inert-tags.obj", cube + "t crease 2/1/0 0 1 0\nt interpolateboundary 1/0/0 2\n"
+         "t creasemethod 0/0/1 chaikin\nt smoothtriangles 0/0/1 catmark\nt unknown 0/0/0\n")
+    seed("obj_mesh", "cube-crease.obj", cube + "t crease 3/2/0 0 1 3 2.5 0.5\nt corner 1/1/0 7 4\nt hole 1/0/0 2\n")
+    seed("obj_mesh", "cube-bad-tags.obj", cube + "t crease 2/1/0 0 6 1\nt corner 9/1 1\n")
 
     # Scheme files.
     for path in sorted((ROOT / "schemes").glob("*.json")):

@@ -38,7 +38,8 @@ QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valen
   out.pieces = polynomial_pieces(curve);
   for (int v : valences) {
     if (v == 4) continue;
-    QuadDescent::Valence d{v, build_patch_subdivision(scheme, v), false};
+    QuadDescent::Valence d{v, build_patch_subdivision(scheme, v), false, std::nullopt, ""};
+    d.tangents = ev_tangents(scheme, v, d.subdivision, d.no_tangents);
     d.nonnegative = nonnegative(d.subdivision.extraordinary_child) &&
                     std::all_of(d.subdivision.regular_children.begin(), d.subdivision.regular_children.end(),
                                 [](const auto& rows) { return nonnegative(rows); });

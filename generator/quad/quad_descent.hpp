@@ -6,12 +6,14 @@
 // scheme are non-negative (then the limit and its derivatives lie in the convex
 // hulls of the control points and their differences, which bounds the error),
 // the regular basis as polynomial pieces where it is polynomial, and per
-// extraordinary valence the patch's one-step subdivision matrices.
+// extraordinary valence the patch's one-step subdivision matrices and the
+// tangent stencils at the vertex.
 #include <array>
 #include <optional>
 #include <vector>
 
 #include "curve/polynomial_pieces.hpp"
+#include "quad/ev_tangents.hpp"
 #include "quad/patch_subdivision.hpp"
 #include "quad/quad_scheme.hpp"
 
@@ -27,6 +29,8 @@ struct QuadDescent {
     int valence = 0;
     PatchSubdivision subdivision;
     bool nonnegative = false;  // every entry of A0 and of the regular children
+    std::optional<EvTangents> tangents;  // the tangent plane at the vertex (ev_tangents.hpp)
+    std::string no_tangents;             // why there are none
   };
   std::vector<Valence> valences;  // the extraordinary ones (valence 4 is the regular patch)
 };

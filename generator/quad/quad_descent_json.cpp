@@ -33,7 +33,10 @@ std::string quad_descent_to_json(const QuadScheme& scheme, const QuadDescent& d)
       "The scheme's own subdivision of a patch, for evaluation at any parameter (docs/runtime.md). mask: the regular "
       "curve's a_i from i = first (p'_k = sum_j a_{k-2j} p_j); polynomial_basis: phi(t - p) on [0,1] for p = -1..2, "
       "coefficients of t^0.. (null: not polynomial); per valence: A0 (ev_child, 2v+8 rows) and the regular children at "
-      "offsets (1,0), (0,1), (1,1) (16 rows each), rows as [column, weight] pairs over the patch's 2v+8 points.";
+      "offsets (1,0), (0,1), (1,1) (16 rows each), rows as [column, weight] pairs over the patch's 2v+8 points; tangents: "
+      "two stencils over the same points whose combinations of the control points span the tangent plane at the "
+      "extraordinary vertex (left eigenvectors of A0 for its subdominant eigenvalue, along the patch's u and v edges; "
+      "not parametric derivatives), 40 digits, with the residual max |t A0 - eigenvalue t| (null: none, no_tangents says why).";
   ojson mask;
   mask["first"] = d.mask_first;
   ojson coefficients = ojson::array();
@@ -67,6 +70,22 @@ std::string quad_descent_to_json(const QuadScheme& scheme, const QuadDescent& d)
     ojson children = ojson::array();
     for (const auto& child : v.subdivision.regular_children) children.push_back(rows_json(child));
     entry["regular_children"] = children;
+    // Version 2: the tangent stencils at the vertex, in 40 significant digits
+    // (lambda is irrational in general), with the residual max |t A0 - lambda t|.
+    if (v.tangents) {
+      ojson t;
+      t["eigenvalue"] = to_string(v.tangents->eigenvalue, 40);
+      t["residual"] = to_string(v.tangents->residual, 3);
+      for (const char* which : {"u", "v"}) {
+        ojson w = ojson::array();
+        for (const Real& x : (which[0] == 'u' ? v.tangents->u : v.tangents->v)) w.push_back(to_string(x, 40));
+        t[which] = w;
+      }
+      entry["tangents"] = t;
+    } else {
+      entry["tangents"] = nullptr;
+      entry["no_tangents"] = v.no_tangents;
+    }
     valences.push_back(entry);
   }
   doc["valences"] = valences;

@@ -9,7 +9,7 @@
 namespace sg {
 
 inline constexpr const char* kQuadDescentFormat = "stencilgen-quad-descent";
-inline constexpr int kQuadDescentVersion = 1;
+inline constexpr int kQuadDescentVersion = 2;  // 2: tangent stencils at the vertex
 
 std::string quad_descent_to_json(const QuadScheme& scheme, const QuadDescent& descent);
 

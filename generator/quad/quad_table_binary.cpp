@@ -141,6 +141,14 @@ std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& 
     put<std::uint8_t>(out, descent.nonnegative ? 1 : 0);
     put_rows(out, descent.subdivision.extraordinary_child);
     for (const auto& child : descent.subdivision.regular_children) put_rows(out, child);
+    // Version 6: the tangent stencils at the vertex (ev_tangents.hpp), in double whatever the precision.
+    put<std::uint8_t>(out, descent.tangents ? 1 : 0);
+    if (descent.tangents) {
+      put<double>(out, to_double(descent.tangents->eigenvalue));
+      put<double>(out, to_double(descent.tangents->residual));
+      for (const Real& w : descent.tangents->u) put<double>(out, to_double(w));
+      for (const Real& w : descent.tangents->v) put<double>(out, to_double(w));
+    }
   }
   put<std::uint64_t>(out, fmt::fnv1a64(reinterpret_cast<const unsigned char*>(out.data()), out.size()));
   return out;

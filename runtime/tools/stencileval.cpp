@@ -46,26 +46,43 @@ Evaluation evaluate(const Surface& surface, const Mesh& mesh, std::size_t face, 
 }
 
 // First derivatives, and second ones where asked for (zero otherwise).
-SecondDerivatives derivatives(const Surface& surface, const Mesh& mesh, std::size_t face, const ParameterText& u,
-                              const ParameterText& v, bool second) {
-  check_face(mesh, face);
-  const bool exact = u.exact && v.exact;
-  const ExactParameter at{u.fraction, v.fraction};
-  if (second) return exact ? surface.second_derivatives(face, at) : surface.second_derivatives(face, u.value, v.value);
-  SecondDerivatives out;
-  static_cast<Derivatives&>(out) = exact ? surface.derivatives(face, at) : surface.derivatives(face, u.value, v.value);
-  return out;
-}
-
 // What a query prints besides the point.
 struct Columns {
   bool derivatives = false, second = false, normal = false;
   bool any() const { return derivatives || second || normal; }
 };
 
+struct Query {
+  SecondDerivatives d;  // the point, and the derivatives asked for
+  Point normal{0, 0, 0};
+};
+
+// With --normal alone the normal comes from Surface::normal, which also
+// answers at an extraordinary vertex (tangent stencils); with derivatives it is
+// theirs.
+Query derivatives(const Surface& surface, const Mesh& mesh, std::size_t face, const ParameterText& u,
+                  const ParameterText& v, const Columns& columns, double tolerance) {
+  check_face(mesh, face);
+  const bool exact = u.exact && v.exact;
+  const ExactParameter at{u.fraction, v.fraction};
+  Query q;
+  if (columns.second) {
+    q.d = exact ? surface.second_derivatives(face, at) : surface.second_derivatives(face, u.value, v.value);
+  } else if (columns.derivatives) {
+    static_cast<Derivatives&>(q.d) = exact ? surface.derivatives(face, at) : surface.derivatives(face, u.value, v.value);
+  } else {
+    q.d.point = evaluate(surface, mesh, face, u, v, tolerance).point;
+    q.normal = exact ? surface.normal(face, at) : surface.normal(face, u.value, v.value);
+    return q;
+  }
+  q.normal = q.d.normal();
+  return q;
+}
+
 // The last line of a query: the point, then du and dv (--derivatives), duu,
 // duv and dvv (--second-derivatives), then the unit normal (--normal).
-std::string result_line(const SecondDerivatives& d, const Columns& columns) {
+std::string result_line(const Query& q, const Columns& columns) {
+  const SecondDerivatives& d = q.d;
   const bool with_derivatives = columns.derivatives, with_normal = columns.normal;
   std::string out;
   char text[80];
@@ -76,7 +93,7 @@ std::string result_line(const SecondDerivatives& d, const Columns& columns) {
   put(d.point);
   if (with_derivatives) put(d.du), put(d.dv);
   if (columns.second) put(d.duu), put(d.duv), put(d.dvv);
-  if (with_normal) put(d.normal());
+  if (with_normal) put(q.normal);
   return out + "\n";
 }
 
@@ -98,10 +115,11 @@ int main(int argc, char** argv) {
       "how far it may be from the exact one. Prints the point as `x y z` on the last line.\n"
       "--derivatives adds d/du and d/dv along the face's (u, v), --normal the unit normal (du x dv, outward for\n"
       "counter-clockwise faces); quad schemes and Loop (not sqrt(3) yet). They are exact to rounding on polynomial\n"
-      "schemes (Catmull-Clark, Loop) and, for quad schemes, at exact rationals k/n of a stored rate n; at an\n"
-      "extraordinary vertex\n"
-      "the surface has no parametric derivative and the query is refused. The last line then holds\n"
-      "`x y z dux duy duz dvx dvy dvz` (and/or `nx ny nz`), the lines before it each vector by name.\n"
+      "schemes (Catmull-Clark, Loop) and, for quad schemes, at exact rationals k/n of a stored rate n. At an\n"
+      "extraordinary vertex the surface has no parametric derivative and --derivatives is refused; --normal alone\n"
+      "still answers there for quad schemes (the tables' tangent stencils: subdominant left eigenvectors).\n"
+      "The last line then holds `x y z dux duy duz dvx dvy dvz` (and/or `nx ny nz`), the lines before it each\n"
+      "vector by name.\n"
       "--second-derivatives adds d2/du2, d2/dudv and d2/dv2 (after du and dv, before the normal): exact to rounding\n"
       "where the scheme's regular patches are polynomial (Catmull-Clark, Loop), anywhere but an extraordinary\n"
       "vertex; refused for other schemes (their tables hold no second derivative).\n"
@@ -128,7 +146,7 @@ int main(int argc, char** argv) {
   Columns columns;
   app.add_flag("--derivatives", columns.derivatives, "also d/du and d/dv (quad schemes)");
   app.add_flag("--second-derivatives", columns.second, "also d2/du2, d2/dudv, d2/dv2 (Catmull-Clark)");
-  app.add_flag("--normal", columns.normal, "also the unit normal (quad schemes)");
+  app.add_flag("--normal", columns.normal, "also the unit normal (quad schemes and Loop; at an extraordinary vertex quad schemes only)");
   return stencil_tools::run_tool(app, argc, argv, [&] {
     if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive number");
     if (batch.empty() && (face_text.empty() || uv.empty()))
@@ -155,11 +173,11 @@ int main(int argc, char** argv) {
           const std::size_t face = stencil_tools::parse_index(f, "face");
           const ParameterText pu = stencil_tools::parse_parameter(u), pv = stencil_tools::parse_parameter(v);
           if (columns.any()) {
-            out += result_line(derivatives(surface, mesh, face, pu, pv, columns.second), columns);
+            out += result_line(derivatives(surface, mesh, face, pu, pv, columns, tolerance), columns);
           } else {
-            SecondDerivatives d;
-            d.point = evaluate(surface, mesh, face, pu, pv, tolerance).point;
-            out += result_line(d, columns);
+            Query q;
+            q.d.point = evaluate(surface, mesh, face, pu, pv, tolerance).point;
+            out += result_line(q, columns);
           }
         } catch (const std::exception& e) {
           throw std::runtime_error(batch + ":" + std::to_string(number) + ": " + e.what());
@@ -171,8 +189,9 @@ int main(int argc, char** argv) {
     const std::size_t face = stencil_tools::parse_index(face_text, "--face");
     const auto [u, v] = stencil_tools::split_pair(uv, "--uv");
     if (columns.any()) {
-      const SecondDerivatives d =
-          derivatives(surface, mesh, face, stencil_tools::parse_parameter(u), stencil_tools::parse_parameter(v), columns.second);
+      const Query q = derivatives(surface, mesh, face, stencil_tools::parse_parameter(u), stencil_tools::parse_parameter(v),
+                                  columns, tolerance);
+      const SecondDerivatives& d = q.d;
       std::printf("face %zu at (%s): limit point of '%s'%s%s%s\n", face, uv.c_str(), tables->scheme().c_str(),
                   columns.derivatives ? ", its derivatives d/du and d/dv" : "",
                   columns.second ? ", its second derivatives" : "", columns.normal ? ", the unit normal" : "");
@@ -180,8 +199,8 @@ int main(int argc, char** argv) {
       line("point", d.point);
       if (columns.derivatives) line("du", d.du), line("dv", d.dv);
       if (columns.second) line("duu", d.duu), line("duv", d.duv), line("dvv", d.dvv);
-      if (columns.normal) line("normal", d.normal());
-      std::fputs(result_line(d, columns).c_str(), stdout);
+      if (columns.normal) line("normal", q.normal);
+      std::fputs(result_line(q, columns).c_str(), stdout);
       return 0;
     }
     const Evaluation e = evaluate(surface, mesh, face, stencil_tools::parse_parameter(u), stencil_tools::parse_parameter(v), tolerance);

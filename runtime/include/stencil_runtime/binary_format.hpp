@@ -26,7 +26,7 @@ namespace stencil_runtime::format {
 
 // Compact binary surface tables (*.sgs): every valence and rate of one quad scheme.
 inline constexpr char kSurfaceMagic[8] = {'S', 'G', 'S', 'U', 'R', 'F', '\0', '\0'};
-inline constexpr std::uint32_t kSurfaceVersion = 5;  // 2: subdivision rules after the hash; 3: polygon rules; 4: scheme name, patch subdivision; 5: phi' of the regular curve
+inline constexpr std::uint32_t kSurfaceVersion = 6;  // 2: subdivision rules after the hash; 3: polygon rules; 4: scheme name, patch subdivision; 5: phi' of the regular curve; 6: tangent stencils at the extraordinary vertex
 
 }  // namespace stencil_runtime::format
 

@@ -75,6 +75,14 @@ class Surface {
   // between its grids, and for a face or parameter outside the surface.
   Derivatives derivatives(std::size_t face, const ExactParameter& at) const;
   Derivatives derivatives(std::size_t face, double u, double v) const;
+  // The unit normal (du x dv normalised, outward for counter-clockwise faces)
+  // wherever derivatives() gives one, and for quad schemes also at an
+  // extraordinary vertex, where there is no parametric derivative: there it is
+  // t_u.P x t_v.P from the tables' tangent stencils (left eigenvectors of the
+  // patch's subdivision matrix for its subdominant eigenvalue). Throws
+  // EvaluationError where derivatives() does otherwise.
+  Point normal(std::size_t face, const ExactParameter& at) const;
+  Point normal(std::size_t face, double u, double v) const;
   // With the second partial derivatives along (u, v) (duu, duv, dvv): for quad
   // schemes whose regular patches are polynomial (Catmull-Clark), anywhere but
   // an extraordinary vertex; elsewhere EvaluationError says why.

@@ -139,6 +139,24 @@ Derivatives Surface::derivatives(std::size_t face, double u, double v) const {
   return checked(topology_->family().derivatives(face, u, v, prepared_.data()));
 }
 
+namespace {
+Point checked_normal(const Point& n) {
+  for (double x : n)
+    if (!std::isfinite(x)) throw EvaluationError("the normal is not finite (coordinates too large)");
+  return n;
+}
+}  // namespace
+
+Point Surface::normal(std::size_t face, const ExactParameter& at) const {
+  check_inside(*this, face, at);
+  return checked_normal(topology_->family().normal(face, at, prepared_.data()));
+}
+
+Point Surface::normal(std::size_t face, double u, double v) const {
+  check_inside(*this, face, u, v);
+  return checked_normal(topology_->family().normal(face, u, v, prepared_.data()));
+}
+
 SecondDerivatives Surface::second_derivatives(std::size_t face, const ExactParameter& at) const {
   check_inside(*this, face, at);
   return checked(topology_->family().second_derivatives(face, at, prepared_.data()));

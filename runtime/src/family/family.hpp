@@ -134,6 +134,15 @@ class Family {
   virtual Derivatives derivatives(std::size_t face, double u, double v, const Point* prepared) const;
   // With second derivatives, where the family has them exactly (quads with
   // polynomial regular patches); throws EvaluationError elsewhere.
+  // The unit normal: from the derivatives where they exist, and at an
+  // extraordinary vertex from the tables' tangent stencils (families that
+  // have them), so that a normal exists everywhere on a C1 surface.
+  virtual Point normal(std::size_t face, const ExactParameter& at, const Point* prepared) const {
+    return derivatives(face, at, prepared).normal();
+  }
+  virtual Point normal(std::size_t face, double u, double v, const Point* prepared) const {
+    return derivatives(face, u, v, prepared).normal();
+  }
   virtual SecondDerivatives second_derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const;
   virtual SecondDerivatives second_derivatives(std::size_t face, double u, double v, const Point* prepared) const;
 

@@ -439,6 +439,46 @@ Derivatives QuadFamily::derivatives(std::size_t face, double u, double v, const 
   return derivatives_any(face, u, v, prepared);
 }
 
+namespace {
+bool is_zero(const Fraction& x) { return x.num == 0; }
+bool is_zero(double x) { return x == 0; }
+}  // namespace
+
+template <class P>
+Point QuadFamily::normal_any(std::size_t face, P u, P v, const Point* prepared) const {
+  Jacobian j{};
+  std::vector<Point> points;
+  const auto [valence, at] = patch_points(face, u, v, prepared, j, points);
+  if (valence == 4 || !is_zero(at[0]) || !is_zero(at[1])) return derivatives_any(face, u, v, prepared).normal();
+  // The extraordinary vertex: t_u.P x t_v.P, in the patch's coordinates (every
+  // map from the face to the patch keeps the orientation: doublings, quarter
+  // turns, the patch's rotation).
+  const QuadDescent::Valence& d = tables_.descent(valence);
+  if (d.tangent_u.size() != points.size())
+    throw EvaluationError("the tables hold no tangent stencils at valence " + std::to_string(valence) +
+                          ", so there is no normal at the extraordinary vertex (exact JSON tables from before descent "
+                          "version 2, or a scheme whose subdominant eigenvalue is not a real double one)");
+  Derivatives tangents;
+  tangents.point = descend(face, u, v, 0.0, prepared).point;
+  for (std::size_t h = 0; h < points.size(); ++h)
+    for (std::size_t c = 0; c < 3; ++c) tangents.du[c] += d.tangent_u[h] * points[h][c], tangents.dv[c] += d.tangent_v[h] * points[h][c];
+  return tangents.normal();
+}
+
+Point QuadFamily::normal(std::size_t face, const ExactParameter& at, const Point* prepared) const {
+  try {
+    return normal_any(face, at.u, at.v, prepared);
+  } catch (const ParameterOverflow&) {
+    throw EvaluationError("the parameter " + at.str() + " needs fractions beyond 64 bits on the way to a regular patch");
+  }
+}
+
+Point QuadFamily::normal(std::size_t face, double u, double v, const Point* prepared) const {
+  const auto fu = exact_fraction(u), fv = exact_fraction(v);
+  if (fu && fv) return normal(face, ExactParameter{*fu, *fv}, prepared);
+  return normal_any(face, u, v, prepared);
+}
+
 template <class P>
 SecondDerivatives QuadFamily::second_derivatives_any(std::size_t face, P u, P v, const Point* prepared) const {
   const QuadPatchDescent& descent = checked_descent();

@@ -34,6 +34,8 @@ class QuadFamily final : public Family {
   Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const override;
   Derivatives derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
   Derivatives derivatives(std::size_t face, double u, double v, const Point* prepared) const override;
+  Point normal(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
+  Point normal(std::size_t face, double u, double v, const Point* prepared) const override;
   SecondDerivatives second_derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
   SecondDerivatives second_derivatives(std::size_t face, double u, double v, const Point* prepared) const override;
   bool hull_bounds() const override;
@@ -100,6 +102,8 @@ class QuadFamily final : public Family {
                                                 std::vector<Point>& points) const;
   template <class P>
   Derivatives derivatives_any(std::size_t face, P u, P v, const Point* prepared) const;
+  template <class P>
+  Point normal_any(std::size_t face, P u, P v, const Point* prepared) const;
   template <class P>
   SecondDerivatives second_derivatives_any(std::size_t face, P u, P v, const Point* prepared) const;
   template <class P>

@@ -162,6 +162,17 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
     const std::string where = "valence " + std::to_string(valence) + " patch subdivision";
     d.ev_child = read_rows(r, points, points, where);
     for (auto& child : d.regular_children) child = read_rows(r, 16, points, where);
+    const auto tangents = r.get<std::uint8_t>();  // version 6
+    if (tangents > 1) r.fail("valence " + std::to_string(valence) + ": invalid tangent flag");
+    if (tangents == 1) {
+      d.tangent_eigenvalue = r.get<double>();
+      d.tangent_residual = r.get<double>();
+      d.tangent_u = read_scalars(r, points, 8, left());
+      d.tangent_v = read_scalars(r, points, 8, left());
+      if (!std::isfinite(d.tangent_eigenvalue) || !(d.tangent_eigenvalue > 0 && d.tangent_eigenvalue < 1) ||
+          !std::isfinite(d.tangent_residual) || !finite(d.tangent_u) || !finite(d.tangent_v))
+        r.fail("valence " + std::to_string(valence) + ": invalid tangent stencils");
+    }
     t.descent_valences_.push_back(std::move(d));
     t.valences_.push_back(std::move(v));
   }

@@ -30,6 +30,11 @@ struct QuadDescent {
     bool nonnegative = false;      // every weight of A0 and of the regular children
     SparseRows ev_child;           // A0: 2v+8 rows over the patch's 2v+8 points
     SparseRows regular_children[3];  // 16 rows each; children at offsets (1,0), (0,1), (1,1) in half-patch units
+    // The tangent plane at the extraordinary vertex: t.P for t in {tangent_u,
+    // tangent_v} span it, along the patch's u and v edges (not parametric
+    // derivatives; empty when the tables hold none).
+    std::vector<double> tangent_u, tangent_v;
+    double tangent_eigenvalue = 0, tangent_residual = 0;
   };
 };
 

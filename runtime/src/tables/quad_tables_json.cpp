@@ -3,6 +3,7 @@
 // form as the binary file. Exact rationals become doubles; the binary file is
 // the fast path. Every name, count, index and rational is checked.
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -230,8 +231,9 @@ QuadTables QuadTables::load_json_directory(const std::string& dir, std::uint64_t
   if (fs::exists(descent)) {
     const JsonFile f(descent.string());
     const json& doc = f.root();
-    if (f.string(f.member(doc, "format", ""), "format") != "stencilgen-quad-descent" || f.integer(f.member(doc, "version", ""), "version") != 1)
-      f.fail("format", "not a version 1 stencilgen quad descent file");
+    const std::int64_t version = f.integer(f.member(doc, "version", ""), "version");
+    if (f.string(f.member(doc, "format", ""), "format") != "stencilgen-quad-descent" || version < 1 || version > 2)
+      f.fail("format", "not a version 1 or 2 stencilgen quad descent file");
     if (f.string(f.member(doc, "scheme", ""), "scheme") != t.name_) f.fail("scheme", "another scheme than the tables'");
     QuadDescent& d = t.descent_;
     const json& mask = f.member(doc, "mask", "");
@@ -275,6 +277,30 @@ QuadTables QuadTables::load_json_directory(const std::string& dir, std::uint64_t
       if (children.size() != 3) f.fail(field + ".regular_children", "expected three children");
       for (std::size_t c = 0; c < 3; ++c)
         out.regular_children[c] = read_rows(f, children[c], 16, points, field + ".regular_children[" + std::to_string(c) + "]");
+      if (version >= 2) {  // the tangent stencils at the vertex (null: none)
+        const json& t = f.member(valences[k], "tangents", field);
+        if (!t.is_null()) {
+          auto decimal = [&](const json& x, const std::string& where) {
+            const std::string text = f.string(x, where);
+            double value = 0;
+            const auto [end, err] = std::from_chars(text.data(), text.data() + text.size(), value);
+            if (err != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+              f.fail(where, "not a finite decimal number: " + quoted_excerpt(text));
+            return value;
+          };
+          out.tangent_eigenvalue = decimal(f.member(t, "eigenvalue", field + ".tangents"), field + ".tangents.eigenvalue");
+          out.tangent_residual = decimal(f.member(t, "residual", field + ".tangents"), field + ".tangents.residual");
+          if (!(out.tangent_eigenvalue > 0 && out.tangent_eigenvalue < 1))
+            f.fail(field + ".tangents.eigenvalue", "must lie in (0, 1)");
+          for (const char* which : {"u", "v"}) {
+            const std::string where = field + ".tangents." + which;
+            const json& w = f.array(f.member(t, which, field + ".tangents"), where);
+            if (w.size() != points) f.fail(where, "expected " + std::to_string(points) + " weights");
+            std::vector<double>& dest = which[0] == 'u' ? out.tangent_u : out.tangent_v;
+            for (const json& x : w) dest.push_back(decimal(x, where));
+          }
+        }
+      }
       seen[slot] = 1;
     }
     for (std::size_t s = 0; s < seen.size(); ++s)
