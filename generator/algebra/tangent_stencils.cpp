@@ -1,0 +1,144 @@
+#include "algebra/tangent_stencils.hpp"
+
+#include <Eigen/Dense>
+#include <boost/multiprecision/eigen.hpp>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+#include "base/error.hpp"
+
+namespace sg {
+
+namespace {
+using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
+
+Real magnitude(const Real& x) { return x < 0 ? Real(-x) : x; }
+
+// Columns made orthonormal (Gram-Schmidt, twice for stability); false if they are dependent.
+bool orthonormalise(Matrix& x) {
+  for (int pass = 0; pass < 2; ++pass)
+    for (Eigen::Index k = 0; k < x.cols(); ++k) {
+      for (Eigen::Index j = 0; j < k; ++j) x.col(k) -= x.col(j).dot(x.col(k)) * x.col(j);
+      const Real norm = sqrt(x.col(k).squaredNorm());
+      if (norm == 0) return false;
+      x.col(k) /= norm;
+    }
+  return true;
+}
+
+// The invariant subspace of `b` for the double eigenvalue near `estimate`, by
+// inverse subspace iteration from `start` (m x 2): returns the orthonormal
+// basis and sets `lambda` to the Rayleigh quotient's mean eigenvalue.
+Matrix eigenspace(const Matrix& b, Matrix start, double estimate, Real& lambda) {
+  const Eigen::Index m = b.rows();
+  if (!orthonormalise(start)) {  // a deterministic fallback start
+    for (Eigen::Index i = 0; i < m; ++i) start(i, 0) = Real(1 + i % 3), start(i, 1) = Real(1 + (i * 7) % 5);
+    orthonormalise(start);
+  }
+  Matrix x = start;
+  lambda = Real(estimate);
+  for (int it = 0; it < 8; ++it) {
+    Matrix shifted = b;
+    // A shift a hair off lambda keeps the factorisation regular at working precision.
+    const Real shift = lambda * (1 + Real("1e-60"));
+    for (Eigen::Index i = 0; i < m; ++i) shifted(i, i) -= shift;
+    x = shifted.fullPivLu().solve(x);
+    if (!orthonormalise(x)) throw Error("internal: inverse iteration lost rank");
+    const Matrix rq = x.transpose() * b * x;
+    lambda = (rq(0, 0) + rq(1, 1)) / 2;
+  }
+  return x;
+}
+
+}  // namespace
+
+std::optional<TangentStencils> tangent_stencils(const std::vector<std::vector<Real>>& a0, const std::vector<Real>& end_u,
+                                                const std::vector<Real>& end_v, std::string& why) {
+  const auto m = static_cast<Eigen::Index>(a0.size());
+  if (m < 3 || end_u.size() != a0.size() || end_v.size() != a0.size()) throw Error("internal: tangent_stencils: sizes differ");
+  Matrix a(m, m);
+  for (Eigen::Index r = 0; r < m; ++r) {
+    if (a0[static_cast<std::size_t>(r)].size() != a0.size()) throw Error("internal: tangent_stencils: A0 is not square");
+    for (Eigen::Index c = 0; c < m; ++c) a(r, c) = a0[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
+  }
+  // The spectrum in doubles: 1 first, then the subdominant pair.
+  Eigen::MatrixXd ad(m, m);
+  for (Eigen::Index r = 0; r < m; ++r)
+    for (Eigen::Index c = 0; c < m; ++c) ad(r, c) = to_double(a(r, c));
+  Eigen::EigenSolver<Eigen::MatrixXd> left(ad.transpose(), true);
+  std::vector<Eigen::Index> order(static_cast<std::size_t>(m));
+  for (Eigen::Index i = 0; i < m; ++i) order[static_cast<std::size_t>(i)] = i;
+  const Eigen::VectorXcd ev = left.eigenvalues();
+  std::stable_sort(order.begin(), order.end(), [&](Eigen::Index p, Eigen::Index q) { return std::abs(ev(p)) > std::abs(ev(q)); });
+  const std::complex<double> one = ev(order[0]), s1 = ev(order[1]), s2 = ev(order[2]), next = ev(order[3]);
+  const double scale = 1e-9;
+  if (std::abs(one - 1.0) > scale || std::abs(s1.imag()) > scale || std::abs(s2.imag()) > scale ||
+      std::abs(s1.real() - s2.real()) > scale * std::max(1.0, std::abs(s1.real())) ||
+      std::abs(next) >= std::abs(s1) - scale) {
+    why = "the subdominant eigenvalue of A0 is not a real double eigenvalue with a gap below it (" + std::to_string(s1.real()) +
+          (s1.imag() != 0 ? "+" + std::to_string(s1.imag()) + "i" : "") + ", " + std::to_string(s2.real()) + ", then |" +
+          std::to_string(std::abs(next)) + "|)";
+    return std::nullopt;
+  }
+  const double estimate = s1.real();
+  auto start = [&](const Eigen::MatrixXcd& vectors) {
+    Matrix x(m, 2);
+    for (Eigen::Index i = 0; i < m; ++i)
+      for (int k = 0; k < 2; ++k) x(i, k) = Real(vectors(i, order[static_cast<std::size_t>(1 + k)]).real());
+    return x;
+  };
+  TangentStencils out;
+  Real lambda_left, lambda_right;
+  const Matrix l = eigenspace(a.transpose(), start(left.eigenvectors()), estimate, lambda_left);  // columns: left eigenvectors
+  Eigen::EigenSolver<Eigen::MatrixXd> right_solver(ad, true);
+  // The right solver orders its eigenvalues its own way: its pair nearest the estimate.
+  Eigen::MatrixXcd rv = right_solver.eigenvectors();
+  std::vector<Eigen::Index> near(static_cast<std::size_t>(m));
+  for (Eigen::Index i = 0; i < m; ++i) near[static_cast<std::size_t>(i)] = i;
+  std::stable_sort(near.begin(), near.end(), [&](Eigen::Index p, Eigen::Index q) {
+    return std::abs(right_solver.eigenvalues()(p) - estimate) < std::abs(right_solver.eigenvalues()(q) - estimate);
+  });
+  Matrix rstart(m, 2);
+  for (Eigen::Index i = 0; i < m; ++i)
+    for (int k = 0; k < 2; ++k) rstart(i, k) = Real(rv(i, near[static_cast<std::size_t>(k)]).real());
+  Matrix r = eigenspace(a, rstart, estimate, lambda_right);
+  // Biorthogonal: L^T R = I.
+  const Matrix lr = l.transpose() * r;
+  r = r * lr.inverse();
+  out.eigenvalue = lambda_left;
+
+  // The characteristic map at the ends of the patch's two edges from the vertex.
+  auto characteristic = [&](const std::vector<Real>& w) {
+    Real c0 = 0, c1 = 0;
+    for (Eigen::Index h = 0; h < m; ++h) c0 += w[static_cast<std::size_t>(h)] * r(h, 0), c1 += w[static_cast<std::size_t>(h)] * r(h, 1);
+    return std::pair{c0, c1};
+  };
+  const auto [cu0, cu1] = characteristic(end_u);
+  const auto [cv0, cv1] = characteristic(end_v);
+  out.u.resize(static_cast<std::size_t>(m));
+  out.v.resize(static_cast<std::size_t>(m));
+  Real largest = 0;
+  for (Eigen::Index h = 0; h < m; ++h) {
+    out.u[static_cast<std::size_t>(h)] = cu0 * l(h, 0) + cu1 * l(h, 1);
+    out.v[static_cast<std::size_t>(h)] = cv0 * l(h, 0) + cv1 * l(h, 1);
+    largest = std::max({largest, magnitude(out.u[static_cast<std::size_t>(h)]), magnitude(out.v[static_cast<std::size_t>(h)])});
+  }
+  if (largest == 0) {
+    why = "the characteristic map vanishes at the patch's corners";
+    return std::nullopt;
+  }
+  // Scaled so that the largest weight is 1 (the length is arbitrary).
+  for (Eigen::Index h = 0; h < m; ++h) out.u[static_cast<std::size_t>(h)] /= largest, out.v[static_cast<std::size_t>(h)] /= largest;
+  Real residual = 0;
+  for (const std::vector<Real>* t : {&out.u, &out.v})
+    for (Eigen::Index c = 0; c < m; ++c) {
+      Real s = -out.eigenvalue * (*t)[static_cast<std::size_t>(c)];
+      for (Eigen::Index h = 0; h < m; ++h) s += (*t)[static_cast<std::size_t>(h)] * a(h, c);
+      residual = std::max(residual, magnitude(s));
+    }
+  out.residual = residual;
+  return out;
+}
+
+}  // namespace sg
