@@ -51,19 +51,21 @@ Point unit(Point a) {
   return a;
 }
 
-// Each vertex of a quad mesh with a face at which it is corner c: the face's
-// (u, v) at that corner.
+// Each vertex of a quad (or triangle) mesh with the faces at which it is a
+// corner: the face's (u, v) at that corner.
 struct Corner {
   std::size_t face;
   ExactParameter at;
 };
-std::vector<std::vector<Corner>> corners_of(const Mesh& m) {
+std::vector<std::vector<Corner>> corners_of(const Mesh& m, bool triangles = false) {
   std::vector<std::vector<Corner>> out(m.vertex_count());
   std::size_t offset = 0;
-  const ExactParameter at[4] = {grid(0, 0, 1), grid(1, 0, 1), grid(1, 1, 1), grid(0, 1, 1)};
+  const ExactParameter quad[4] = {grid(0, 0, 1), grid(1, 0, 1), grid(1, 1, 1), grid(0, 1, 1)};
+  const ExactParameter triangle[3] = {grid(0, 0, 1), grid(1, 0, 1), grid(0, 1, 1)};
   for (std::size_t f = 0; f < m.face_count(); ++f) {
-    if (m.face_sizes[f] == 4)
-      for (std::size_t c = 0; c < 4; ++c) out[static_cast<std::size_t>(m.face_vertices[offset + c])].push_back({f, at[c]});
+    if (m.face_sizes[f] == 4 || (triangles && m.face_sizes[f] == 3))
+      for (std::size_t c = 0; c < static_cast<std::size_t>(m.face_sizes[f]); ++c)
+        out[static_cast<std::size_t>(m.face_vertices[offset + c])].push_back({f, triangles ? triangle[c] : quad[c]});
     offset += static_cast<std::size_t>(m.face_sizes[f]);
   }
   return out;
@@ -75,10 +77,12 @@ std::vector<int> valences(const Mesh& m) {
   return v;
 }
 
-// The normal from the derivatives at distance 2^-k from the corner, along the diagonal into the face.
-Point nearby_normal(const Surface& s, const Corner& c, int k) {
+// The normal from the derivatives at distance 2^-k from the corner, into the face.
+Point nearby_normal(const Surface& s, const Corner& c, int k, bool triangle = false) {
   const double e = std::ldexp(1.0, -k);
-  const double u = c.at.u.num == 0 ? e : 1 - e, v = c.at.v.num == 0 ? e : 1 - e;
+  double u = c.at.u.num == 0 ? e : 1 - e, v = c.at.v.num == 0 ? e : 1 - e;
+  if (triangle && c.at.u.num == 1) u = 1 - 2 * e, v = e;  // inside u + v <= 1
+  if (triangle && c.at.v.num == 1) u = e, v = 1 - 2 * e;
   return s.derivatives(c.face, u, v).normal();
 }
 
@@ -174,4 +178,51 @@ TEST_CASE("normals at extraordinary vertices: the derivatives' normals converge 
       }
     }
   }
+}
+
+TEST_CASE("Loop normals at extraordinary vertices equal OpenSubdiv's exact limit tangents; sqrt(3)'s agree round each vertex",
+          "[runtime][derivatives][opensubdiv]") {
+  const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4", "sgt").string());
+  const auto sqrt3 = Tables::load(generated_table("sqrt3", "--valence 3-8 --n 3", "sgt").string());
+  double worst = 0;
+  std::size_t checked = 0;
+  for (const char* name : {"icosahedron", "tri-torus", "tri-mix"}) {
+    const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
+    const Surface surface = surface_of(loop, mesh);
+    auto refiner = bfr_reference::make_refiner(static_cast<int>(mesh.vertex_count()), mesh.face_sizes, mesh.face_vertices,
+                                               bfr_reference::osd::Sdc::SCHEME_LOOP);
+    std::vector<Primvar> src(mesh.vertex_count()), pos(mesh.vertex_count()), t1(mesh.vertex_count()), t2(mesh.vertex_count());
+    for (std::size_t i = 0; i < mesh.vertex_count(); ++i)
+      for (int k = 0; k < 3; ++k) src[i].p[k] = mesh.positions[i][static_cast<std::size_t>(k)];
+    Primvar *s = src.data(), *p = pos.data(), *a = t1.data(), *b = t2.data();
+    bfr_reference::osd::Far::PrimvarRefinerReal<double>(*refiner).Limit(s, p, a, b);
+    const auto corners = corners_of(mesh, true);
+    const auto valence = valences(mesh);
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+      if (valence[v] == 6 || corners[v].empty()) continue;
+      const Point far_normal = unit(cross({t1[v].p[0], t1[v].p[1], t1[v].p[2]}, {t2[v].p[0], t2[v].p[1], t2[v].p[2]}));
+      for (const Corner& c : corners[v]) {
+        INFO(name << " vertex " << v << " (valence " << valence[v] << "), face " << c.face << " at " << c.at.str());
+        const Point n = surface.normal(c.face, c.at);
+        const double e = 1 - std::abs(dot(n, far_normal));
+        worst = std::max(worst, e);
+        REQUIRE(e < 1e-13);
+        REQUIRE(dot(n, nearby_normal(surface, c, 12, true)) > 0.99);  // the side
+        ++checked;
+      }
+    }
+    // sqrt(3): no derivatives to compare with, but one normal round each vertex, on the outward side.
+    const Surface other = surface_of(sqrt3, mesh);
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+      if (valence[v] == 6 || corners[v].empty()) continue;
+      const Point first = other.normal(corners[v][0].face, corners[v][0].at);
+      for (const Corner& c : corners[v]) {
+        INFO("sqrt3 " << name << " vertex " << v << " (valence " << valence[v] << "), face " << c.face);
+        CHECK(dot(other.normal(c.face, c.at), first) > 1 - 1e-12);
+      }
+      CHECK(dot(first, surface.normal(corners[v][0].face, corners[v][0].at)) > 0.5);  // near Loop's, same side
+    }
+  }
+  CHECK(checked > 20);
+  WARN("Loop: largest 1 - |cos| against Far's limit tangents over " << checked << " corners: " << worst);
 }

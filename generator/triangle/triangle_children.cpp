@@ -4,6 +4,7 @@
 #include <map>
 #include <string>
 #include <tuple>
+#include <type_traits>
 
 #include "algebra/exact_linear_system.hpp"
 #include "base/error.hpp"
@@ -101,6 +102,7 @@ std::vector<TriangleChild> children_in(const TriangleScheme& scheme, int valence
         fine = *p;
       }
       std::vector<std::pair<std::size_t, double>> row;
+      std::vector<std::pair<std::size_t, Real>> real_row;
       for (const auto& [id, w] : refined_point(scheme.refinement, chart, weights, fine)) {
         const auto at = position.find(id);
         if (at == position.end()) {
@@ -110,8 +112,11 @@ std::vector<TriangleChild> children_in(const TriangleScheme& scheme, int valence
         }
         if (w < 0) child.nonnegative = false;
         row.emplace_back(at->second, to_double(w));
+        if constexpr (std::is_same_v<T, Rational>) real_row.emplace_back(at->second, to_real(w));
+        else real_row.emplace_back(at->second, w);
       }
       child.rows.push_back(std::move(row));
+      child.real_rows.push_back(std::move(real_row));
     }
     out.push_back(std::move(child));
   }

@@ -18,6 +18,7 @@
 // parent's layout points.
 #include <vector>
 
+#include "algebra/real.hpp"
 #include "triangle/sector_chart.hpp"
 #include "triangle/triangle_scheme.hpp"
 
@@ -29,6 +30,9 @@ struct TriangleChild {
   int rotation = 0;  // the cell's corner that sits at the kind's corner 0
   // One row per point of the kind's layout: (position in the parent's layout, weight).
   std::vector<std::vector<std::pair<std::size_t, double>>> rows;
+  // The same weights in full precision (exact rationals or 80-digit reals), for
+  // what is computed from them in the generator (the tangent stencils).
+  std::vector<std::vector<std::pair<std::size_t, Real>>> real_rows;
   bool nonnegative = true;  // every weight >= 0
 };
 

@@ -1,6 +1,7 @@
 #include "triangle/triangle_table_binary.hpp"
 
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -8,6 +9,7 @@
 #include "common/byte_writer.hpp"
 #include "stencil_runtime/binary_format.hpp"
 #include "triangle/triangle_children.hpp"
+#include "triangle/triangle_tangents.hpp"
 
 namespace sg {
 namespace fmt = stencil_runtime::format;
@@ -91,6 +93,7 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
     put<double>(out, to_double(residual));
     put<double>(out, to_double(scheme.real_neighbour_weight(v)));
     const std::size_t regions = tables.front().regions.size();
+    std::vector<TriangleChild> region0_children;
     put<std::uint32_t>(out, static_cast<std::uint32_t>(regions));
     for (std::size_t g = 0; g < regions; ++g) {
       std::map<std::tuple<int, long, long>, std::size_t> position;
@@ -125,7 +128,20 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
         for (double x : w) put_scalar(out, x, precision);
       for (const auto& rate : index)
         for (std::uint32_t k : rate) put<std::uint32_t>(out, k);
-      put_children(out, triangle_children(scheme, v, static_cast<int>(g), layouts));
+      std::vector<TriangleChild> children = triangle_children(scheme, v, static_cast<int>(g), layouts);
+      put_children(out, children);
+      if (g == 0) region0_children = std::move(children);
+    }
+    // Version 4: the tangent stencils at the extraordinary vertex, over region 0's layout.
+    std::string why;
+    const std::optional<TangentStencils> tangents =
+        v == 6 ? std::nullopt : triangle_ev_tangents(region0_children, layouts[vi].second.front(), tables.back(), why);
+    put<std::uint8_t>(out, tangents ? 1 : 0);
+    if (tangents) {
+      put<double>(out, to_double(tangents->eigenvalue));
+      put<double>(out, to_double(tangents->residual));
+      for (const Real& w : tangents->u) put<double>(out, to_double(w));
+      for (const Real& w : tangents->v) put<double>(out, to_double(w));
     }
   }
   // The regular patch's polynomial basis, where it is one (Loop).

@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
       "counter-clockwise faces); quad schemes and Loop (not sqrt(3) yet). They are exact to rounding on polynomial\n"
       "schemes (Catmull-Clark, Loop) and, for quad schemes, at exact rationals k/n of a stored rate n. At an\n"
       "extraordinary vertex the surface has no parametric derivative and --derivatives is refused; --normal alone\n"
-      "still answers there for quad schemes (the tables' tangent stencils: subdominant left eigenvectors).\n"
+      "still answers there (the tables' tangent stencils: subdominant left eigenvectors; sqrt(3) only there).\n"
       "The last line then holds `x y z dux duy duz dvx dvy dvz` (and/or `nx ny nz`), the lines before it each\n"
       "vector by name.\n"
       "--second-derivatives adds d2/du2, d2/dudv and d2/dv2 (after du and dv, before the normal): exact to rounding\n"
@@ -146,7 +146,7 @@ int main(int argc, char** argv) {
   Columns columns;
   app.add_flag("--derivatives", columns.derivatives, "also d/du and d/dv (quad schemes)");
   app.add_flag("--second-derivatives", columns.second, "also d2/du2, d2/dudv, d2/dv2 (Catmull-Clark)");
-  app.add_flag("--normal", columns.normal, "also the unit normal (quad schemes and Loop; at an extraordinary vertex quad schemes only)");
+  app.add_flag("--normal", columns.normal, "also the unit normal (quad schemes and Loop; sqrt(3) at extraordinary vertices only)");
   return stencil_tools::run_tool(app, argc, argv, [&] {
     if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive number");
     if (batch.empty() && (face_text.empty() || uv.empty()))

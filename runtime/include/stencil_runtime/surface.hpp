@@ -76,8 +76,8 @@ class Surface {
   Derivatives derivatives(std::size_t face, const ExactParameter& at) const;
   Derivatives derivatives(std::size_t face, double u, double v) const;
   // The unit normal (du x dv normalised, outward for counter-clockwise faces)
-  // wherever derivatives() gives one, and for quad schemes also at an
-  // extraordinary vertex, where there is no parametric derivative: there it is
+  // wherever derivatives() gives one, and also at an extraordinary vertex
+  // (every scheme), where there is no parametric derivative: there it is
   // t_u.P x t_v.P from the tables' tangent stencils (left eigenvectors of the
   // patch's subdivision matrix for its subdominant eigenvalue). Throws
   // EvaluationError where derivatives() does otherwise.

@@ -54,8 +54,8 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
   detail::BinaryReader r(bytes, path);
   detail::check_envelope(bytes, r, format::kTriangleMagic, "binary triangle table");
   const auto version = r.get<std::uint32_t>();
-  if (version != 2 && version != format::kTriangleVersion)
-    r.fail("format version " + std::to_string(version) + " is not supported (expected 2 or " +
+  if (version < 2 || version > format::kTriangleVersion)
+    r.fail("format version " + std::to_string(version) + " is not supported (expected 2 to " +
            std::to_string(format::kTriangleVersion) + "; regenerate the tables with this stencilgen)");
   const auto scalar = r.get<std::uint32_t>();
   if (scalar != 4 && scalar != 8) r.fail("invalid scalar size " + std::to_string(scalar));
@@ -128,6 +128,25 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
       v.regions.push_back(std::move(region));
     }
     if (v.valence == 6 && regions != 1) r.fail("the regular patch (valence 6) has band regions");
+    if (version >= 4) {  // the tangent stencils at the vertex
+      const auto flag = r.get<std::uint8_t>();
+      if (flag > 1 || (flag == 1 && v.valence == 6)) r.fail("valence " + std::to_string(v.valence) + ": invalid tangent flag");
+      if (flag == 1) {
+        const std::size_t points = v.regions.front().layout.size();
+        v.tangent_eigenvalue = r.get<double>();
+        v.tangent_residual = r.get<double>();
+        if (points > left() / 16) r.fail("valence " + std::to_string(v.valence) + ": truncated tangent stencils");
+        for (auto* t : {&v.tangent_u, &v.tangent_v}) {
+          t->resize(points);
+          for (double& x : *t) {
+            x = r.get<double>();
+            if (!std::isfinite(x)) r.fail("valence " + std::to_string(v.valence) + ": a tangent weight is not finite");
+          }
+        }
+        if (!(v.tangent_eigenvalue > 0 && v.tangent_eigenvalue < 1) || !std::isfinite(v.tangent_residual))
+          r.fail("valence " + std::to_string(v.valence) + ": invalid tangent eigenvalue or residual");
+      }
+    }
     t.valences_.push_back(std::move(v));
   }
   if (t.descent_) {
@@ -172,6 +191,16 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
     t.slot_of_rate_[n] = static_cast<int>(k);
   }
   return t;
+}
+
+const std::vector<double>* TriangleTables::tangent_u(int valence) const {
+  const Valence* v = find(valence);
+  return v && !v->tangent_u.empty() ? &v->tangent_u : nullptr;
+}
+
+const std::vector<double>* TriangleTables::tangent_v(int valence) const {
+  const Valence* v = find(valence);
+  return v && !v->tangent_v.empty() ? &v->tangent_v : nullptr;
 }
 
 bool TriangleTables::neighbour_weight(int valence, double& weight) const {

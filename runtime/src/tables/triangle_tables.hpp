@@ -78,6 +78,12 @@ class TriangleTables {
   bool has_descent() const { return descent_; }
   int dilation() const { return refinement_ == TriangleRefinement::Loop ? 2 : 3; }
   const std::vector<TriangleChild>& children(int valence, int region) const { return region_data(valence, region).children; }
+  // The tangent stencils at the extraordinary vertex of valence `valence`'s
+  // patch (region 0): t_u.P x t_v.P is along the normal there, as du x dv next
+  // to it. Null when the tables hold none (before version 4, valence 6, or a
+  // subdominant eigenvalue that is not a real double one).
+  const std::vector<double>* tangent_u(int valence) const;
+  const std::vector<double>* tangent_v(int valence) const;
   // Whether every child weight is >= 0 (with the rules' weights: the limit over a cell lies in the hull of its points).
   bool children_nonnegative() const { return children_nonnegative_; }
   // The regular patch's basis as polynomials (Loop: degree 4), 0 when it is
@@ -116,6 +122,10 @@ class TriangleTables {
     bool exact = true;
     double residual = 0, neighbour = 0;
     std::vector<Region> regions;
+    // The tangent stencils at the extraordinary vertex over region 0's layout
+    // (version 4; empty: none).
+    std::vector<double> tangent_u, tangent_v;
+    double tangent_eigenvalue = 0, tangent_residual = 0;
   };
   const Valence* find(int v) const;
   const Valence& data(int v) const;  // throws EvaluationError

@@ -215,6 +215,35 @@ SecondDerivatives TriangleFamily::second_derivatives(std::size_t face, const Exa
   return second_derivatives(face, at.u.to_double(), at.v.to_double(), prepared);
 }
 
+Point TriangleFamily::normal(std::size_t face, double u, double v, const Point* prepared) const {
+  const auto [pf, q] = patch_parameter(face, Dual{u, 1, 0}, Dual{v, 0, 1});
+  const TrianglePatch& patch = patches_[pf];
+  if (patch.valence == 6 || patch.region != 0 || q[0].value != 0 || q[1].value != 0)
+    return derivatives(face, u, v, prepared).normal();
+  // The extraordinary vertex: t_u.P x t_v.P, turned if the map from the face
+  // to the patch turns the orientation (the Jacobian carried by the duals).
+  const std::vector<double>* tu = tables_.tangent_u(patch.valence);
+  const std::vector<double>* tv = tables_.tangent_v(patch.valence);
+  if (!tu || !tv || tu->size() != patch.points.size())
+    throw EvaluationError("the tables hold no tangent stencils at valence " + std::to_string(patch.valence) +
+                          ", so there is no normal at the extraordinary vertex (.sgt tables from before version 4: "
+                          "regenerate them)");
+  Derivatives tangents;
+  for (std::size_t h = 0; h < patch.points.size(); ++h) {
+    const Point& p = prepared[patch.points[h]];
+    for (std::size_t c = 0; c < 3; ++c) tangents.du[c] += (*tu)[h] * p[c], tangents.dv[c] += (*tv)[h] * p[c];
+  }
+  const double det = q[0].du * q[1].dv - q[0].dv * q[1].du;
+  Point n = tangents.normal();
+  if (det < 0)
+    for (double& x : n) x = -x;
+  return n;
+}
+
+Point TriangleFamily::normal(std::size_t face, const ExactParameter& at, const Point* prepared) const {
+  return normal(face, at.u.to_double(), at.v.to_double(), prepared);
+}
+
 Derivatives TriangleFamily::derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const {
   // The regular patch's polynomial is evaluated in doubles either way.
   return derivatives(face, at.u.to_double(), at.v.to_double(), prepared);

@@ -38,6 +38,11 @@ class TriangleFamily final : public Family {
   // patch) anywhere but an extraordinary vertex; sqrt(3) refused.
   Derivatives derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
   Derivatives derivatives(std::size_t face, double u, double v, const Point* prepared) const override;
+  // The unit normal: the derivatives' where they exist (Loop), and at an
+  // extraordinary vertex from the tables' tangent stencils (version 4 tables;
+  // Loop and sqrt(3)).
+  Point normal(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
+  Point normal(std::size_t face, double u, double v, const Point* prepared) const override;
   // Second derivatives along (u, v), likewise (Loop only).
   SecondDerivatives second_derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
   SecondDerivatives second_derivatives(std::size_t face, double u, double v, const Point* prepared) const override;
