@@ -20,12 +20,15 @@ namespace osd = OpenSubdiv;
 
 inline std::unique_ptr<osd::Far::TopologyRefiner> make_refiner(int num_vertices, const std::vector<int>& sizes,
                                                                const std::vector<int>& indices,
-                                                               osd::Sdc::SchemeType scheme = osd::Sdc::SCHEME_CATMARK) {
+                                                               osd::Sdc::SchemeType scheme = osd::Sdc::SCHEME_CATMARK,
+                                                               const std::vector<int>& holes = {}) {
   osd::Far::TopologyDescriptor desc;
   desc.numVertices = num_vertices;
   desc.numFaces = static_cast<int>(sizes.size());
   desc.numVertsPerFace = sizes.data();
   desc.vertIndicesPerFace = indices.data();
+  desc.numHoles = static_cast<int>(holes.size());
+  desc.holeIndices = holes.empty() ? nullptr : holes.data();
   osd::Sdc::Options sdc;
   sdc.SetVtxBoundaryInterpolation(osd::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
   using Factory = osd::Far::TopologyRefinerFactory<osd::Far::TopologyDescriptor>;
@@ -40,15 +43,19 @@ inline constexpr int kApproxLevel = 10;
 class BfrLimit {
  public:
   BfrLimit(const std::vector<std::array<double, 3>>& positions, const std::vector<int>& sizes,
-           const std::vector<int>& indices, osd::Sdc::SchemeType scheme = osd::Sdc::SCHEME_CATMARK)
+           const std::vector<int>& indices, osd::Sdc::SchemeType scheme = osd::Sdc::SCHEME_CATMARK,
+           const std::vector<int>& holes = {})
       : sizes_(sizes), indices_(indices),
-        refiner_(make_refiner(static_cast<int>(positions.size()), sizes_, indices_, scheme)) {
+        refiner_(make_refiner(static_cast<int>(positions.size()), sizes_, indices_, scheme, holes)) {
     if (!refiner_) throw std::runtime_error("OpenSubdiv refused the mesh");
     osd::Bfr::SurfaceFactory::Options options;
     options.SetApproxLevelSmooth(kApproxLevel).SetApproxLevelSharp(kApproxLevel);
     factory_ = std::make_unique<osd::Bfr::RefinerSurfaceFactory<>>(*refiner_, options);
     for (const auto& p : positions) flat_.insert(flat_.end(), p.begin(), p.end());
   }
+
+  // Whether the face has a limit surface (not a hole).
+  bool has_surface(int face) const { return factory_->FaceHasLimitSurface(face); }
 
   std::array<double, 3> evaluate(int face, double u, double v) {
     osd::Bfr::Surface<double> surface;

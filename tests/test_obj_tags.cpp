@@ -1,7 +1,7 @@
 // OpenSubdiv's OBJ tag lines: read with their line numbers, checked against
 // the mesh, and refused where the runtime cannot honour them (creases,
-// corners, holes, smooth triangles), so that a tagged mesh is never evaluated
-// as if its tags were absent. Tags without effect on a closed smooth mesh
+// corners, smooth triangles), so that a tagged mesh is never evaluated as if
+// its tags were absent (holes are honoured: test_holes.cpp). Tags without effect on a closed smooth mesh
 // leave the surface exactly as the untagged file gives it.
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -107,7 +107,6 @@ TEST_CASE("tags the runtime cannot honour are refused, tags without effect chang
       {"t crease 2/1/0 0 1 2.5\n", "crease of sharpness 2.5 on the edge 0-1"},
       {"t crease 2/1/0 0 1 0.25\n", "crease of sharpness 0.25"},
       {"t corner 1/1/0 3 1\n", "corner of sharpness 1 at vertex 3"},
-      {"t hole 1/0/0 2\n", "hole (face 2)"},
   };
   for (const auto& [tag, message] : refused) {
     INFO(tag);

@@ -105,6 +105,8 @@ int main(int argc, char** argv) {
     const auto [lo, hi] = std::minmax_element(plan.prepared_rates().begin(), plan.prepared_rates().end());
     std::printf("%zu faces (%zu after %s to isolate extraordinary vertices), rates %d..%d\n", mesh.face_count(),
                 topology->prepared_face_count(), topology->preparation().c_str(), *lo, *hi);
+    if (!mesh.tags.holes.empty())
+      std::printf("%zu faces tagged `hole` left out (their rims are the output's boundary)\n", mesh.tags.holes.size());
     Surface surface(topology);
     PolygonSoup soup = plan.make_soup();
     if (frames.empty()) {

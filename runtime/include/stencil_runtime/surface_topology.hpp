@@ -44,15 +44,23 @@ class SurfaceTopology {
   // limits::kMaxRefinementSteps). Throws MeshError naming the face, edge or
   // vertex (numbered from 0 in file order; OBJ's are from 1), with the
   // stencilgen call that adds a missing valence.
+  //
+  // `holes`: faces without a surface (OpenSubdiv's `hole` tag). They still
+  // take part in the subdivision of their neighbours (the surface round a hole
+  // is the one without the tag, as in OpenSubdiv), but evaluating them is an
+  // error naming the face and tessellations leave them out, their rims
+  // becoming boundaries of the output. Throws MeshError for an index out of
+  // range or when every face is a hole.
   static std::shared_ptr<const SurfaceTopology> create(std::shared_ptr<const Tables> tables, std::size_t vertex_count,
-                                                       std::vector<int> face_sizes, std::vector<int> face_vertices);
-  // The same from a mesh read from a file, after checking its tags: the
+                                                       std::vector<int> face_sizes, std::vector<int> face_vertices,
+                                                       const std::vector<int>& holes = {});
+  // The same from a mesh read from a file, with its tags: holes as above; the
   // runtime evaluates smooth closed meshes, so a sharp or semi-sharp crease,
-  // a corner of non-zero sharpness, a hole, or `smoothtriangles` on a quad
-  // scheme's mesh with triangles is refused with a MeshError naming the file
-  // and line of the tag (the smooth surface would be silently wrong).
-  // Tags without effect on a closed smooth mesh (sharpness 0, boundary
-  // interpolation, crease method) are accepted.
+  // a corner of non-zero sharpness, or `smoothtriangles` on a quad scheme's
+  // mesh with triangles is refused with a MeshError naming the file and line
+  // of the tag (the smooth surface would be silently wrong). Tags without
+  // effect on a closed smooth mesh (sharpness 0, boundary interpolation,
+  // crease method) are accepted.
   static std::shared_ptr<const SurfaceTopology> create(std::shared_ptr<const Tables> tables, const Mesh& mesh);
 
   const Tables& tables() const { return *tables_; }
@@ -65,7 +73,13 @@ class SurfaceTopology {
   bool same_connectivity(std::size_t vertex_count, const std::vector<int>& face_sizes,
                          const std::vector<int>& face_vertices) const;
 
-  FaceDomain domain(std::size_t face) const;  // throws EvaluationError for a face that does not exist
+  // Throws EvaluationError for a face that does not exist or is a hole (every
+  // evaluation asks for the domain first).
+  FaceDomain domain(std::size_t face) const;
+  bool is_hole(std::size_t face) const { return face < holes_.size() && holes_[face] != 0; }
+  bool has_holes() const { return !holes_.empty(); }
+  // Per prepared face: whether it covers part of a hole (empty when none is).
+  std::vector<char> prepared_holes() const;
 
   // The preparation: steps applied ("1 subdivision step", "2 double sqrt(3)
   // steps", "the polygon step and 1 subdivision step"), and the prepared mesh's size.
@@ -96,6 +110,7 @@ class SurfaceTopology {
   std::shared_ptr<const Tables> tables_;
   std::size_t vertex_count_ = 0;
   std::vector<int> face_sizes_, face_vertices_;
+  std::vector<char> holes_;  // per face, or empty when the mesh has none
   std::unique_ptr<const Family> family_;
 };
 

@@ -5,7 +5,9 @@
 // the small triangles), each from its exact stencil; polygons between them
 // inside a face, a zipper along every mesh edge and a polygon round every mesh
 // vertex. The result is a closed, consistently oriented 2-manifold for every
-// mix of rates.
+// mix of rates; faces tagged as holes (SurfaceTopology) get no points and no
+// polygons, and their rims become the output's boundary loops, one per hole
+// (the surface stays a consistently oriented 2-manifold with boundary).
 //
 // The plan holds everything that does not depend on positions (rates, counts,
 // connectivity); evaluate() fills the positions of one frame.

@@ -264,6 +264,9 @@ ClosestPointQuery::ClosestPointQuery(const Surface& surface, const ClosestPointO
     throw EvaluationError("closest points: the tolerance must be a finite number >= 0");
   if (!(options.max_distance >= 0)) throw EvaluationError("closest points: the maximum distance must be >= 0");
   if (options.threads < 0 || options.threads > 256) throw EvaluationError("closest points: threads must be 0..256");
+  if (surface.topology().has_holes())
+    throw EvaluationError("closest points: the mesh has faces tagged `hole`; distances to a surface with holes are not "
+                          "supported yet (remove the tags for the closed surface)");
   impl_->topology = surface.shared_topology();
   impl_->family = &impl_->topology->family();
   impl_->options = options;

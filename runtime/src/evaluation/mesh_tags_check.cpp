@@ -36,12 +36,12 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   for (const auto& c : tags.corners)
     if (c.sharpness > 0)
       refuse(mesh, c.line, "a corner of sharpness " + number(c.sharpness) + " at vertex " + std::to_string(c.vertex));
-  if (!tags.holes.empty())
-    refuse(mesh, tags.holes.front().line, "a hole (face " + std::to_string(tags.holes.front().face) + ")");
   if (tags.smooth_triangles && tables->family() == SchemeFamily::Quad &&
       std::find(mesh.face_sizes.begin(), mesh.face_sizes.end(), 3) != mesh.face_sizes.end())
     refuse(mesh, tags.smooth_triangles_line, "OpenSubdiv's smooth triangle rule (`smoothtriangles`)");
-  return create(std::move(tables), mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
+  std::vector<int> holes;
+  for (const auto& h : tags.holes) holes.push_back(h.face);
+  return create(std::move(tables), mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, holes);
 }
 
 }  // namespace stencil_runtime

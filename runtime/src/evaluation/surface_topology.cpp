@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <numeric>
 #include <string>
 #include <type_traits>
@@ -28,7 +29,8 @@ SurfaceTopology::SurfaceTopology() = default;
 SurfaceTopology::~SurfaceTopology() = default;
 
 std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<const Tables> tables, std::size_t vertex_count,
-                                                               std::vector<int> face_sizes, std::vector<int> face_vertices) {
+                                                               std::vector<int> face_sizes, std::vector<int> face_vertices,
+                                                               const std::vector<int>& holes) {
   if (!tables) throw EvaluationError("SurfaceTopology::create needs tables");
   if (face_sizes.empty()) throw MeshError("the mesh has no faces");
   if (vertex_count > limits::kMaxMeshElements || face_sizes.size() > limits::kMaxMeshElements)
@@ -38,7 +40,20 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
     if (face_sizes[f] < 3 || face_sizes[f] > limits::kMaxFaceSize)
       throw MeshError("face " + std::to_string(f) + " has " + std::to_string(face_sizes[f]) + " vertices (faces have 3.." +
                       std::to_string(limits::kMaxFaceSize) + ")" + kNumbering);
+  std::vector<char> hole_flags;
+  if (!holes.empty()) {
+    hole_flags.assign(face_sizes.size(), 0);
+    for (int f : holes) {
+      if (f < 0 || static_cast<std::size_t>(f) >= face_sizes.size())
+        throw MeshError("hole face " + std::to_string(f) + " does not exist (the mesh has " +
+                        std::to_string(face_sizes.size()) + " faces, numbered from 0)");
+      hole_flags[static_cast<std::size_t>(f)] = 1;
+    }
+    if (std::find(hole_flags.begin(), hole_flags.end(), 0) == hole_flags.end())
+      throw MeshError("every face is a hole: the mesh has no surface");
+  }
   std::shared_ptr<SurfaceTopology> t(new SurfaceTopology());
+  t->holes_ = std::move(hole_flags);
   t->tables_ = std::move(tables);
   t->vertex_count_ = vertex_count;
   t->face_sizes_ = std::move(face_sizes);
@@ -62,7 +77,19 @@ FaceDomain SurfaceTopology::domain(std::size_t face) const {
   if (face >= face_count())
     throw EvaluationError("face " + std::to_string(face) + " does not exist (the mesh has " + std::to_string(face_count()) +
                           " faces, numbered from 0)");
+  if (is_hole(face)) throw EvaluationError("face " + std::to_string(face) + " is a hole (tagged `hole` in the mesh): it has no surface");
   return family_->domain(face);
+}
+
+std::vector<char> SurfaceTopology::prepared_holes() const {
+  if (holes_.empty()) return {};
+  std::vector<char> out(family_->hierarchy().prepared_faces(), 0);
+  for (std::size_t f = 0; f < holes_.size(); ++f)
+    if (holes_[f]) {
+      const auto [first, last] = family_->hierarchy().prepared_range(f);
+      std::fill(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(last), 1);
+    }
+  return out;
 }
 
 std::string SurfaceTopology::preparation() const { return family_->preparation(); }

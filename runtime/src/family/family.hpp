@@ -88,6 +88,7 @@ struct FaceParameterReal {
 struct TessellationLayout {
   std::vector<int> rates;
   std::vector<std::size_t> point_offsets;  // size prepared faces + 1
+  std::vector<char> holes;                 // per prepared face (no points, no polygons), or empty
   std::vector<std::array<int, 4>> quads;
   std::vector<std::array<int, 3>> triangles;
 };

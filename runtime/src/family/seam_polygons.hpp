@@ -38,19 +38,26 @@ void zipper(int na, int nb, const EmitQuad& quad, const EmitTri& tri) {
 // the index, among a face's points, of point t (in the edge's direction) of
 // the row along the face's edge k (corner k -> k+1) at rate n; row(k, 0, n) is
 // the point at corner k.
+//
+// Holes (faces without a surface, `holes[f] != 0`): no zipper along their
+// edges, and round a vertex one fan per run of consecutive faces that are not
+// holes (none for a run of one or two faces: the zipper between two faces
+// already ends at their corner points). The rows along a hole's edges, the
+// fans' closing edges and the zippers' end edges then form its rim.
 template <int K>
 class SeamPolygons {
  public:
   using Topology = UniformTopology<K>;
-  SeamPolygons(const Topology& topo, const std::vector<int>& rates)
-      : topo_(topo), rates_(rates), nh_(K * topo.faces()), nv_(topo.vertices()),
+  // `holes`: per face, or empty; kept by reference, like `rates`.
+  SeamPolygons(const Topology& topo, const std::vector<int>& rates, const std::vector<char>& holes)
+      : topo_(topo), rates_(rates), holes_(holes), nh_(K * topo.faces()), nv_(topo.vertices()),
         quad_offset_(nh_ + nv_ + 1, 0), tri_offset_(nh_ + nv_ + 1, 0), vertex_owner_(nv_, UINT32_MAX) {
     for (std::uint32_t h = 0; h < nh_; ++h) {
       const auto v = static_cast<std::size_t>(topo.vertex(Topology::face_of(h), Topology::corner_of(h)));
       if (vertex_owner_[v] == UINT32_MAX) vertex_owner_[v] = h;
       std::size_t q = 0, t = 0;
       const std::uint32_t o = topo.twin(h);
-      if (h < o) {
+      if (h < o && !hole(Topology::face_of(h)) && !hole(Topology::face_of(o))) {
         const auto na = static_cast<std::size_t>(rates[Topology::face_of(h)]);
         const auto nb = static_cast<std::size_t>(rates[Topology::face_of(o)]);
         if (na == nb) q = na - 1;
@@ -59,10 +66,18 @@ class SeamPolygons {
       quad_offset_[h + 1] = quad_offset_[h] + q;
       tri_offset_[h + 1] = tri_offset_[h] + t;
     }
+    std::uint32_t ring[limits::kMaxValence];
     for (std::size_t v = 0; v < nv_; ++v) {
-      const int k = topo.valence(static_cast<int>(v));
-      quad_offset_[nh_ + v + 1] = quad_offset_[nh_ + v] + (k == 4 ? 1 : 0);
-      tri_offset_[nh_ + v + 1] = tri_offset_[nh_ + v] + (k == 4 ? 0 : static_cast<std::size_t>(k - 2));
+      const int k = ring_of(v, ring);
+      std::size_t q = 0, t = 0;
+      if (!ring_has_hole(ring, k)) {
+        q = k == 4 ? 1 : 0;
+        t = k == 4 ? 0 : static_cast<std::size_t>(k - 2);
+      } else {
+        for_each_run(ring, k, [&](const std::uint32_t*, int length) { t += static_cast<std::size_t>(length - 2); });
+      }
+      quad_offset_[nh_ + v + 1] = quad_offset_[nh_ + v] + q;
+      tri_offset_[nh_ + v + 1] = tri_offset_[nh_ + v] + t;
     }
   }
   std::size_t half_edges() const { return nh_; }
@@ -77,6 +92,7 @@ class SeamPolygons {
       const std::uint32_t o = topo_.twin(h);
       if (o < h) continue;
       const std::size_t f = Topology::face_of(h), g = Topology::face_of(o);
+      if (hole(f) || hole(g)) continue;  // the rim: no zipper
       const int kf = Topology::corner_of(h), kg = Topology::corner_of(o);
       const int na = rates_[f], nb = rates_[g];
       const int fa = static_cast<int>(point_offset[f]), gb = static_cast<int>(point_offset[g]);
@@ -97,28 +113,69 @@ class SeamPolygons {
   template <class Row>
   void vertices(std::size_t begin, std::size_t end, const std::vector<std::size_t>& point_offset, const Row& row,
                 std::array<int, 4>* quads, std::array<int, 3>* tris) const {
-    int ring[limits::kMaxValence];
+    std::uint32_t halfedges[limits::kMaxValence];
     for (std::size_t v = begin; v != end; ++v) {
-      const std::uint32_t h = vertex_owner_[v];
-      int k = 0;
-      std::uint32_t e = h;
-      do {
+      const int k = ring_of(v, halfedges);
+      auto corner = [&](std::uint32_t e) {
         const std::size_t f = Topology::face_of(e);
-        ring[k++] = static_cast<int>(point_offset[f]) + row(Topology::corner_of(e), 0, rates_[f]);
-        e = topo_.turn_ccw(e);
-      } while (e != h && k < limits::kMaxValence);
-      if (k == 4) {
-        quads[quad_offset_[nh_ + v]] = {ring[0], ring[1], ring[2], ring[3]};
-      } else {
-        std::array<int, 3>* t = tris + tri_offset_[nh_ + v];
-        for (int i = 1; i + 1 < k; ++i) *t++ = {ring[0], ring[i], ring[i + 1]};
+        return static_cast<int>(point_offset[f]) + row(Topology::corner_of(e), 0, rates_[f]);
+      };
+      std::array<int, 3>* t = tris + tri_offset_[nh_ + v];
+      if (!ring_has_hole(halfedges, k)) {
+        int ring[limits::kMaxValence];
+        for (int i = 0; i < k; ++i) ring[i] = corner(halfedges[i]);
+        if (k == 4) quads[quad_offset_[nh_ + v]] = {ring[0], ring[1], ring[2], ring[3]};
+        else
+          for (int i = 1; i + 1 < k; ++i) *t++ = {ring[0], ring[i], ring[i + 1]};
+        continue;
       }
+      for_each_run(halfedges, k, [&](const std::uint32_t* run, int length) {
+        for (int i = 1; i + 1 < length; ++i) *t++ = {corner(run[0]), corner(run[i]), corner(run[i + 1])};
+      });
     }
   }
 
  private:
+  bool hole(std::size_t f) const { return !holes_.empty() && holes_[f] != 0; }
+
+  // The half-edges leaving vertex v, counter-clockwise from its owner; their count.
+  int ring_of(std::size_t v, std::uint32_t* out) const {
+    const std::uint32_t h = vertex_owner_[v];
+    int k = 0;
+    std::uint32_t e = h;
+    do {
+      out[k++] = e;
+      e = topo_.turn_ccw(e);
+    } while (e != h && k < limits::kMaxValence);
+    return k;
+  }
+  bool ring_has_hole(const std::uint32_t* ring, int k) const {
+    for (int i = 0; i < k; ++i)
+      if (hole(Topology::face_of(ring[i]))) return true;
+    return false;
+  }
+  // Each run of at least three consecutive faces that are not holes (the ring
+  // holds one), in counter-clockwise order: emit(first half-edge, length).
+  template <class Emit>
+  void for_each_run(const std::uint32_t* ring, int k, const Emit& emit) const {
+    int start = 0;
+    while (!hole(Topology::face_of(ring[start]))) ++start;  // a hole: runs begin after it
+    std::uint32_t run[limits::kMaxValence];
+    int length = 0;
+    for (int i = 1; i <= k; ++i) {
+      const std::uint32_t e = ring[(start + i) % k];
+      if (!hole(Topology::face_of(e))) {
+        run[length++] = e;
+        continue;
+      }
+      if (length >= 3) emit(run, length);
+      length = 0;
+    }
+  }
+
   const Topology& topo_;
   const std::vector<int>& rates_;
+  const std::vector<char>& holes_;  // per face, or empty
   std::size_t nh_, nv_;
   std::vector<std::size_t> quad_offset_, tri_offset_;  // per half-edge, then per vertex
   std::vector<std::uint32_t> vertex_owner_;

@@ -572,6 +572,7 @@ void QuadFamily::points(const TessellationLayout& layout, std::size_t begin, std
                         std::array<float, 3>* out_all) const {
   thread_local std::vector<Point> rows, local, reflected;
   for (std::size_t f = begin; f != end; ++f) {
+    if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
     const QuadPatch& p = patches_[f];
     const int n = layout.rates[f];
     std::array<float, 3>* out = out_all + layout.point_offsets[f];
@@ -642,6 +643,7 @@ void QuadFamily::normals(const TessellationLayout& layout, std::size_t begin, st
   // as on the face.
   thread_local std::vector<Point> local, rows, slopes;
   for (std::size_t f = begin; f != end; ++f) {
+    if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
     const QuadPatch& p = patches_[f];
     const int n = layout.rates[f];
     std::array<float, 3>* out = out_all + layout.point_offsets[f];

@@ -30,20 +30,22 @@ void QuadFamily::plan(TessellationLayout& layout, const detail::RangeRunner& run
   // then the zippers and vertex polygons.
   std::vector<std::size_t> interior_offset(nf + 1, 0);
   layout.point_offsets.assign(nf + 1, 0);
+  auto hole = [&](std::size_t f) { return !layout.holes.empty() && layout.holes[f] != 0; };
   for (std::size_t f = 0; f < nf; ++f) {
-    const auto n = static_cast<std::size_t>(rates[f]);
+    const auto n = hole(f) ? 0 : static_cast<std::size_t>(rates[f]);
     layout.point_offsets[f + 1] = layout.point_offsets[f] + n * n;
-    interior_offset[f + 1] = interior_offset[f] + (n - 1) * (n - 1);
+    interior_offset[f + 1] = interior_offset[f] + (n == 0 ? 0 : (n - 1) * (n - 1));
   }
   if (layout.point_offsets[nf] > limits::kMaxTessellationPoints)
     throw EvaluationError("the tessellation would have " + std::to_string(layout.point_offsets[nf]) +
                           " points; the limit is " + std::to_string(limits::kMaxTessellationPoints) + " (lower the rates)");
-  const detail::SeamPolygons<4> seams(topology_, rates);
+  const detail::SeamPolygons<4> seams(topology_, rates, layout.holes);
   const std::size_t interior_quads = interior_offset[nf];
   layout.quads.resize(interior_quads + seams.quads());
   layout.triangles.resize(seams.triangles());
   run(nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f != end; ++f) {
+      if (hole(f)) continue;
       const int n = rates[f];
       const int base = static_cast<int>(layout.point_offsets[f]);
       std::array<int, 4>* q = layout.quads.data() + interior_offset[f];

@@ -28,6 +28,7 @@ TessellationPlan::TessellationPlan(std::shared_ptr<const SurfaceTopology> topolo
   const Family& family = topology_->family();
   TessellationLayout& layout = impl_->layout;
   layout.rates = family.hierarchy().prepared_rates(rates);
+  layout.holes = topology_->prepared_holes();
   std::size_t points = 0;
   for (int& r : layout.rates) {
     impl_->largest_wanted = std::max(impl_->largest_wanted, r);

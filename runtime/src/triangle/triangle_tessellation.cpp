@@ -40,22 +40,24 @@ void TriangleFamily::plan(TessellationLayout& layout, const detail::RangeRunner&
   // (3(n-1)); then the zippers and vertex polygons.
   std::vector<std::size_t> face_quads(nf + 1, 0), face_triangles(nf + 1, 0);
   layout.point_offsets.assign(nf + 1, 0);
+  auto hole = [&](std::size_t f) { return !layout.holes.empty() && layout.holes[f] != 0; };
   for (std::size_t f = 0; f < nf; ++f) {
-    const auto n = static_cast<std::size_t>(rates[f]);
+    const auto n = hole(f) ? 0 : static_cast<std::size_t>(rates[f]);  // a hole: no points, no polygons
     layout.point_offsets[f + 1] = layout.point_offsets[f] + n * n;
-    face_quads[f + 1] = face_quads[f] + (n - 1) * (n >= 2 ? n - 2 : 0);
-    face_triangles[f + 1] = face_triangles[f] + 3 * (n - 1);
+    face_quads[f + 1] = face_quads[f] + (n == 0 ? 0 : (n - 1) * (n >= 2 ? n - 2 : 0));
+    face_triangles[f + 1] = face_triangles[f] + (n == 0 ? 0 : 3 * (n - 1));
   }
   if (layout.point_offsets[nf] > limits::kMaxTessellationPoints)
     throw EvaluationError("the tessellation would have " + std::to_string(layout.point_offsets[nf]) +
                           " points; the limit is " + std::to_string(limits::kMaxTessellationPoints) + " (lower the rates)");
-  const detail::SeamPolygons<3> seams(topology_, rates);
+  const detail::SeamPolygons<3> seams(topology_, rates, layout.holes);
   const std::size_t inner_quads = face_quads[nf], inner_triangles = face_triangles[nf];
   layout.quads.resize(inner_quads + seams.quads());
   layout.triangles.resize(inner_triangles + seams.triangles());
   // Faces: the hexagons round interior nodes, the triangles round boundary nodes.
   run(nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f != end; ++f) {
+      if (hole(f)) continue;
       const int n = rates[f];
       const int base = static_cast<int>(layout.point_offsets[f]);
       auto up = [&](int i, int j) { return base + up_centre_index(i, j, n); };
@@ -88,6 +90,7 @@ void TriangleFamily::points(const TessellationLayout& layout, std::size_t begin,
                             std::array<float, 3>* out_all) const {
   thread_local std::vector<Point> local;
   for (std::size_t f = begin; f != end; ++f) {
+    if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
     const TrianglePatch& p = patches_[f];
     const long n = layout.rates[f];
     const std::size_t m = p.points.size();
@@ -115,6 +118,7 @@ void TriangleFamily::normals(const TessellationLayout& layout, std::size_t begin
   const TrianglePatchDescent& descent = checked_descent();
   std::vector<Point> local;
   for (std::size_t f = begin; f != end; ++f) {
+    if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
     const TrianglePatch& p = patches_[f];
     const long n = layout.rates[f];
     std::array<float, 3>* out = out_all + layout.point_offsets[f];
