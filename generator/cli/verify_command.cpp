@@ -1,4 +1,5 @@
-// stencilgen verify TABLE.json...: re-checks curve, quad and triangle tables exactly against their scheme.
+// stencilgen verify TABLE.json...: re-checks curve, quad and triangle tables (and a quad scheme's descent.json)
+// exactly against their scheme.
 #include <iostream>
 
 #include "base/error.hpp"
@@ -9,6 +10,8 @@
 #include "curve/curve_scheme_loader.hpp"
 #include "curve/curve_table_json.hpp"
 #include "curve/curve_table_verify.hpp"
+#include "quad/quad_descent_format.hpp"
+#include "quad/quad_descent_verify.hpp"
 #include "quad/quad_scheme_loader.hpp"
 #include "quad/quad_table_json.hpp"
 #include "quad/quad_table_verify.hpp"
@@ -47,9 +50,19 @@ bool verify_file(const std::string& file, const std::string& scheme_spec, const 
     for (const auto& f : failures) std::cout << file << ": FAIL: " << f << "\n";
     return failures.empty();
   }
+  if (table.format == kQuadDescentFormat) {
+    const QuadScheme scheme = load_quad_scheme(spec, overrides);
+    const auto failures = verify_quad_descent(table, scheme);
+    if (failures.empty())
+      std::cout << file << ": OK (" << scheme.name
+                << " patch subdivision: every matrix equals the re-derived one exactly; the tangent stencils are left "
+                   "eigenvectors of A0 to 1e-30 and equal the recomputed ones to 1e-35)\n";
+    for (const auto& f : failures) std::cout << file << ": FAIL: " << f << "\n";
+    return failures.empty();
+  }
   if (table.format != kCurveTableFormat)
     throw Error(file + ": format: unknown table format '" + excerpt(table.format) + "' (expected " + kCurveTableFormat +
-                ", " + kQuadTableFormat + " or " + kTriangleTableFormat + ")");
+                ", " + kQuadTableFormat + ", " + kQuadDescentFormat + " or " + kTriangleTableFormat + ")");
   const CurveTable curve = curve_table_from_document(table);
   const CurveScheme scheme = load_curve_scheme(spec, overrides);
   const auto failures = verify_curve_table(curve, scheme);

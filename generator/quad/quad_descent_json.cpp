@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/hash.hpp"
+#include "common/parameters_json.hpp"
 
 namespace sg {
 
@@ -29,6 +30,7 @@ std::string quad_descent_to_json(const QuadScheme& scheme, const QuadDescent& d)
   doc["version"] = kQuadDescentVersion;
   doc["scheme"] = scheme.name;
   doc["scheme_hash"] = hex64(scheme.hash);
+  doc["parameters"] = parameters_json<ojson>(scheme.parameters);  // so that `stencilgen verify` re-derives it
   doc["meaning"] =
       "The scheme's own subdivision of a patch, for evaluation at any parameter (docs/runtime.md). mask: the regular "
       "curve's a_i from i = first (p'_k = sum_j a_{k-2j} p_j); polynomial_basis: phi(t - p) on [0,1] for p = -1..2, "

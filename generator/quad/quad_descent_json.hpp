@@ -5,11 +5,9 @@
 #include <string>
 
 #include "quad/quad_descent.hpp"
+#include "quad/quad_descent_format.hpp"
 
 namespace sg {
-
-inline constexpr const char* kQuadDescentFormat = "stencilgen-quad-descent";
-inline constexpr int kQuadDescentVersion = 2;  // 2: tangent stencils at the vertex
 
 std::string quad_descent_to_json(const QuadScheme& scheme, const QuadDescent& descent);
 

@@ -1,0 +1,69 @@
+// `stencilgen verify` on a quad scheme's descent.json: it passes as written,
+// and fails when a subdivision weight or a digit of a tangent stencil is
+// changed (the tangent checks use the file's own exact A0 and a fresh solve).
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli.hpp"
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+namespace {
+
+json read(const fs::path& p) {
+  std::ifstream in(p);
+  return json::parse(in);
+}
+void write(const fs::path& p, const json& j) { std::ofstream(p) << j.dump(); }
+
+}  // namespace
+
+TEST_CASE("stencilgen verify checks descent.json: subdivision matrices exactly, tangent stencils by their eigen-relation",
+          "[verify][derivatives]") {
+  const fs::path dir = scratch_dir("descent-verify");
+  for (const char* scheme : {"catmull-clark", "nonpoly"}) {
+    INFO(scheme);
+    REQUIRE(run_stencilgen(std::string("--scheme ") + scheme + " --valence 3,5 --n 2 -q --out " + dir.string()).status == 0);
+    const fs::path file = dir / scheme / "descent.json";
+    CliResult r = run_stencilgen("verify " + file.string());
+    CHECK(r.status == 0);
+    CHECK_THAT(r.output, Catch::Contains("OK"));
+    const json good = read(file);
+
+    json bad = good;  // one digit of a tangent weight (the 20th significant digit)
+    std::string& w = bad["valences"][0]["tangents"]["u"][1].get_ref<std::string&>();
+    const std::size_t digit = w.find('.') + 19;
+    REQUIRE(digit < w.size());
+    w[digit] = w[digit] == '1' ? '2' : '1';
+    write(dir / "bad.json", bad);
+    r = run_stencilgen("verify " + (dir / "bad.json").string());
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains("tangent stencil u") && Catch::Contains("not a left eigenvector"));
+
+    bad = good;  // the eigenvalue
+    std::string& lambda = bad["valences"][1]["tangents"]["eigenvalue"].get_ref<std::string&>();
+    lambda[lambda.find('.') + 25] = lambda[lambda.find('.') + 25] == '3' ? '4' : '3';
+    write(dir / "bad.json", bad);
+    r = run_stencilgen("verify " + (dir / "bad.json").string());
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains("valence 5: the eigenvalue differs"));
+
+    bad = good;  // a weight of A0
+    bad["valences"][0]["ev_child"][0][0][1] = "1/3";
+    write(dir / "bad.json", bad);
+    r = run_stencilgen("verify " + (dir / "bad.json").string());
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains("valence 3: A0 differs"));
+
+    bad = good;  // tangents removed
+    bad["valences"][0]["tangents"] = nullptr;
+    write(dir / "bad.json", bad);
+    r = run_stencilgen("verify " + (dir / "bad.json").string());
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains("no tangent stencils, but the scheme has them"));
+  }
+  fs::remove_all(dir);
+}
