@@ -21,9 +21,11 @@ inline double point_distance(const Point& a, const Point& b) { return std::hypot
 // Every face of a mesh as a cached Bfr surface with its patch points.
 class BfrOracle {
  public:
-  explicit BfrOracle(const Mesh& mesh, osd::Sdc::SchemeType scheme = osd::Sdc::SCHEME_CATMARK)
+  // `holes`: faces without a surface (Bfr's own hole tags), skipped by distance_to().
+  explicit BfrOracle(const Mesh& mesh, osd::Sdc::SchemeType scheme = osd::Sdc::SCHEME_CATMARK,
+                     const std::vector<int>& holes = {})
       : refiner_(bfr_reference::make_refiner(static_cast<int>(mesh.vertex_count()), mesh.face_sizes, mesh.face_vertices,
-                                             scheme)),
+                                             scheme, holes)),
         triangles_(scheme == osd::Sdc::SCHEME_LOOP) {
     osd::Bfr::SurfaceFactory::Options options;
     options.SetApproxLevelSmooth(bfr_reference::kApproxLevel).SetApproxLevelSharp(bfr_reference::kApproxLevel);
@@ -32,6 +34,7 @@ class BfrOracle {
     for (const Point& p : mesh.positions) flat.insert(flat.end(), p.begin(), p.end());
     faces_.resize(mesh.face_count());
     for (std::size_t f = 0; f < faces_.size(); ++f) {
+      if (!factory.FaceHasLimitSurface(static_cast<int>(f))) continue;  // a hole
       REQUIRE(factory.InitVertexSurface(static_cast<int>(f), &faces_[f].surface));
       faces_[f].patch.resize(static_cast<std::size_t>(faces_[f].surface.GetNumPatchPoints()) * 3);
       faces_[f].surface.PreparePatchPoints(flat.data(), 3, faces_[f].patch.data(), 3);
@@ -49,6 +52,7 @@ class BfrOracle {
     double best = INFINITY;
     constexpr int kSamples = 24;
     for (std::size_t f = 0; f < faces_.size(); ++f) {
+      if (faces_[f].patch.empty()) continue;  // a hole
       std::vector<std::pair<double, std::pair<double, double>>> samples;
       Point p{}, du{}, dv{};
       for (int j = 0; j <= kSamples; ++j)

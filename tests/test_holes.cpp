@@ -12,6 +12,7 @@
 #include <random>
 #include <set>
 
+#include "bfr_distance.hpp"
 #include "bfr_reference.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
@@ -183,7 +184,7 @@ TEST_CASE("holes: tessellations leave them out, with one rim per hole and the Eu
   }
 }
 
-TEST_CASE("holes from OBJ tags: evaluated round, refused in, left out of stenciltess, refused by closest points",
+TEST_CASE("holes from OBJ tags: evaluated round, refused in, left out of stenciltess; stencildist refuses --signed",
           "[runtime][holes][tags]") {
   const fs::path dir = scratch_dir("holes-cli");
   {
@@ -202,13 +203,49 @@ TEST_CASE("holes from OBJ tags: evaluated round, refused in, left out of stencil
   REQUIRE(r.status == 0);
   const Mesh out = read_obj((dir / "t.obj").string());
   CHECK(out.vertex_count() == 5 * 4 * 4);  // five faces of 4 prepared faces at rate 2 (4 / 2; the hole's four left out)
-  const auto topology = SurfaceTopology::create(Tables::load(tables), read_obj(mesh));
-  const Surface surface(topology, read_obj(mesh).positions);
-  CHECK_THROWS_WITH(ClosestPointQuery(surface), Catch::Contains("hole"));
+  std::ofstream(dir / "points.xyz") << "0 0 0\n1 2 3\n";
+  r = run_command(STENCILDIST_EXE, "--tables " + tables + " --mesh " + mesh + " --points " + (dir / "points.xyz").string() + " --signed");
+  CHECK(r.status == 1);
+  CHECK_THAT(r.output, Catch::Contains("--signed needs a closed surface") && Catch::Contains("line 17"));
   CHECK_THROWS_WITH(SurfaceTopology::create(Tables::load(tables), 8, read_obj(mesh).face_sizes, read_obj(mesh).face_vertices,
                                             {0, 1, 2, 3, 4, 5}),
                     Catch::Contains("every face is a hole"));
   CHECK_THROWS_WITH(SurfaceTopology::create(Tables::load(tables), 8, read_obj(mesh).face_sizes, read_obj(mesh).face_vertices, {6}),
                     Catch::Contains("hole face 6 does not exist"));
   fs::remove_all(dir);
+}
+
+TEST_CASE("holes: closest points never land in a hole and equal a Bfr brute force with the same holes",
+          "[runtime][holes][distance][opensubdiv]") {
+  std::mt19937 rng(7);
+  for (const char* name : {"cube", "icosahedron"}) {
+    const bool loop = std::string(name) == "icosahedron";
+    const Mesh mesh = load(name);
+    const std::vector<int> holes = separated_faces(mesh, 3);
+    const auto tables = Tables::load(
+        generated_table(loop ? "loop" : "catmull-clark", "--valence 3-8 --n 4", loop ? "sgt" : "sgs").string());
+    const Surface surface(SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, holes),
+                          mesh.positions);
+    const ClosestPointQuery query(surface);
+    const bfr_reference::BfrOracle oracle(mesh, loop ? bfr_reference::osd::Sdc::SCHEME_LOOP : bfr_reference::osd::Sdc::SCHEME_CATMARK,
+                                          holes);
+    const double size = extent(mesh);
+    std::uniform_real_distribution<double> coordinate(-1.5, 1.5);
+    for (int k = 0; k < 40; ++k) {
+      // Points all round, some just off the surface above a hole (where the closed surface would be nearest).
+      Point q{coordinate(rng), coordinate(rng), coordinate(rng)};
+      if (k % 4 == 0) {
+        const Point on = Surface(SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices),
+                                 mesh.positions)
+                             .evaluate(static_cast<std::size_t>(holes[static_cast<std::size_t>(k / 4) % holes.size()]),
+                                       grid(1, 1, 3));
+        for (int c = 0; c < 3; ++c) q[static_cast<std::size_t>(c)] = on[static_cast<std::size_t>(c)] * 1.05;
+      }
+      INFO(name << " query " << k << ": " << q[0] << " " << q[1] << " " << q[2]);
+      const ClosestPoint ours = query.find(q);
+      REQUIRE(ours.found);
+      CHECK_FALSE(surface.topology().is_hole(ours.face));
+      CHECK(std::abs(ours.distance - oracle.distance_to(q)) < 1e-8 * size);
+    }
+  }
 }

@@ -77,6 +77,9 @@ int main(int argc, char** argv) {
     const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 
     const auto topology = SurfaceTopology::create(tables, mesh);
+    if (signed_distance && topology->has_holes())
+      throw std::runtime_error(mesh_path + ": --signed needs a closed surface, and this mesh has faces tagged `hole` "
+                               "(line " + std::to_string(mesh.tags.holes.front().line) + ")");
     const Surface surface(topology, mesh.positions);
     ClosestPointOptions options;
     options.tolerance = tolerance * diagonal;

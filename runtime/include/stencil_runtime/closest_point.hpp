@@ -7,7 +7,8 @@
 // reported distance may be above the true one. The method is a
 // branch-and-bound over the scheme's own subdivision of each patch, whose
 // control points bound the surface (all weights non-negative), so no part of
-// the surface closer by more than the tolerance can be missed.
+// the surface closer by more than the tolerance can be missed. Faces tagged
+// as holes (SurfaceTopology) have no surface and are never answered.
 #include <cstddef>
 #include <limits>
 #include <memory>
@@ -34,6 +35,8 @@ struct ClosestPoint {
   Point point{0, 0, 0};
   double distance = 0;
   // Signed: negative inside a closed, consistently oriented (outward) surface.
+  // On a surface with holes it is only the side of the nearest point's
+  // tangent plane (there is no inside): stencildist refuses --signed there.
   double signed_distance = 0;
   Point normal{0, 0, 0};  // unit, the surface's orientation (outward for outward-facing faces)
   // The reported distance is at most this much above the true one (the

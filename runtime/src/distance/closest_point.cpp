@@ -79,6 +79,7 @@ struct ClosestPointQuery::Impl {
   std::vector<std::array<float, 6>> boxes;  // per prepared face: its control points' box
   std::vector<AffineEnclosure> enclosures;     // per sub-patch kind (empty where none)
   std::vector<signed char> orientation;      // +1 where patch (x, y) keeps the original face's orientation
+  std::vector<char> holes;                   // per prepared face: part of a hole (no surface), or empty
   Seeds seeds;
   std::unique_ptr<SeedTree> seed_tree;
   EmbreeDevice device;
@@ -100,6 +101,7 @@ struct QueryState {
   FaceSearch* search;
   Point q;
   const FaceHit* best;
+  const std::vector<char>* holes;  // per prepared face, or empty
 };
 
 void face_bounds(const RTCBoundsFunctionArguments* args) {
@@ -114,6 +116,7 @@ void face_bounds(const RTCBoundsFunctionArguments* args) {
 // upper bound, so it does not shrink here).
 bool visit_face(RTCPointQueryFunctionArguments* args) {
   auto* state = static_cast<QueryState*>(args->userPtr);
+  if (!state->holes->empty() && (*state->holes)[args->primID]) return false;  // a hole has no surface
   state->search->add(args->primID, state->q, *state->best);
   return false;
 }
@@ -148,21 +151,26 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
     }
   });
 
-  // Seeds, and each prepared face's orientation against its original face.
+  // Seeds (none on holes), and each prepared face's orientation against its original face.
+  holes = topology->prepared_holes();
+  std::vector<std::size_t> live;
+  for (std::size_t f = 0; f < faces; ++f)
+    if (holes.empty() || !holes[f]) live.push_back(f);
   const std::vector<std::array<double, 2>> seed_at = seed_parameters(roots.empty() ? SubDomain() : roots[0].domain);
   const std::size_t per_face = seed_at.size();
   // Seeds only pick where Gauss-Newton starts (the branch and bound then
   // proves the answer with its own evaluations): where evaluation is
   // approximate (non-polynomial schemes between their grids) a loose bound will do.
   seed_tolerance = std::max(tolerance, 1e-4 * diagonal);
-  seeds.points.assign(faces * per_face, {});
-  seeds.faces.assign(faces * per_face, 0);
-  seeds.at.assign(faces * per_face, {});
+  seeds.points.assign(live.size() * per_face, {});
+  seeds.faces.assign(live.size() * per_face, 0);
+  seeds.at.assign(live.size() * per_face, {});
   orientation.assign(faces, 1);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces, 64), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t f = r.begin(); f < r.end(); ++f) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, live.size(), 64), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t l = r.begin(); l < r.end(); ++l) {
+      const std::size_t f = live[l];
       for (std::size_t s = 0; s < per_face; ++s) {
-        const std::size_t i = per_face * f + s;
+        const std::size_t i = per_face * l + s;
         seeds.points[i] = family->evaluate(roots[f], seed_at[s][0], seed_at[s][1], seed_tolerance).point;
         seeds.faces[i] = f;
         seeds.at[i] = seed_at[s];
@@ -215,7 +223,7 @@ ClosestPoint ClosestPointQuery::Impl::find(const Point& q) const {
 
   // Every face whose control box lies within the best distance is queued
   // (Embree visits the boxes the sphere touches), then searched best first.
-  QueryState state{&search, q, &best};
+  QueryState state{&search, q, &best, &holes};
   RTCPointQuery query;
   query.x = static_cast<float>(q[0]), query.y = static_cast<float>(q[1]), query.z = static_cast<float>(q[2]);
   query.time = 0;
@@ -264,9 +272,6 @@ ClosestPointQuery::ClosestPointQuery(const Surface& surface, const ClosestPointO
     throw EvaluationError("closest points: the tolerance must be a finite number >= 0");
   if (!(options.max_distance >= 0)) throw EvaluationError("closest points: the maximum distance must be >= 0");
   if (options.threads < 0 || options.threads > 256) throw EvaluationError("closest points: threads must be 0..256");
-  if (surface.topology().has_holes())
-    throw EvaluationError("closest points: the mesh has faces tagged `hole`; distances to a surface with holes are not "
-                          "supported yet (remove the tags for the closed surface)");
   impl_->topology = surface.shared_topology();
   impl_->family = &impl_->topology->family();
   impl_->options = options;
