@@ -86,6 +86,21 @@ Point nearby_normal(const Surface& s, const Corner& c, int k, bool triangle = fa
   return s.derivatives(c.face, u, v).normal();
 }
 
+// OpenSubdiv's exact limit tangents at every vertex (Far::PrimvarRefiner::Limit:
+// Sdc's limit masks), as unit normals t1 x t2.
+std::vector<Point> far_limit_normals(const Mesh& mesh, bfr_reference::osd::Sdc::SchemeType scheme) {
+  auto refiner = bfr_reference::make_refiner(static_cast<int>(mesh.vertex_count()), mesh.face_sizes, mesh.face_vertices, scheme);
+  std::vector<Primvar> src(mesh.vertex_count()), pos(mesh.vertex_count()), t1(mesh.vertex_count()), t2(mesh.vertex_count());
+  for (std::size_t i = 0; i < mesh.vertex_count(); ++i)
+    for (int k = 0; k < 3; ++k) src[i].p[k] = mesh.positions[i][static_cast<std::size_t>(k)];
+  Primvar *s = src.data(), *p = pos.data(), *a = t1.data(), *b = t2.data();
+  bfr_reference::osd::Far::PrimvarRefinerReal<double>(*refiner).Limit(s, p, a, b);
+  std::vector<Point> out;
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
+    out.push_back(unit(cross({t1[v].p[0], t1[v].p[1], t1[v].p[2]}, {t2[v].p[0], t2[v].p[1], t2[v].p[2]})));
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("Catmull-Clark normals at extraordinary vertices equal OpenSubdiv's exact limit tangents",
@@ -96,18 +111,12 @@ TEST_CASE("Catmull-Clark normals at extraordinary vertices equal OpenSubdiv's ex
   for (const char* name : kBundled) {
     const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
     const Surface surface = surface_of(tables, mesh);
-    auto refiner = bfr_reference::make_refiner(static_cast<int>(mesh.vertex_count()), mesh.face_sizes, mesh.face_vertices,
-                                               bfr_reference::osd::Sdc::SCHEME_CATMARK);
-    std::vector<Primvar> src(mesh.vertex_count()), pos(mesh.vertex_count()), t1(mesh.vertex_count()), t2(mesh.vertex_count());
-    for (std::size_t i = 0; i < mesh.vertex_count(); ++i)
-      for (int k = 0; k < 3; ++k) src[i].p[k] = mesh.positions[i][static_cast<std::size_t>(k)];
-    Primvar *s = src.data(), *p = pos.data(), *a = t1.data(), *b = t2.data();
-    bfr_reference::osd::Far::PrimvarRefinerReal<double>(*refiner).Limit(s, p, a, b);
+    const std::vector<Point> far = far_limit_normals(mesh, bfr_reference::osd::Sdc::SCHEME_CATMARK);
     const auto corners = corners_of(mesh);
     const auto valence = valences(mesh);
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
       if (valence[v] == 4 || corners[v].empty()) continue;
-      const Point far_normal = unit(cross({t1[v].p[0], t1[v].p[1], t1[v].p[2]}, {t2[v].p[0], t2[v].p[1], t2[v].p[2]}));
+      const Point& far_normal = far[v];
       for (const Corner& c : corners[v]) {
         INFO(name << " vertex " << v << " (valence " << valence[v] << "), face " << c.face << " at " << c.at.str());
         const Point n = surface.normal(c.face, c.at);
@@ -189,18 +198,12 @@ TEST_CASE("Loop normals at extraordinary vertices equal OpenSubdiv's exact limit
   for (const char* name : {"icosahedron", "tri-torus", "tri-mix"}) {
     const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
     const Surface surface = surface_of(loop, mesh);
-    auto refiner = bfr_reference::make_refiner(static_cast<int>(mesh.vertex_count()), mesh.face_sizes, mesh.face_vertices,
-                                               bfr_reference::osd::Sdc::SCHEME_LOOP);
-    std::vector<Primvar> src(mesh.vertex_count()), pos(mesh.vertex_count()), t1(mesh.vertex_count()), t2(mesh.vertex_count());
-    for (std::size_t i = 0; i < mesh.vertex_count(); ++i)
-      for (int k = 0; k < 3; ++k) src[i].p[k] = mesh.positions[i][static_cast<std::size_t>(k)];
-    Primvar *s = src.data(), *p = pos.data(), *a = t1.data(), *b = t2.data();
-    bfr_reference::osd::Far::PrimvarRefinerReal<double>(*refiner).Limit(s, p, a, b);
+    const std::vector<Point> far = far_limit_normals(mesh, bfr_reference::osd::Sdc::SCHEME_LOOP);
     const auto corners = corners_of(mesh, true);
     const auto valence = valences(mesh);
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
       if (valence[v] == 6 || corners[v].empty()) continue;
-      const Point far_normal = unit(cross({t1[v].p[0], t1[v].p[1], t1[v].p[2]}, {t2[v].p[0], t2[v].p[1], t2[v].p[2]}));
+      const Point& far_normal = far[v];
       for (const Corner& c : corners[v]) {
         INFO(name << " vertex " << v << " (valence " << valence[v] << "), face " << c.face << " at " << c.at.str());
         const Point n = surface.normal(c.face, c.at);

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "line_tokens.hpp"
 #include "obj_tags.hpp"
 #include "stencil_runtime/limits.hpp"
 
@@ -17,13 +18,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The next whitespace-separated token of `line` from `pos` (empty at the end).
-std::string_view token(std::string_view line, std::size_t& pos) {
-  while (pos < line.size() && (line[pos] == ' ' || line[pos] == '\t' || line[pos] == '\r')) ++pos;
-  const std::size_t begin = pos;
-  while (pos < line.size() && line[pos] != ' ' && line[pos] != '\t' && line[pos] != '\r') ++pos;
-  return line.substr(begin, pos - begin);
-}
+using detail::next_token;
 
 // One line (without its '\n'); false at the end of the input. Throws via `fail`
 // for a line longer than the limit, before reading it whole.
@@ -63,11 +58,11 @@ Mesh read_obj(const std::string& path) {
   while (next_line(*in.rdbuf(), line, [&](const std::string& what) { ++number; fail(what); })) {
     ++number;
     std::size_t pos = 0;
-    const std::string_view tag = token(line, pos);
+    const std::string_view tag = next_token(line, pos);
     if (tag == "v") {
       Point p{};
       for (int k = 0; k < 3; ++k) {
-        const std::string_view t = token(line, pos);
+        const std::string_view t = next_token(line, pos);
         const auto [end, err] = std::from_chars(t.data(), t.data() + t.size(), p[static_cast<std::size_t>(k)]);
         if (err == std::errc::result_out_of_range)
           fail("coordinate " + std::string(t) + " is not a finite number of magnitude at most 1e37");
@@ -80,7 +75,7 @@ Mesh read_obj(const std::string& path) {
       mesh.positions.push_back(p);
     } else if (tag == "f") {
       int count = 0;
-      for (std::string_view item = token(line, pos); !item.empty(); item = token(line, pos)) {
+      for (std::string_view item = next_token(line, pos); !item.empty(); item = next_token(line, pos)) {
         long long index = 0;
         const auto [end, err] = std::from_chars(item.data(), item.data() + item.size(), index);
         if (err != std::errc() || end == item.data() || (end != item.data() + item.size() && *end != '/'))

@@ -7,18 +7,12 @@
 #include <unordered_set>
 #include <vector>
 
+#include "line_tokens.hpp"
 #include "stencil_runtime/limits.hpp"
 
 namespace stencil_runtime::detail {
 
 namespace {
-
-std::string_view next_token(std::string_view line, std::size_t& pos) {
-  while (pos < line.size() && (line[pos] == ' ' || line[pos] == '\t' || line[pos] == '\r')) ++pos;
-  const std::size_t begin = pos;
-  while (pos < line.size() && line[pos] != ' ' && line[pos] != '\t' && line[pos] != '\r') ++pos;
-  return line.substr(begin, pos - begin);
-}
 
 struct Tag {
   std::string name;
