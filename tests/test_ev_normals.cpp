@@ -101,6 +101,28 @@ std::vector<Point> far_limit_normals(const Mesh& mesh, bfr_reference::osd::Sdc::
   return out;
 }
 
+// Surface::normal at every extraordinary corner against Far's limit tangents:
+// the plane (|n . far| = 1) and the side (the derivatives' normal next to the vertex).
+void check_vertex_normals(const Surface& surface, const Mesh& mesh, const std::string& name, bool triangles, double& worst,
+                          std::size_t& checked) {
+  const std::vector<Point> far =
+      far_limit_normals(mesh, triangles ? bfr_reference::osd::Sdc::SCHEME_LOOP : bfr_reference::osd::Sdc::SCHEME_CATMARK);
+  const auto corners = corners_of(mesh, triangles);
+  const auto valence = valences(mesh);
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    if (valence[v] == (triangles ? 6 : 4) || corners[v].empty()) continue;
+    for (const Corner& c : corners[v]) {
+      INFO(name << " vertex " << v << " (valence " << valence[v] << "), face " << c.face << " at " << c.at.str());
+      const Point n = surface.normal(c.face, c.at);
+      const double e = 1 - std::abs(dot(n, far[v]));
+      worst = std::max(worst, e);
+      REQUIRE(e < 1e-13);
+      REQUIRE(dot(n, nearby_normal(surface, c, 12, triangles)) > 0.99);
+      ++checked;
+    }
+  }
+}
+
 }  // namespace
 
 TEST_CASE("Catmull-Clark normals at extraordinary vertices equal OpenSubdiv's exact limit tangents",
@@ -111,23 +133,7 @@ TEST_CASE("Catmull-Clark normals at extraordinary vertices equal OpenSubdiv's ex
   for (const char* name : kBundled) {
     const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
     const Surface surface = surface_of(tables, mesh);
-    const std::vector<Point> far = far_limit_normals(mesh, bfr_reference::osd::Sdc::SCHEME_CATMARK);
-    const auto corners = corners_of(mesh);
-    const auto valence = valences(mesh);
-    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-      if (valence[v] == 4 || corners[v].empty()) continue;
-      const Point& far_normal = far[v];
-      for (const Corner& c : corners[v]) {
-        INFO(name << " vertex " << v << " (valence " << valence[v] << "), face " << c.face << " at " << c.at.str());
-        const Point n = surface.normal(c.face, c.at);
-        // The plane: |n . far| = 1; the side: the derivatives' normal next to the vertex.
-        const double e = 1 - std::abs(dot(n, far_normal));
-        worst = std::max(worst, e);
-        REQUIRE(e < 1e-13);
-        REQUIRE(dot(n, nearby_normal(surface, c, 12)) > 0.99);
-        ++checked;
-      }
-    }
+    check_vertex_normals(surface, mesh, name, false, worst, checked);
   }
   CHECK(checked > 20);
   WARN("largest 1 - |cos| against Far's limit tangents over " << checked << " corners: " << worst);
@@ -198,22 +204,9 @@ TEST_CASE("Loop normals at extraordinary vertices equal OpenSubdiv's exact limit
   for (const char* name : {"icosahedron", "tri-torus", "tri-mix"}) {
     const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
     const Surface surface = surface_of(loop, mesh);
-    const std::vector<Point> far = far_limit_normals(mesh, bfr_reference::osd::Sdc::SCHEME_LOOP);
+    check_vertex_normals(surface, mesh, name, true, worst, checked);
     const auto corners = corners_of(mesh, true);
     const auto valence = valences(mesh);
-    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-      if (valence[v] == 6 || corners[v].empty()) continue;
-      const Point& far_normal = far[v];
-      for (const Corner& c : corners[v]) {
-        INFO(name << " vertex " << v << " (valence " << valence[v] << "), face " << c.face << " at " << c.at.str());
-        const Point n = surface.normal(c.face, c.at);
-        const double e = 1 - std::abs(dot(n, far_normal));
-        worst = std::max(worst, e);
-        REQUIRE(e < 1e-13);
-        REQUIRE(dot(n, nearby_normal(surface, c, 12, true)) > 0.99);  // the side
-        ++checked;
-      }
-    }
     // sqrt(3): no derivatives to compare with, but one normal round each vertex, on the outward side.
     const Surface other = surface_of(sqrt3, mesh);
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
