@@ -279,8 +279,7 @@ SecondDerivatives TrianglePatchDescent::regular_derivatives(const std::vector<Po
 }
 
 Derivatives TrianglePatchDescent::derivatives(int valence, int region, std::vector<Point>& q, Dual x, Dual y) const {
-  descend_to_regular(valence, region, q, x, y);
-  return regular_derivatives(q, x, y);
+  return second_derivatives(valence, region, q, x, y);  // computed together
 }
 
 SecondDerivatives TrianglePatchDescent::second_derivatives(int valence, int region, std::vector<Point>& q, Dual x, Dual y) const {

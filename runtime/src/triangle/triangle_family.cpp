@@ -194,12 +194,7 @@ Approximation TriangleFamily::evaluate(std::size_t face, double u, double v, dou
 }
 
 Derivatives TriangleFamily::derivatives(std::size_t face, double u, double v, const Point* prepared) const {
-  const TrianglePatchDescent& descent = checked_descent();
-  const auto [pf, q] = patch_parameter(face, Dual{u, 1, 0}, Dual{v, 0, 1});
-  const TrianglePatch& patch = patches_[pf];
-  std::vector<Point> points(patch.points.size());
-  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
-  return descent.derivatives(patch.valence, patch.region, points, q[0], q[1]);
+  return second_derivatives(face, u, v, prepared);  // the regular cell's quartic gives both at once
 }
 
 SecondDerivatives TriangleFamily::second_derivatives(std::size_t face, double u, double v, const Point* prepared) const {
