@@ -458,8 +458,7 @@ Point QuadFamily::normal_any(std::size_t face, P u, P v, const Point* prepared) 
     throw EvaluationError("the tables hold no tangent stencils at valence " + std::to_string(valence) +
                           ", so there is no normal at the extraordinary vertex (exact JSON tables from before descent "
                           "version 2, or a scheme whose subdominant eigenvalue is not a real double one)");
-  Derivatives tangents;
-  tangents.point = descend(face, u, v, 0.0, prepared).point;
+  Derivatives tangents;  // only its du x dv is used
   for (std::size_t h = 0; h < points.size(); ++h)
     for (std::size_t c = 0; c < 3; ++c) tangents.du[c] += d.tangent_u[h] * points[h][c], tangents.dv[c] += d.tangent_v[h] * points[h][c];
   return tangents.normal();
