@@ -51,6 +51,7 @@ def main():
         json_dir = fixtures / "nonpoly-json"
         for sub in ("v3", "v5", "regular"):
             shutil.copytree(t / "small/nonpoly" / sub, json_dir / sub)
+        shutil.copy(t / "small/nonpoly/descent.json", json_dir)  # subdivision and tangent stencils
 
         # Binary tables.
         stencilgen(exe, t / "cc", "--scheme", "catmull-clark", "--valence", "3", "--n", "1-2")
@@ -95,6 +96,11 @@ def main():
         seed("quad_json_regular", "regular-n2-as-n4.json", (json_dir / "regular/n2.json").read_text())
         seed("quad_json_regular", "truncated.json", regular4[: len(regular4) // 2])
         seed("quad_json_regular", "two-files", "@@ regular/n2.json\n" + (json_dir / "regular/n2.json").read_text() + "@@ regular/n4.json\n" + regular4)
+        descent = (json_dir / "descent.json").read_text()
+        seed("quad_json_descent", "descent.json", descent)
+        seed("quad_json_descent", "truncated.json", descent[: len(descent) // 2])
+        seed("quad_json_descent", "version-1.json", descent.replace('"version":2', '"version":1', 1))
+        seed("quad_json_descent", "no-tangents.json", descent.replace('"tangents":{', '"tangents":null,"x":{', 1))
         for name in ("v3/n1.json", "v5/n2.json"):
             seed("surface_table_verify", name.replace("/", "-"), (json_dir / name).read_text())
         seed("surface_table_verify", "v5-n2-wrong-weight.json", v5n2.replace('"numerators":["45"', '"numerators":["46"', 1))

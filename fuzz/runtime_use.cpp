@@ -94,6 +94,15 @@ void use_surface(const std::shared_ptr<const rt::Tables>& tables, const rt::Mesh
         } catch (const rt::EvaluationError&) {
         }
       }
+    // Normals at the corners: at an extraordinary vertex from the tables'
+    // tangent stencils (refused, with the reason, where they hold none).
+    for (std::size_t f = 0; f < faces; ++f) {
+      if (!budget.take(200)) return;
+      try {
+        surface.normal(f, rt::ExactParameter{{0, 1}, {0, 1}});
+      } catch (const rt::EvaluationError&) {
+      }
+    }
   } catch (const rt::MeshError&) {
   }
 }
