@@ -55,6 +55,7 @@ def main():
 
         # Binary tables.
         stencilgen(exe, t / "cc", "--scheme", "catmull-clark", "--valence", "3", "--n", "1-2")
+        stencilgen(exe, t / "stored", "--scheme", "nonpoly", "--valence", "3", "--n", "1-2", "--binary-layout", "stored")
         stencilgen(exe, t / "single", "--scheme", "nonpoly", "--valence", "5", "--n", "2", "--binary-precision", "single")
         stencilgen(exe, t / "small", "--scheme", "loop", "--valence", "3,5", "--n", "1-2")
         stencilgen(exe, t / "small", "--scheme", "sqrt3", "--valence", "3", "--n", "1")
@@ -64,6 +65,7 @@ def main():
         seed("sgs_tables", "catmull-clark-v3-n1-2.sgs", (t / "cc/catmull-clark/catmull-clark.sgs").read_bytes())
         seed("sgs_tables", "nonpoly-v5-n2-single.sgs", (t / "single/nonpoly/nonpoly.sgs").read_bytes())
         seed("sgs_tables", "truncated.sgs", truncated(sgs))
+        seed("sgs_tables", "nonpoly-v3-n1-2-stored.sgs", (t / "stored/nonpoly/nonpoly.sgs").read_bytes())
         sgt = (t / "small/loop/loop.sgt").read_bytes()
         seed("sgt_tables", "loop-v3-5-n1-2.sgt", sgt)
         seed("sgt_tables", "sqrt3-v3-n1.sgt", (t / "small/sqrt3/sqrt3.sgt").read_bytes())

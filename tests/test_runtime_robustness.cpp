@@ -55,6 +55,7 @@ TEST_CASE("binary tables with zero rates, or rates, valences and indices out of 
   std::string sgs(format::kSurfaceMagic, 8);
   put<std::uint32_t>(sgs, format::kSurfaceVersion);
   put<std::uint32_t>(sgs, 8);
+  put<std::uint8_t>(sgs, 0);  // stored stencils
   put<std::uint64_t>(sgs, 0x1234);
   put<std::uint32_t>(sgs, 4);
   sgs += "test";
@@ -76,6 +77,44 @@ TEST_CASE("binary tables with zero rates, or rates, valences and indices out of 
                                       " --rate 4 --out " + (dir / "out.ply").string());
   expect_error(r, "holds no rates");
   CHECK_FALSE(fs::exists(dir / "out.ply"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a small .sgs of generated layout may not ask for an expansion beyond the stated limit", "[runtime][robustness]") {
+  const fs::path dir = scratch_dir("robust-expansion");
+  // Valence 3 at rate 4096: a few hundred bytes that would expand into (8193^2) * 14 long doubles.
+  std::string sgs(format::kSurfaceMagic, 8);
+  put<std::uint32_t>(sgs, format::kSurfaceVersion);
+  put<std::uint32_t>(sgs, 8);
+  put<std::uint8_t>(sgs, static_cast<std::uint8_t>(format::SurfaceLayout::Generated));
+  put<std::uint64_t>(sgs, 0x1234);
+  put<std::uint32_t>(sgs, 4);
+  sgs += "test";
+  for (double w : {0.25, 0.375, 0.0625}) put(sgs, w);
+  put<std::uint32_t>(sgs, 1);
+  put<std::uint32_t>(sgs, 4);
+  for (double w : {0.5625, 0.09375, 0.015625}) put(sgs, w);
+  put<std::uint8_t>(sgs, 0);
+  put<std::int32_t>(sgs, -2);
+  put<std::uint32_t>(sgs, 5);
+  for (double a : {0.125, 0.5, 0.75, 0.5, 0.125}) put(sgs, a);
+  put<std::uint8_t>(sgs, 3);
+  put<std::uint32_t>(sgs, 0);
+  put<std::uint32_t>(sgs, 1);  // one rate: 4096
+  put<std::uint32_t>(sgs, 4096);
+  for (int block = 0; block < 2; ++block) {  // no regular values, no derivatives
+    put<std::int32_t>(sgs, 0);
+    put<std::uint32_t>(sgs, 0);
+  }
+  put<std::uint32_t>(sgs, 1);  // one valence: 3, 14 points
+  put<std::uint32_t>(sgs, 3);
+  put<std::uint32_t>(sgs, 14);
+  for (std::uint32_t h = 0; h < 14; ++h) put<std::uint32_t>(sgs, h);
+  for (int h = 0; h < 14 * 8 + 64; ++h) put<std::uint8_t>(sgs, 0);  // padding that is never reached
+  write_file(dir / "bomb.sgs", with_checksum(sgs));
+  CHECK_THROWS_WITH(Tables::load((dir / "bomb.sgs").string()),
+                    Catch::Contains("bomb.sgs") && Catch::Contains("valence 3, rate 4096: too large to expand at load time") &&
+                        Catch::Contains("--binary-layout stored"));
   fs::remove_all(dir);
 }
 

@@ -12,6 +12,7 @@ struct GenerateOptions {
   std::vector<std::string> params;
   std::string route = "both";        // curve schemes: residue, eigen or both
   std::string precision = "double";  // surface schemes: the binary file's scalars
+  std::string layout = "generated";   // quad schemes: stencils generated at load time, or stored
   bool quiet = false;
 };
 

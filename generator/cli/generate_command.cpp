@@ -55,11 +55,16 @@ int generate_quad(const GenerateOptions& o, const std::string& valence_spec) {
                 << format_report(report);
   }
   const auto set = generate_quad_tables(scheme, valences, rates, progress_lines(o.quiet));
-  const std::size_t bytes = write_quad_tables(scheme, set, o.out, binary_precision(o.precision));
+  const BinaryLayout layout = o.layout == "stored" ? BinaryLayout::Stored : BinaryLayout::Generated;
+  if (layout == BinaryLayout::Generated && !generated_layout_fits(set))
+    std::cerr << "stencilgen: note: these rates and valences are too large for the runtime to expand at load time; "
+                 "the .sgs stores every stencil\n";
+  const std::size_t bytes = write_quad_tables(scheme, set, o.out, binary_precision(o.precision), layout);
   std::cout << "wrote exact surface tables for '" << scheme.name << "' (valences " << valence_spec << ", rates "
             << rates.front() << ".." << rates.back() << ", " << rates.size() * valences.size() << " tables) to "
             << (std::filesystem::path(o.out) / scheme.name).string() << " in " << seconds_since(start)
-            << " s; binary " << scheme.name << ".sgs: " << bytes << " bytes (" << o.precision << " precision)\n";
+            << " s; binary " << scheme.name << ".sgs: " << bytes << " bytes (" << o.precision << " precision, "
+            << (layout == BinaryLayout::Generated && generated_layout_fits(set) ? "generated" : "stored") << " stencils)\n";
   return 0;
 }
 

@@ -39,6 +39,11 @@ int run(int argc, char** argv) {
   app.add_option("--valence", gen.valences, "surface schemes: valences, e.g. 3-8, 5 or 3,5,6 (default 3-8)");
   app.add_option("--binary-precision", gen.precision, "surface schemes: scalars of the .sgs/.sgt file, double (default) or single")
       ->check(CLI::IsMember({"double", "single"}));
+  app.add_option("--binary-layout", gen.layout,
+                 "quad schemes: generated (default): the .sgs holds what generates the stencils (patch subdivision, "
+                 "regular values, limit stencil) and the runtime expands them when it loads the file (stored instead "
+                 "where that would exceed the runtime's limit); stored: every stencil (larger file, no work at load)")
+      ->check(CLI::IsMember({"generated", "stored"}));
 
   CLI::App* analyze = app.add_subcommand("analyze", "smoothness analysis of a surface scheme's extraordinary rules");
   std::string analyze_scheme, analyze_valences = "3-16";

@@ -63,14 +63,14 @@ QuadTableSet generate_quad_tables(const QuadScheme& scheme, const std::vector<in
 }
 
 std::size_t write_quad_tables(const QuadScheme& scheme, const QuadTableSet& set,
-                                 const std::filesystem::path& out_dir, BinaryPrecision precision) {
+                                 const std::filesystem::path& out_dir, BinaryPrecision precision, BinaryLayout layout) {
   OutputTransaction tx(out_dir / scheme.name);
   for (std::size_t r = 0; r < set.rates.size(); ++r)
     tx.add("regular/n" + std::to_string(2 * set.rates[r]) + ".json",
            curve_table_to_json(set.regular_tables[r]));
   add_table_files(tx, set.tables, quad_table_to_json);
   tx.add("descent.json", quad_descent_to_json(scheme, *set.descent));
-  std::string binary = quad_tables_to_binary(scheme, set, precision);
+  std::string binary = quad_tables_to_binary(scheme, set, precision, layout);
   const std::size_t size = binary.size();
   tx.add(scheme.name + ".sgs", std::move(binary));
   tx.commit();

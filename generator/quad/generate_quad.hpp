@@ -20,7 +20,7 @@ QuadTableSet generate_quad_tables(const QuadScheme& scheme, const std::vector<in
 // Writes, all or nothing, into OUT/<scheme>/: v<V>/n<N>.json (exact),
 // regular/n<2N>.json (the curve on the grid 2n, exact) and <scheme>.sgs (binary).
 // Returns the size of the binary file in bytes.
-std::size_t write_quad_tables(const QuadScheme& scheme, const QuadTableSet& set,
-                                 const std::filesystem::path& out_dir, BinaryPrecision precision);
+std::size_t write_quad_tables(const QuadScheme& scheme, const QuadTableSet& set, const std::filesystem::path& out_dir,
+                              BinaryPrecision precision, BinaryLayout layout = BinaryLayout::Generated);
 
 }  // namespace sg

@@ -44,10 +44,28 @@ void put_regular_descent(std::string& out, const QuadDescent& d) {
 
 }  // namespace
 
-std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& set, BinaryPrecision precision) {
+bool generated_layout_fits(const QuadTableSet& set) {
+  std::uint64_t total = 0;
+  for (std::size_t vi = 0; vi < set.valences.size(); ++vi) {
+    if (set.valences[vi] == 4) continue;
+    const std::uint64_t points = set.tables[vi].front().points;
+    for (long n : set.rates) {
+      const std::uint64_t grid = fmt::expansion_grid_entries(static_cast<std::uint64_t>(n), points);
+      if (grid > fmt::kMaxExpansionGridEntries) return false;
+      total += grid;
+    }
+  }
+  return total <= fmt::kMaxExpansionEntries;
+}
+
+std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& set, BinaryPrecision precision,
+                                  BinaryLayout layout) {
+  const bool generated = layout == BinaryLayout::Generated && generated_layout_fits(set);
   std::string out(fmt::kSurfaceMagic, sizeof fmt::kSurfaceMagic);
   put<std::uint32_t>(out, fmt::kSurfaceVersion);
   put<std::uint32_t>(out, static_cast<std::uint32_t>(precision));
+  // Version 7: stored stencils or generated ones (binary_format.hpp).
+  put<std::uint8_t>(out, static_cast<std::uint8_t>(generated ? fmt::SurfaceLayout::Generated : fmt::SurfaceLayout::Stored));
   put<std::uint64_t>(out, scheme.hash);
   put<std::uint32_t>(out, static_cast<std::uint32_t>(scheme.name.size()));
   out += scheme.name;
@@ -127,13 +145,21 @@ std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& 
     const std::size_t points = tables.front().points;
     put<std::uint32_t>(out, static_cast<std::uint32_t>(set.valences[vi]));
     put<std::uint32_t>(out, static_cast<std::uint32_t>(points));
-    put<std::uint32_t>(out, static_cast<std::uint32_t>(stencils.size()));
     for (std::size_t h : tables.front().reflection) put<std::uint32_t>(out, static_cast<std::uint32_t>(h));
-    for (const ScaledVector* w : stencils)
-      for (const Integer& x : w->num) put_scalar(out, to_double(Rational(x, w->den)), precision);
-    for (std::size_t r = 0; r < tables.size(); ++r) {
-      for (std::uint32_t k : node_index[r]) put<std::uint32_t>(out, k);
-      for (std::uint32_t k : centre_index[r]) put<std::uint32_t>(out, k);
+    if (generated) {
+      // The limit stencil W(0): the node (0, 0), first of every rate's nodes.
+      const QuadTable::Entry& origin = tables.front().nodes.front();
+      if (origin.i != 0 || origin.j != 0) throw Error("internal: the first node of a quad table is not (0, 0)");
+      const ScaledVector& w = origin.weights;
+      for (const Integer& x : w.num) put_scalar(out, to_double(Rational(x, w.den)), precision);
+    } else {
+      put<std::uint32_t>(out, static_cast<std::uint32_t>(stencils.size()));
+      for (const ScaledVector* w : stencils)
+        for (const Integer& x : w->num) put_scalar(out, to_double(Rational(x, w->den)), precision);
+      for (std::size_t r = 0; r < tables.size(); ++r) {
+        for (std::uint32_t k : node_index[r]) put<std::uint32_t>(out, k);
+        for (std::uint32_t k : centre_index[r]) put<std::uint32_t>(out, k);
+      }
     }
     // The patch's one-step subdivision: A0 (2V+8 rows), then the three regular children (16 rows each).
     const auto& descent = *std::find_if(set.descent->valences.begin(), set.descent->valences.end(),

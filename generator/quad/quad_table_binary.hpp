@@ -25,8 +25,19 @@ struct QuadTableSet {
   std::vector<std::vector<QuadTable>> tables;  // [valence][rate]
 };
 
-// One .sgs file: the scheme's subdivision rules (double), regular curve values and, per valence, the stencils of all
-// rates, each distinct parameter point stored once (docs/table-format.md).
-std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& set, BinaryPrecision precision);
+// How the extraordinary patches' stencils go into the .sgs file. Generated:
+// only what generates them (the patch subdivision is always there; the limit
+// stencil is added), for the runtime to expand at load time; a set whose
+// expansion would exceed the runtime's limits (binary_format.hpp) is stored
+// instead. Stored: every stencil, each distinct parameter point once.
+enum class BinaryLayout { Generated, Stored };
+
+// True when the runtime can expand this set's stencils at load time within its limits.
+bool generated_layout_fits(const QuadTableSet& set);
+
+// One .sgs file: the scheme's subdivision rules (double), regular curve values and, per valence, the patch subdivision
+// and either the stencils of all rates or the limit stencil that generates them with it (docs/table-format.md).
+std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& set, BinaryPrecision precision,
+                                  BinaryLayout layout = BinaryLayout::Generated);
 
 }  // namespace sg

@@ -26,7 +26,22 @@ namespace stencil_runtime::format {
 
 // Compact binary surface tables (*.sgs): every valence and rate of one quad scheme.
 inline constexpr char kSurfaceMagic[8] = {'S', 'G', 'S', 'U', 'R', 'F', '\0', '\0'};
-inline constexpr std::uint32_t kSurfaceVersion = 6;  // 2: subdivision rules after the hash; 3: polygon rules; 4: scheme name, patch subdivision; 5: phi' of the regular curve; 6: tangent stencils at the extraordinary vertex
+inline constexpr std::uint32_t kSurfaceVersion = 7;  // 2: subdivision rules after the hash; 3: polygon rules; 4: scheme name, patch subdivision; 5: phi' of the regular curve; 6: tangent stencils at the extraordinary vertex; 7: the layout byte (generated stencils)
+
+// How a .sgs file holds the extraordinary patches' stencils (version 7).
+// Stored: every stencil. Generated: only what generates them (the patch
+// subdivision, the regular curve's values and the limit stencil), expanded by
+// the reader with the patch recursion W(x) = W(2x) A0 (docs/table-format.md).
+enum class SurfaceLayout : std::uint8_t { Stored = 0, Generated = 1 };
+
+// The reader expands a generated valence on the grid 1/(2N) of each rate in
+// long double: (2N+1)^2 * points entries. Both limits bound its memory and
+// time; a writer stores the stencils instead where a set would exceed them.
+inline constexpr std::uint64_t kMaxExpansionGridEntries = std::uint64_t{1} << 22;  // one rate of one valence (64 MiB)
+inline constexpr std::uint64_t kMaxExpansionEntries = std::uint64_t{1} << 26;      // the whole file
+inline constexpr std::uint64_t expansion_grid_entries(std::uint64_t rate, std::uint64_t points) {
+  return (2 * rate + 1) * (2 * rate + 1) * points;  // rate <= 2^12 and points <= 2^8: no overflow
+}
 
 }  // namespace stencil_runtime::format
 

@@ -58,6 +58,9 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
            std::to_string(format::kSurfaceVersion) + "; regenerate the tables with this stencilgen)");
   const auto scalar = r.get<std::uint32_t>();
   if (scalar != 4 && scalar != 8) r.fail("invalid scalar size " + std::to_string(scalar));
+  const auto layout_byte = r.get<std::uint8_t>();
+  if (layout_byte > 1) r.fail("invalid stencil layout " + std::to_string(layout_byte));
+  const bool generated = layout_byte == static_cast<std::uint8_t>(format::SurfaceLayout::Generated);
   QuadTables t;
   t.hash_ = r.get<std::uint64_t>();
   if (expected_hash != 0 && t.hash_ != expected_hash) r.fail("made from a different scheme (hash mismatch)");
@@ -129,6 +132,8 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
   }
   const auto valence_count = r.get<std::uint32_t>();
   if (valence_count > left() / 12) r.fail("truncated valence list");
+  std::vector<std::vector<double>> limits_of_generated;  // per valence: W(0), expanded below
+  std::uint64_t expansion_entries = 0;
   for (std::uint32_t k = 0; k < valence_count; ++k) {
     Valence v;
     const auto valence = r.get<std::uint32_t>();
@@ -139,11 +144,24 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
     v.valence = static_cast<int>(valence);
     v.points = static_cast<int>(points);
     if (v.points != QuadTables::points(v.valence)) r.fail("valence " + std::to_string(valence) + ": invalid point count");
-    const auto stencils = r.get<std::uint32_t>();
     if (points > left() / 4) r.fail("truncated reflection");
     for (std::uint32_t h = 0; h < points; ++h) v.reflection.push_back(r.get<std::uint32_t>());
-    v.weights = read_scalars(r, static_cast<std::size_t>(stencils) * points, scalar, left());
-    for (int n : t.rates_) {
+    if (generated) {
+      // Refused before any work: a small file must not ask for a huge expansion.
+      for (int n : t.rates_) {
+        const std::uint64_t grid = format::expansion_grid_entries(static_cast<std::uint64_t>(n), points);
+        expansion_entries += grid;
+        if (grid > format::kMaxExpansionGridEntries || expansion_entries > format::kMaxExpansionEntries)
+          r.fail("valence " + std::to_string(valence) + ", rate " + std::to_string(n) +
+                 ": too large to expand at load time (the runtime's limit is " +
+                 std::to_string(format::kMaxExpansionGridEntries) + " grid entries per rate and " +
+                 std::to_string(format::kMaxExpansionEntries) + " in all; regenerate with --binary-layout stored)");
+      }
+      limits_of_generated.push_back(read_scalars(r, points, scalar, left()));
+    }
+    const auto stencils = generated ? 0 : r.get<std::uint32_t>();
+    if (!generated) v.weights = read_scalars(r, static_cast<std::size_t>(stencils) * points, scalar, left());
+    for (int n : generated ? std::vector<int>{} : t.rates_) {
       for (int kind = 0; kind < 2; ++kind) {
         const std::size_t count = half_count(kind == 0 ? n + 1 : n);
         if (count > left() / 4) r.fail("truncated index block");
@@ -177,6 +195,15 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
     t.valences_.push_back(std::move(v));
   }
   if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
+  // Generated stencils: the patch recursion from what the file holds (quad_expansion.hpp);
+  // validate() then checks them like stored ones (finite, indices in range).
+  for (std::size_t k = 0; k < limits_of_generated.size(); ++k) {
+    Valence& v = t.valences_[k];
+    ExpandedPatch e = expand_patch(v.valence, t.descent_valences_[k], limits_of_generated[k], t.rates_, t.regular_, t.regular_first_);
+    v.weights = std::move(e.weights);
+    v.nodes = std::move(e.nodes);
+    v.centres = std::move(e.centres);
+  }
   t.validate(path);
   return t;
 }
