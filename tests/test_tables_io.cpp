@@ -1,5 +1,7 @@
 // Exact JSON round trip, and the binary form through the runtime's loader.
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <iterator>
 #include <fstream>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -85,5 +87,50 @@ TEST_CASE("a runtime curve evaluation from binary tables reproduces the exact li
     const double x = static_cast<double>(k) / 5.0;
     CHECK(stencil_runtime::evaluate_uniform_curve(table, points, k) == Approx(std::pow(x, 5)).epsilon(1e-12));
   }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("binary curve tables carry the exact derivatives rounded, as many orders as the JSON") {
+  const fs::path dir = scratch_dir("binary-derivatives");
+  // Orders: bspline3 and dd6 two, fourpoint and nonpoly-curve one, bspline1 and the non-uniform nubspline3 none.
+  for (const std::string name : {"bspline3", "dd6", "fourpoint", "nonpoly-curve", "bspline1", "nubspline3"}) {
+    INFO(name);
+    REQUIRE(run_stencilgen("--scheme " + name + " --n 6 --out " + dir.string() + " -q").status == 0);
+    const fs::path stem = dir / name / "n6";
+    std::ifstream in(stem.string() + ".json");
+    const sg::CurveTable exact = sg::curve_table_from_json(std::string(std::istreambuf_iterator<char>(in), {}), "n6.json");
+    const auto loaded = stencil_runtime::load_curve_table(stem.string() + ".sgc");
+    REQUIRE(loaded.derivative_orders == static_cast<std::uint32_t>(exact.derivative_orders));
+    CHECK(loaded.derivative_orders == (name == "bspline3" || name == "dd6" ? 2u : name == "fourpoint" || name == "nonpoly-curve" ? 1u : 0u));
+    for (std::size_t h = 0; h < exact.functions.size(); ++h)
+      for (int r = 1; r <= exact.derivative_orders; ++r) {
+        const auto& d = exact.functions[h].derivatives[static_cast<std::size_t>(r - 1)];
+        for (long k = -60; k <= 60; ++k) {
+          const auto it = d.find(k);
+          REQUIRE(loaded.functions[h].derivatives[static_cast<std::size_t>(r - 1)].at(k) ==
+                  (it == d.end() ? 0.0 : sg::to_double(it->second)));
+        }
+      }
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a runtime curve derivative from binary tables is the derivative of the reproduced polynomial") {
+  const fs::path dir = scratch_dir("evalcurve-derivative");
+  // DD6 reproduces x^5 from p_j = j^5: the derivatives of its limit are 5 x^4 and 20 x^3.
+  REQUIRE(run_stencilgen("--scheme dd6 --n 5 --out " + dir.string() + " -q").status == 0);
+  const auto table = stencil_runtime::load_curve_table((dir / "dd6" / "n5.sgc").string());
+  std::vector<double> points;
+  for (int j = 0; j <= 20; ++j) points.push_back(std::pow(j, 5));
+  for (long k = 30; k <= 70; ++k) {
+    const double x = static_cast<double>(k) / 5.0;
+    CHECK(stencil_runtime::evaluate_uniform_curve_derivative(table, points, k, 1) == Approx(5 * std::pow(x, 4)).epsilon(1e-12));
+    CHECK(stencil_runtime::evaluate_uniform_curve_derivative(table, points, k, 2) == Approx(20 * std::pow(x, 3)).epsilon(1e-11));
+  }
+  // The four-point scheme is C1 only: no second derivative.
+  REQUIRE(run_stencilgen("--scheme fourpoint --n 5 --out " + dir.string() + " -q").status == 0);
+  const auto four = stencil_runtime::load_curve_table((dir / "fourpoint" / "n5.sgc").string());
+  CHECK_THROWS_WITH(stencil_runtime::evaluate_uniform_curve_derivative(four, points, 40, 2),
+                    Catch::Contains("derivatives of order 1..1 only, not 2"));
   fs::remove_all(dir);
 }

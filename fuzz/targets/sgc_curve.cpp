@@ -1,6 +1,6 @@
 // Fuzz target: binary curve tables (.sgc, load_curve_table), checksum made
-// valid (sealed_binary.hpp), then a uniform curve evaluated over the grid of
-// eight control points as a caller would.
+// valid (sealed_binary.hpp), then a uniform curve and its derivatives evaluated
+// over the grid of eight control points as a caller would.
 #include <algorithm>
 #include <vector>
 
@@ -17,8 +17,11 @@ void use(const stencil_runtime::CurveTable& table) {
   if (table.functions.size() != 1) return;  // evaluate_uniform_curve is for uniform tables
   const std::vector<double> points{0, 1, 0, -1, 2, 0, 1, 3};
   const std::int64_t n = table.n, reach = std::min<std::int64_t>(8 * n, 4096);  // bounded work
-  for (std::int64_t k = -std::min<std::int64_t>(n, 4096); k <= reach; ++k)
+  for (std::int64_t k = -std::min<std::int64_t>(n, 4096); k <= reach; ++k) {
     stencil_runtime::evaluate_uniform_curve(table, points, k);
+    for (int order = 1; order <= static_cast<int>(table.derivative_orders); ++order)
+      stencil_runtime::evaluate_uniform_curve_derivative(table, points, k, order);
+  }
 }
 
 }  // namespace

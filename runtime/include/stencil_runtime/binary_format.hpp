@@ -6,7 +6,8 @@
 namespace stencil_runtime::format {
 
 inline constexpr char kCurveMagic[8] = {'S', 'G', 'C', 'U', 'R', 'V', 'E', '\0'};
-inline constexpr std::uint32_t kCurveVersion = 1;
+inline constexpr std::uint32_t kCurveVersion = 2;  // 2: derivatives of the scaling functions
+inline constexpr std::uint32_t kMaxCurveDerivativeOrder = 2;
 
 enum class Placement : std::uint8_t { Everywhere = 0, AtMost = 1, AtLeast = 2, Single = 3 };
 

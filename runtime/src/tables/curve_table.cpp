@@ -6,6 +6,28 @@
 
 namespace stencil_runtime {
 
+namespace {
+
+// Grid indices of a real table are small (support times rate); far larger
+// ones would only make index arithmetic overflow.
+constexpr std::int64_t kMaxIndex = std::int64_t{1} << 40;
+
+// first (i64, within +-2^40), count (u32), count finite doubles.
+void read_grid_values(detail::BinaryReader& r, std::size_t file_size, const std::string& what, std::int64_t& first,
+                      std::vector<double>& values) {
+  first = r.get<std::int64_t>();
+  if (first < -kMaxIndex || first > kMaxIndex) r.fail(what + ": first grid index outside +-2^40");
+  const auto size = r.get<std::uint32_t>();
+  if (size > (file_size - r.position()) / 8) r.fail("truncated value block in " + what);
+  values.resize(size);
+  for (auto& v : values) {
+    v = r.get<double>();
+    if (!std::isfinite(v)) r.fail("a value in " + what + " is not finite");
+  }
+}
+
+}  // namespace
+
 CurveTable load_curve_table(const std::string& path, std::uint64_t expected_hash) {
   const std::string bytes = detail::read_binary_file(path);
   detail::BinaryReader r(bytes, path);
@@ -13,7 +35,8 @@ CurveTable load_curve_table(const std::string& path, std::uint64_t expected_hash
   CurveTable t;
   const auto version = r.get<std::uint32_t>();
   if (version != format::kCurveVersion)
-    r.fail("format version " + std::to_string(version) + " is not supported (expected " + std::to_string(format::kCurveVersion) + ")");
+    r.fail("format version " + std::to_string(version) + " is not supported (expected " + std::to_string(format::kCurveVersion) +
+           "; regenerate the tables with this stencilgen)");
   t.arity = r.get<std::uint32_t>();
   t.n = r.get<std::uint32_t>();
   const auto count = r.get<std::uint32_t>();
@@ -22,6 +45,10 @@ CurveTable load_curve_table(const std::string& path, std::uint64_t expected_hash
   if (t.n == 0 || t.n > static_cast<std::uint32_t>(limits::kMaxRate) || (t.arity != 2 && t.arity != 3))
     r.fail("invalid header (n must be 1.." + std::to_string(limits::kMaxRate) + ", arity 2 or 3)");
   if (count == 0 || count > 64) r.fail("invalid function count " + std::to_string(count) + " (1..64)");
+  t.derivative_orders = r.get<std::uint8_t>();
+  if (t.derivative_orders > format::kMaxCurveDerivativeOrder)
+    r.fail("invalid derivative order count " + std::to_string(t.derivative_orders) + " (0.." +
+           std::to_string(format::kMaxCurveDerivativeOrder) + ")");
   for (std::uint32_t i = 0; i < count; ++i) {
     CurveFunction f;
     const auto name_length = r.get<std::uint32_t>();
@@ -31,19 +58,14 @@ CurveTable load_curve_table(const std::string& path, std::uint64_t expected_hash
     if (placement > 3) r.fail("invalid placement code " + std::to_string(placement));
     f.placement = static_cast<format::Placement>(placement);
     f.position = r.get<std::int64_t>();
-    f.first = r.get<std::int64_t>();
-    // Grid indices of a real table are small (support times rate); far larger
-    // ones would only make index arithmetic overflow.
-    constexpr std::int64_t kMaxIndex = std::int64_t{1} << 40;
-    if (f.position < -kMaxIndex || f.position > kMaxIndex || f.first < -kMaxIndex || f.first > kMaxIndex)
-      r.fail("function " + quoted_excerpt(f.name) + ": position or first grid index outside +-2^40");
-    const auto size = r.get<std::uint32_t>();
-    if (size > (bytes.size() - r.position()) / 8) r.fail("truncated value block in function " + quoted_excerpt(f.name));
-    f.values.resize(size);
-    for (auto& v : f.values) {
-      v = r.get<double>();
-      if (!std::isfinite(v)) r.fail("a value of function '" + f.name + "' is not finite");
-    }
+    if (f.position < -kMaxIndex || f.position > kMaxIndex)
+      r.fail("function " + quoted_excerpt(f.name) + ": position outside +-2^40");
+    const std::string what = "function " + quoted_excerpt(f.name);
+    read_grid_values(r, bytes.size(), what, f.first, f.values);
+    f.derivatives.resize(t.derivative_orders);
+    for (std::uint32_t order = 1; order <= t.derivative_orders; ++order)
+      read_grid_values(r, bytes.size(), what + " (derivative " + std::to_string(order) + ")", f.derivatives[order - 1].first,
+                       f.derivatives[order - 1].values);
     t.functions.push_back(std::move(f));
   }
   if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
@@ -58,6 +80,22 @@ double evaluate_uniform_curve(const CurveTable& table, const std::vector<double>
     std::int64_t at = 0;
     if (__builtin_sub_overflow(k, static_cast<std::int64_t>(j) * table.n, &at)) continue;  // beyond every support
     sum += points[j] * phi.at(at);
+  }
+  return sum;
+}
+
+double evaluate_uniform_curve_derivative(const CurveTable& table, const std::vector<double>& points, std::int64_t k, int order) {
+  if (table.functions.size() != 1) throw EvaluationError("evaluate_uniform_curve_derivative needs a uniform (one-function) table");
+  if (order < 1 || order > static_cast<int>(table.derivative_orders))
+    throw EvaluationError("this curve table holds derivatives of order 1.." + std::to_string(table.derivative_orders) +
+                          " only, not " + std::to_string(order) +
+                          " (the scheme is not that smooth, or the table is from a scheme without derivative tables)");
+  const GridValues& d = table.functions.front().derivatives[static_cast<std::size_t>(order - 1)];
+  double sum = 0;
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    std::int64_t at = 0;
+    if (__builtin_sub_overflow(k, static_cast<std::int64_t>(j) * table.n, &at)) continue;  // beyond every support
+    sum += points[j] * d.at(at);
   }
   return sum;
 }
