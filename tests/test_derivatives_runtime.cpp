@@ -230,7 +230,11 @@ TEST_CASE("derivatives are refused where they do not exist or are not exact, wit
   const Mesh cube = load("cube");
   const Surface surface = surface_of(nonpoly, cube);
   CHECK_THROWS_WITH(surface.derivatives(0, grid(0, 0, 1)), Catch::Contains("extraordinary vertex"));
-  CHECK_THROWS_WITH(surface.derivatives(0, 0.3, 0.7), Catch::Contains("not polynomial"));
+  // Any parameter is reached through its orbit under halving, unless the orbit is longer than the stated limit
+  // (the order of 2 modulo 3000017 is 1500008).
+  CHECK_NOTHROW(surface.derivatives(0, 0.3, 0.7));
+  CHECK_THROWS_WITH(surface.derivatives(0, ExactParameter{Fraction::make(1, 3000017), Fraction::make(1, 3)}),
+                    Catch::Contains("orbit under halving is longer than 1048576 steps"));
   CHECK_THROWS_WITH(surface.derivatives(0, grid(1, 2, 1)), Catch::Contains("outside face"));
   CHECK_THROWS_WITH(surface.second_derivatives(0, grid(1, 2, 3)), Catch::Contains("are not, and its tables hold no"));
   const Surface cc = surface_of(Tables::load(tables_for("catmull-clark").string()), cube);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "curve_orbit.hpp"
 #include "family/parameter_ops.hpp"
 
 namespace stencil_runtime {
@@ -200,27 +201,44 @@ void QuadPatchDescent::polynomial_basis(double t, double* w, double* dw, double*
   }
 }
 
-void QuadPatchDescent::regular_basis(const Fraction& t, int n, double* w, double* dw) const {
-  const std::int64_t g = 2 * static_cast<std::int64_t>(n);
-  const std::int64_t a = t.num * (g / t.den);
-  tables_.regular_weights(n, a, w);
-  tables_.regular_derivative_weights(n, a, dw);
+void QuadPatchDescent::regular_basis(const Fraction& t, double* w, double* dw) const {
+  // A stored rate whose grid 1/(2n) holds t: a = t * 2n.
+  auto held = [this](const Fraction& x, double* hw, double* hdw) {
+    for (int n : tables_.rates()) {
+      const std::int64_t g = 2 * static_cast<std::int64_t>(n);
+      if (g % x.den != 0) continue;
+      const std::int64_t a = x.num * (g / x.den);
+      tables_.regular_weights(n, a, hw);
+      tables_.regular_derivative_weights(n, a, hdw);
+      return true;
+    }
+    return false;
+  };
+  curve_basis_by_orbit(half_, t, held, w, dw);
+}
+
+void QuadPatchDescent::regular_basis(double t, double* w, double* dw) const {
+  // The same for a double, which is a dyadic fraction: only the power-of-two
+  // part of a grid's denominator is tested, so that t * p is exact.
+  auto held = [this](double x, double* hw, double* hdw) {
+    for (int n : tables_.rates()) {
+      const std::int64_t g = 2 * static_cast<std::int64_t>(n), p = g & -g;
+      const double scaled = x * static_cast<double>(p);
+      if (scaled != std::floor(scaled)) continue;
+      const std::int64_t a = static_cast<std::int64_t>(scaled) * (g / p);
+      tables_.regular_weights(n, a, hw);
+      tables_.regular_derivative_weights(n, a, hdw);
+      return true;
+    }
+    return false;
+  };
+  curve_basis_by_orbit(half_, t, held, w, dw);
 }
 
 namespace {
 
 bool at_origin(const Fraction& x, const Fraction& y) { return x.num == 0 && y.num == 0; }
 bool at_origin(double x, double y) { return x == 0 && y == 0; }
-
-// A stored rate whose grid 1/(2n) holds t (no parity condition: the regular
-// patch's basis is a product of one-dimensional values); 0 when none does.
-int holding_rate(const QuadTables& t, const Fraction& x, const Fraction& y) {
-  for (int rate : t.rates()) {
-    const std::int64_t g = 2 * static_cast<std::int64_t>(rate);
-    if (g % x.den == 0 && g % y.den == 0) return rate;
-  }
-  return 0;
-}
 
 }  // namespace
 
@@ -270,18 +288,13 @@ PatchDerivatives QuadPatchDescent::derivatives(int valence, std::vector<Point>& 
     polynomial_basis(to_real(x), wx, dx);
     polynomial_basis(to_real(y), wy, dy);
   } else {
-    int n = 0;
-    if constexpr (std::is_same_v<P, Fraction>) n = holding_rate(tables_, x, y);
-    if (n == 0)
-      throw EvaluationError("this scheme's regular patches are not polynomial, so derivatives are exact only at parameters "
-                            "whose descent reaches a stored grid (give exact rationals k/n of a stored rate n)");
+    // Not polynomial: each axis's basis from the stored grids, by the orbit of
+    // its parameter under halving (curve_orbit.hpp), at any parameter.
     if (!tables_.has_regular_derivatives())
       throw EvaluationError("these tables hold no derivative of the regular curve (its curve is not C1, or the tables "
                             "predate derivatives: regenerate them with this stencilgen)");
-    if constexpr (std::is_same_v<P, Fraction>) {
-      regular_basis(x, n, wx, dx);
-      regular_basis(y, n, wy, dy);
-    }
+    regular_basis(x, wx, dx);
+    regular_basis(y, wy, dy);
   }
   return tensor(q, wx, wy, dx, dy, nullptr, nullptr, scale);
 }

@@ -43,10 +43,10 @@ class QuadPatchDescent {
   // each halving doubling the derivatives (no derivative stencils of the
   // extraordinary patch are stored); there the derivatives come from the
   // polynomial basis (Catmull-Clark: exact to rounding) or from the stored
-  // phi and phi' where a rate's grid 1/(2n) holds both coordinates. Throws
-  // EvaluationError at the vertex, and where neither holds (a non-polynomial
-  // regular patch at a parameter between the stored grids, or tables
-  // without phi': a curve that is not C1).
+  // phi and phi', directly where a rate's grid 1/(2n) holds a coordinate and
+  // through its orbit under halving elsewhere (curve_orbit.hpp), so at any
+  // rational or double. Throws EvaluationError at the vertex, for tables
+  // without phi' (a curve that is not C1), and for an orbit beyond the limit.
   template <class P>
   PatchDerivatives derivatives(int valence, std::vector<Point>& points, P x, P y) const;
   // The same with second derivatives, where the regular patch is polynomial
@@ -67,10 +67,11 @@ class QuadPatchDescent {
  private:
   Approximation regular_bound(const std::vector<Point>& q, double x, double y) const;
   Point polynomial(const std::vector<Point>& q, double x, double y) const;
-  // The regular patch's basis along one axis at t, and its derivative: from the
-  // polynomial pieces, or from the stored phi and phi' of a rate whose grid
-  // holds t (a rate n with t on 1/(2n)).
-  void regular_basis(const Fraction& t, int n, double* w, double* dw) const;
+  // The regular patch's basis along one axis at any t in [0, 1], and its
+  // derivative, from the stored phi and phi' (directly where a rate's grid
+  // 1/(2n) holds t, else through t's orbit under halving: curve_orbit.hpp).
+  void regular_basis(const Fraction& t, double* w, double* dw) const;
+  void regular_basis(double t, double* w, double* dw) const;
   void polynomial_basis(double t, double* w, double* dw, double* ddw = nullptr) const;
   static SecondDerivatives tensor(const std::vector<Point>& q, const double* wx, const double* wy, const double* dx,
                                   const double* dy, const double* ddx, const double* ddy, double scale);
