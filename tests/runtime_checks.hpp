@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "stencil_runtime/mesh.hpp"
 
@@ -18,6 +19,13 @@ inline double extent(const stencil_runtime::Mesh& m) {
   for (const auto& p : m.positions)
     for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], p[c]), hi[c] = std::max(hi[c], p[c]);
   return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+// How many faces each vertex is a corner of (its valence, on a closed manifold).
+inline std::vector<int> vertex_valences(const stencil_runtime::Mesh& m) {
+  std::vector<int> v(m.vertex_count(), 0);
+  for (int x : m.face_vertices) ++v[static_cast<std::size_t>(x)];
+  return v;
 }
 
 inline double distance(const std::array<double, 3>& a, const std::array<double, 3>& b) {

@@ -26,13 +26,6 @@ namespace {
 
 const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
 
-double mesh_size(const Mesh& m) {
-  Point lo = m.positions.front(), hi = lo;
-  for (const Point& p : m.positions)
-    for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
 double difference(const Derivatives& a, const Derivatives& b) {
   double d = 0;
   for (std::size_t k = 0; k < 3; ++k)
@@ -52,7 +45,7 @@ TEST_CASE("nonpoly derivatives at rationals no stored rate holds equal the exact
     INFO(name);
     const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
     const Surface ours = surface_of(few, mesh), reference = surface_of(exact, mesh);
-    const double tolerance = 1e-12 * mesh_size(mesh);
+    const double tolerance = 1e-12 * extent(mesh);
     double worst = 0;
     std::size_t checked = 0;
     for (std::size_t f = 0; f < mesh.face_count(); f += (mesh.face_count() > 100 ? 7 : 1))
@@ -83,12 +76,12 @@ TEST_CASE("nonpoly derivatives at doubles equal the exact tables of a rate that 
         const double u = static_cast<double>(i) / 128, v = static_cast<double>(j) / 128;
         worst = std::max(worst, difference(ours.derivatives(f, u, v), reference.derivatives(f, grid(i, j, 128))));
       }
-  CHECK(worst <= 1e-12 * mesh_size(mesh));
+  CHECK(worst <= 1e-12 * extent(mesh));
   // A double with all its digits: the orbit is 52 halvings long, and the
   // derivatives agree with a rational cycle's on either side of it to first order.
   const Derivatives d = ours.derivatives(2, 0.3, 0.7);
   const Derivatives rational = ours.derivatives(2, ExactParameter{Fraction::make(3, 10), Fraction::make(7, 10)});
-  CHECK(difference(d, rational) <= 1e-12 * mesh_size(mesh));
+  CHECK(difference(d, rational) <= 1e-12 * extent(mesh));
 }
 
 TEST_CASE("the regular curve's basis and derivative after halvings and round a cycle equal the exact values there",

@@ -32,11 +32,6 @@ fs::path tables_for(const std::string& scheme) { return generated_table(scheme, 
 Mesh load(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
 
 
-std::vector<int> valences(const Mesh& m) {
-  std::vector<int> v(m.vertex_count(), 0);
-  for (int x : m.face_vertices) ++v[static_cast<std::size_t>(x)];
-  return v;
-}
 
 // The first vertex of each face in face_vertices.
 std::vector<std::size_t> face_starts(const Mesh& m) {
@@ -98,7 +93,7 @@ void check_against_bfr(const std::shared_ptr<const Tables>& tables, const Mesh& 
   const Surface surface = surface_of(tables, mesh);
   bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices);
   const double size = extent(mesh);
-  const auto valence = valences(mesh);
+  const auto valence = vertex_valences(mesh);
   const auto start = face_starts(mesh);
   std::mt19937 rng(20261124u);
   double worst = 0, worst_second = 0, worst_vertex_normal = 0;
@@ -167,7 +162,7 @@ TEST_CASE("nonpoly unit normals agree on both sides of every edge of the bundled
     const Mesh mesh = load(name);
     const Surface surface = surface_of(tables, mesh);
     const QuadTopology topo(Connectivity{mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices});
-    const auto valence = valences(mesh);
+    const auto valence = vertex_valences(mesh);
     const long n = 6;
     auto on_edge = [&](std::size_t f, int c, long t) {  // edge c -> c+1 of face f at t/n from corner c
       const long u[4] = {t, n, n - t, 0}, v[4] = {0, t, n, n - t};

@@ -19,6 +19,7 @@
 #include "bfr_reference.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
+#include "runtime_checks.hpp"
 #include "tables/quad_tables.hpp"
 
 using namespace stencil_runtime;
@@ -71,11 +72,6 @@ std::vector<std::vector<Corner>> corners_of(const Mesh& m, bool triangles = fals
   return out;
 }
 
-std::vector<int> valences(const Mesh& m) {
-  std::vector<int> v(m.vertex_count(), 0);
-  for (int x : m.face_vertices) ++v[static_cast<std::size_t>(x)];
-  return v;
-}
 
 // The normal from the derivatives at distance 2^-k from the corner, into the face.
 Point nearby_normal(const Surface& s, const Corner& c, int k, bool triangle = false) {
@@ -108,7 +104,7 @@ void check_vertex_normals(const Surface& surface, const Mesh& mesh, const std::s
   const std::vector<Point> far =
       far_limit_normals(mesh, triangles ? bfr_reference::osd::Sdc::SCHEME_LOOP : bfr_reference::osd::Sdc::SCHEME_CATMARK);
   const auto corners = corners_of(mesh, triangles);
-  const auto valence = valences(mesh);
+  const auto valence = vertex_valences(mesh);
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
     if (valence[v] == (triangles ? 6 : 4) || corners[v].empty()) continue;
     for (const Corner& c : corners[v]) {
@@ -176,7 +172,7 @@ TEST_CASE("normals at extraordinary vertices: the derivatives' normals converge 
       const Mesh mesh = read_obj((kMeshes / (std::string(name) + ".obj")).string());
       const Surface surface = surface_of(tables, mesh);
       const auto corners = corners_of(mesh);
-      const auto valence = valences(mesh);
+      const auto valence = vertex_valences(mesh);
       for (std::size_t v = 0; v < mesh.vertex_count(); v += 3) {
         if (valence[v] == 4 || corners[v].empty()) continue;
         const Point first = surface.normal(corners[v][0].face, corners[v][0].at);
@@ -206,7 +202,7 @@ TEST_CASE("Loop normals at extraordinary vertices equal OpenSubdiv's exact limit
     const Surface surface = surface_of(loop, mesh);
     check_vertex_normals(surface, mesh, name, true, worst, checked);
     const auto corners = corners_of(mesh, true);
-    const auto valence = valences(mesh);
+    const auto valence = vertex_valences(mesh);
     // sqrt(3): no derivatives to compare with, but one normal round each vertex, on the outward side.
     const Surface other = surface_of(sqrt3, mesh);
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {

@@ -68,9 +68,10 @@ class SeamPolygons {
     }
     std::uint32_t ring[limits::kMaxValence];
     for (std::size_t v = 0; v < nv_; ++v) {
-      const int k = ring_of(v, ring);
+      // Without holes the valence says it all; the ring is walked only to find them.
+      const int k = holes_.empty() ? topo.valence(static_cast<int>(v)) : ring_of(v, ring);
       std::size_t q = 0, t = 0;
-      if (!ring_has_hole(ring, k)) {
+      if (holes_.empty() || !ring_has_hole(ring, k)) {
         q = k == 4 ? 1 : 0;
         t = k == 4 ? 0 : static_cast<std::size_t>(k - 2);
       } else {
