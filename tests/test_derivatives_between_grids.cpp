@@ -49,9 +49,9 @@ TEST_CASE("nonpoly derivatives at rationals no stored rate holds equal the exact
     double worst = 0;
     std::size_t checked = 0;
     for (std::size_t f = 0; f < mesh.face_count(); f += (mesh.face_count() > 100 ? 7 : 1))
-      for (long n : {25L, 27L, 50L})  // 50: one halving before the cycle of 25
+      for (long n : {25L, 27L, 50L})  // 50: an odd k/50 halves once before the cycle of 25
         for (long j = 0; j <= n; j += 3)
-          for (long i = 0; i <= n; i += 2) {
+          for (long i = 0; i <= n; i += (n == 50 ? 1 : 2)) {
             if (corner(i, j, n)) continue;  // an extraordinary vertex has no parametric derivative
             worst = std::max(worst, difference(ours.derivatives(f, grid(i, j, n)), reference.derivatives(f, grid(i, j, n))));
             ++checked;
@@ -63,7 +63,7 @@ TEST_CASE("nonpoly derivatives at rationals no stored rate holds equal the exact
 }
 
 TEST_CASE("nonpoly derivatives at doubles equal the exact tables of a rate that holds them", "[runtime][derivatives]") {
-  // k/128 as a double reaches a stored grid after up to seven halvings; rate 64 holds it at once.
+  // Through Surface, a double k/128 is taken as the fraction it is; rate 64 holds it at once.
   const auto few = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 24", "sgs").string());
   const auto exact = Tables::load(generated_table("nonpoly", "--valence 3,5 --n 64", "sgs").string());
   const Mesh mesh = read_obj((kMeshes / "cube.obj").string());
@@ -115,4 +115,28 @@ TEST_CASE("the regular curve's basis and derivative after halvings and round a c
     }
   INFO("largest difference " << worst);
   CHECK(worst <= 1e-13);
+  // Doubles take their own path (no fractions): k/128 reaches a stored grid after up to seven halvings, and
+  // k/128 + 2^-60 after up to 60; rate 64 holds k/128, and 2^-60 moves a C1 basis by far less than the tolerance.
+  const QuadTables exact64 = QuadTables::load_binary(generated_table("nonpoly", "--valence 3,5 --n 64", "sgs").string());
+  double worst_double = 0;
+  for (long k = 0; k < 128; ++k)
+    for (double nudge : {0.0, std::ldexp(1.0, -60)}) {
+      std::vector<Point> points = q;
+      const Derivatives d = descent.derivatives(4, points, static_cast<double>(k) / 128 + nudge, 0.5);
+      double wx[4], dx[4], wy[4], dy[4];
+      exact64.regular_weights(64, k, wx);
+      exact64.regular_derivative_weights(64, k, dx);
+      exact64.regular_weights(64, 64, wy);
+      exact64.regular_derivative_weights(64, 64, dy);
+      Derivatives e;
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i)
+          for (std::size_t c = 0; c < 3; ++c) {
+            const double p = q[static_cast<std::size_t>(j * 4 + i)][c];
+            e.point[c] += wx[i] * wy[j] * p, e.du[c] += dx[i] * wy[j] * p, e.dv[c] += wx[i] * dy[j] * p;
+          }
+      worst_double = std::max(worst_double, difference(d, e));
+    }
+  INFO("largest difference at doubles " << worst_double);
+  CHECK(worst_double <= 1e-13);
 }

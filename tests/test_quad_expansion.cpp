@@ -80,11 +80,13 @@ TEST_CASE("a .sgs of generated layout answers the exact stencils, and the stored
     REQUIRE(run_stencilgen(common + (dir / "generated").string()).status == 0);
     REQUIRE(run_stencilgen(common + (dir / "stored").string() + " --binary-layout stored").status == 0);
     REQUIRE(run_stencilgen(common + (dir / "single").string() + " --binary-precision single").status == 0);
+    REQUIRE(run_stencilgen(common + (dir / "single-stored").string() + " --binary-precision single --binary-layout stored").status == 0);
     const std::string file = std::string(scheme) + "/" + scheme + ".sgs";
     const QuadTables exact = QuadTables::load_json_directory((dir / "generated" / scheme).string());
     const QuadTables generated = QuadTables::load_binary((dir / "generated" / file).string());
     const QuadTables stored = QuadTables::load_binary((dir / "stored" / file).string());
     const QuadTables single = QuadTables::load_binary((dir / "single" / file).string());
+    const QuadTables single_stored = QuadTables::load_binary((dir / "single-stored" / file).string());
     // Stored weights are the exact ones rounded to nearest: half an ulp of weights below 1.
     CHECK(largest_answer_difference(stored, exact) <= 1.12e-16);
     CHECK(largest_answer_difference(generated, exact) <= 2.3e-16);
@@ -92,6 +94,9 @@ TEST_CASE("a .sgs of generated layout answers the exact stencils, and the stored
     const double s = largest_answer_difference(single, exact);
     CHECK(s <= 3e-7);
     CHECK(s > 1e-12);  // it really is single precision
+    const double ss = largest_answer_difference(single_stored, exact);
+    CHECK(ss <= 6e-8);  // half a float ulp of weights below 1
+    CHECK(ss > 1e-12);
     CHECK(fs::file_size(dir / "stored" / file) > 5 * fs::file_size(dir / "generated" / file));  // 6.6x here, 52x at rates 1..24
     fs::remove_all(dir);
   }

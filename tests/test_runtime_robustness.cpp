@@ -80,13 +80,15 @@ TEST_CASE("binary tables with zero rates, or rates, valences and indices out of 
   fs::remove_all(dir);
 }
 
-TEST_CASE("a small .sgs of generated layout may not ask for an expansion beyond the stated limit", "[runtime][robustness]") {
-  const fs::path dir = scratch_dir("robust-expansion");
-  // Valence 3 at rate 4096: a few hundred bytes that would expand into (8193^2) * 14 long doubles.
+namespace {
+
+// A checksum-less .sgs of the given layout up to its valence count: the cubic
+// B-spline's rules and mask, the rates, and no regular values or derivatives.
+std::string sgs_prefix(format::SurfaceLayout layout, const std::vector<std::uint32_t>& rates) {
   std::string sgs(format::kSurfaceMagic, 8);
   put<std::uint32_t>(sgs, format::kSurfaceVersion);
   put<std::uint32_t>(sgs, 8);
-  put<std::uint8_t>(sgs, static_cast<std::uint8_t>(format::SurfaceLayout::Generated));
+  put<std::uint8_t>(sgs, static_cast<std::uint8_t>(layout));
   put<std::uint64_t>(sgs, 0x1234);
   put<std::uint32_t>(sgs, 4);
   sgs += "test";
@@ -100,21 +102,93 @@ TEST_CASE("a small .sgs of generated layout may not ask for an expansion beyond 
   for (double a : {0.125, 0.5, 0.75, 0.5, 0.125}) put(sgs, a);
   put<std::uint8_t>(sgs, 3);
   put<std::uint32_t>(sgs, 0);
-  put<std::uint32_t>(sgs, 1);  // one rate: 4096
-  put<std::uint32_t>(sgs, 4096);
-  for (int block = 0; block < 2; ++block) {  // no regular values, no derivatives
-    put<std::int32_t>(sgs, 0);
-    put<std::uint32_t>(sgs, 0);
+  put<std::uint32_t>(sgs, static_cast<std::uint32_t>(rates.size()));
+  for (std::uint32_t n : rates) put<std::uint32_t>(sgs, n);
+  for (int block = 0; block < 2; ++block)  // no regular values, no derivatives
+    for (std::size_t k = 0; k < rates.size(); ++k) {
+      put<std::int32_t>(sgs, 0);
+      put<std::uint32_t>(sgs, 0);
+    }
+  return sgs;
+}
+
+// One valence of `points` points: identity reflection, a limit stencil, then
+// A0 and the three regular children with every row dense (all columns), no tangents.
+void put_generated_valence(std::string& sgs, std::uint32_t valence, bool rows) {
+  const std::uint32_t points = 2 * valence + 8;
+  put<std::uint32_t>(sgs, valence);
+  put<std::uint32_t>(sgs, points);
+  for (std::uint32_t h = 0; h < points; ++h) put<std::uint32_t>(sgs, h);
+  for (std::uint32_t h = 0; h < points; ++h) put<double>(sgs, h == 0 ? 1.0 : 0.0);
+  if (!rows) return;
+  put<std::uint8_t>(sgs, 1);
+  for (std::uint32_t row = 0; row < points + 3 * 16; ++row) {
+    put<std::uint32_t>(sgs, points);
+    for (std::uint32_t c = 0; c < points; ++c) {
+      put<std::uint32_t>(sgs, c);
+      put<double>(sgs, 1.0 / points);
+    }
   }
-  put<std::uint32_t>(sgs, 1);  // one valence: 3, 14 points
-  put<std::uint32_t>(sgs, 3);
-  put<std::uint32_t>(sgs, 14);
-  for (std::uint32_t h = 0; h < 14; ++h) put<std::uint32_t>(sgs, h);
-  for (int h = 0; h < 14 * 8 + 64; ++h) put<std::uint8_t>(sgs, 0);  // padding that is never reached
-  write_file(dir / "bomb.sgs", with_checksum(sgs));
+  put<std::uint8_t>(sgs, 0);
+}
+
+}  // namespace
+
+TEST_CASE("a small .sgs of generated layout may not ask for an expansion beyond the stated limits", "[runtime][robustness]") {
+  const fs::path dir = scratch_dir("robust-expansion");
+  // One grid too large: valence 3 at rate 4096 would expand into (8193^2) * 14 long doubles.
+  std::string one = sgs_prefix(format::SurfaceLayout::Generated, {4096});
+  put<std::uint32_t>(one, 1);
+  put_generated_valence(one, 3, false);
+  write_file(dir / "bomb.sgs", with_checksum(one));
   CHECK_THROWS_WITH(Tables::load((dir / "bomb.sgs").string()),
                     Catch::Contains("bomb.sgs") && Catch::Contains("valence 3, rate 4096: too large to expand at load time") &&
                         Catch::Contains("--binary-layout stored"));
+  // Every grid within its limit, but 200 rates together beyond the file's.
+  std::vector<std::uint32_t> rates;
+  for (std::uint32_t n = 1; n <= 200; ++n) rates.push_back(n);
+  std::string many = sgs_prefix(format::SurfaceLayout::Generated, rates);
+  put<std::uint32_t>(many, 1);
+  put_generated_valence(many, 3, false);
+  write_file(dir / "many.sgs", with_checksum(many));
+  CHECK_THROWS_WITH(Tables::load((dir / "many.sgs").string()), Catch::Contains("too large to expand at load time"));
+  // Few entries, but dense rows at valence 64: the multiply-adds exceed their limit.
+  rates.resize(40);
+  std::string dense = sgs_prefix(format::SurfaceLayout::Generated, rates);
+  put<std::uint32_t>(dense, 1);
+  put_generated_valence(dense, 64, true);
+  write_file(dir / "dense.sgs", with_checksum(dense));
+  CHECK_THROWS_WITH(Tables::load((dir / "dense.sgs").string()),
+                    Catch::Contains("valence 64: too much work to expand at load time"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a generated limit stencil that does not sum to 1 is refused at load", "[runtime][robustness]") {
+  const fs::path dir = scratch_dir("robust-sums");
+  REQUIRE(run_stencilgen("--scheme nonpoly --valence 3 --n 1-2 -q --out " + dir.string()).status == 0);
+  const fs::path file = dir / "nonpoly" / "nonpoly.sgs";
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  // The limit stencil (the generated layout's only stored stencil) is the JSON's node (0, 0): find its bytes.
+  const nlohmann::json table = nlohmann::json::parse(std::ifstream(dir / "nonpoly" / "v3" / "n1.json"));
+  const auto& origin = table["nodes"][0];
+  REQUIRE(origin["at"] == nlohmann::json::array({"0", "0"}));
+  std::string limit;
+  const double den = std::stod(origin["denominator"].get<std::string>());
+  for (const auto& num : origin["numerators"]) put<double>(limit, std::stod(num.get<std::string>()) / den);
+  const std::size_t at = bytes.find(limit);
+  REQUIRE(at != std::string::npos);
+  std::string broken = bytes.substr(0, bytes.size() - 8);
+  double w = 0;
+  std::memcpy(&w, broken.data() + at, 8);
+  w += 0.25;
+  std::memcpy(broken.data() + at, &w, 8);
+  write_file(dir / "broken.sgs", with_checksum(broken));
+  CHECK_THROWS_WITH(Tables::load((dir / "broken.sgs").string()), Catch::Contains("broken.sgs") && Catch::Contains("sums to"));
+  REQUIRE_NOTHROW(Tables::load(file.string()));  // the untouched file loads
   fs::remove_all(dir);
 }
 

@@ -42,20 +42,32 @@ void put_regular_descent(std::string& out, const QuadDescent& d) {
   }
 }
 
+std::uint64_t nonzeros(const std::vector<SparseRow>& rows) {
+  std::uint64_t n = 0;
+  for (const SparseRow& r : rows) n += r.size();
+  return n;
+}
+
 }  // namespace
 
 bool generated_layout_fits(const QuadTableSet& set) {
-  std::uint64_t total = 0;
+  std::uint64_t total = 0, work = 0;
   for (std::size_t vi = 0; vi < set.valences.size(); ++vi) {
     if (set.valences[vi] == 4) continue;
     const std::uint64_t points = set.tables[vi].front().points;
+    const auto& d = *std::find_if(set.descent->valences.begin(), set.descent->valences.end(),
+                                  [&](const QuadDescent::Valence& x) { return x.valence == set.valences[vi]; });
+    std::uint64_t densest_child = 0;
+    for (const auto& child : d.subdivision.regular_children) densest_child = std::max(densest_child, nonzeros(child));
+    const std::uint64_t cell_cost = nonzeros(d.subdivision.extraordinary_child) + densest_child;
     for (long n : set.rates) {
       const std::uint64_t grid = fmt::expansion_grid_entries(static_cast<std::uint64_t>(n), points);
       if (grid > fmt::kMaxExpansionGridEntries) return false;
       total += grid;
+      work += fmt::expansion_work(static_cast<std::uint64_t>(n), cell_cost);
     }
   }
-  return total <= fmt::kMaxExpansionEntries;
+  return total <= fmt::kMaxExpansionEntries && work <= fmt::kMaxExpansionWork;
 }
 
 std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& set, BinaryPrecision precision,

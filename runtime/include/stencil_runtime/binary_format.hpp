@@ -36,12 +36,21 @@ inline constexpr std::uint32_t kSurfaceVersion = 7;  // 2: subdivision rules aft
 enum class SurfaceLayout : std::uint8_t { Stored = 0, Generated = 1 };
 
 // The reader expands a generated valence on the grid 1/(2N) of each rate in
-// long double: (2N+1)^2 * points entries. Both limits bound its memory and
-// time; a writer stores the stencils instead where a set would exceed them.
-inline constexpr std::uint64_t kMaxExpansionGridEntries = std::uint64_t{1} << 22;  // one rate of one valence (64 MiB)
-inline constexpr std::uint64_t kMaxExpansionEntries = std::uint64_t{1} << 26;      // the whole file
+// long double: (2N+1)^2 * points entries, each cell one sparse row-vector
+// product with A0 or a regular child. These limits bound its memory (the grid
+// of one rate: 64 MiB; the stencils kept: at most a quarter of all entries,
+// in double) and its time (multiply-adds: cells times the nonzeros of A0 plus
+// those of the densest regular child); a writer stores the stencils instead
+// where a set would exceed them.
+inline constexpr std::uint64_t kMaxExpansionGridEntries = std::uint64_t{1} << 22;  // one rate of one valence
+inline constexpr std::uint64_t kMaxExpansionEntries = std::uint64_t{1} << 24;      // the whole file
+inline constexpr std::uint64_t kMaxExpansionWork = std::uint64_t{1} << 28;         // the whole file
 inline constexpr std::uint64_t expansion_grid_entries(std::uint64_t rate, std::uint64_t points) {
   return (2 * rate + 1) * (2 * rate + 1) * points;  // rate <= 2^12 and points <= 2^8: no overflow
+}
+// `nonzeros`: of A0 plus of the densest regular child (each at most 2^16 here).
+inline constexpr std::uint64_t expansion_work(std::uint64_t rate, std::uint64_t nonzeros) {
+  return (2 * rate + 1) * (2 * rate + 1) * nonzeros;
 }
 
 }  // namespace stencil_runtime::format

@@ -5,7 +5,6 @@
 #include <limits>
 #include <type_traits>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "family/parameter_ops.hpp"
@@ -58,10 +57,23 @@ void solve_cycle(const HalfMatrices& half, const Orbit& orbit, double* w, double
                         " halvings (the scheme is not C1 there)");
 }
 
+// One halving, t -> 2t - c: exact in doubles; for fractions in 128 bits, since
+// 2 num may not fit in 64 although the result (in [0, den]) does.
+double halve(double t, int c) { return scale_minus(t, 2, c); }
+__extension__ typedef __int128 Wide;
+Fraction halve(const Fraction& t, int c) {
+  const Wide num = static_cast<Wide>(t.num) * 2 - static_cast<Wide>(c) * t.den;
+  return Fraction::make(static_cast<std::int64_t>(num), t.den);
+}
+
 template <class P, class Held>
 void follow(const HalfMatrices& half, P t, const Held& held, double* w, double* dw) {
   Orbit orbit;
-  std::unordered_map<std::int64_t, std::size_t> seen;  // numerator -> step, once the denominator is odd
+  // Once the denominator is odd, t -> 2t - c is doubling modulo 1 on the
+  // fractions k/den, a bijection: the orbit is purely periodic from there, so
+  // the first such point is the one it comes back to.
+  bool odd_seen = false;
+  P first_odd{};
   for (std::int64_t step = 0;; ++step) {
     if (held(t, w, dw)) break;
     if (step == kMaxOrbitSteps)
@@ -69,9 +81,9 @@ void follow(const HalfMatrices& half, P t, const Held& held, double* w, double* 
                             " steps (a denominator too large for evaluation between the stored grids)");
     if constexpr (std::is_same_v<P, Fraction>) {
       if ((t.den & 1) != 0) {
-        const auto [it, fresh] = seen.emplace(t.num, orbit.children.size());
-        if (!fresh) {
-          orbit.cycle_start = it->second;
+        if (!odd_seen) {
+          odd_seen = true, first_odd = t, orbit.cycle_start = orbit.children.size();
+        } else if (t == first_odd) {
           orbit.periodic = true;
           solve_cycle(half, orbit, w, dw);
           orbit.children.resize(orbit.cycle_start);  // carry back from the cycle's first point
@@ -81,7 +93,7 @@ void follow(const HalfMatrices& half, P t, const Held& held, double* w, double* 
     }
     const int c = greater(t, 1, 2) ? 1 : 0;
     orbit.children.push_back(c);
-    t = scale_minus(t, 2, c);
+    t = halve(t, c);
   }
   for (std::size_t i = orbit.children.size(); i-- > 0;) carry_back(half, orbit.children[i], w, dw);
 }
@@ -90,8 +102,8 @@ void follow(const HalfMatrices& half, P t, const Held& held, double* w, double* 
 
 void curve_basis_by_orbit(const HalfMatrices& half, const Fraction& t,
                           const std::function<bool(const Fraction&, double*, double*)>& held, double* w, double* dw) {
-  if (t.num < 0 || t.num > t.den) throw EvaluationError("curve parameter " + t.str() + " is outside [0, 1]");
-  follow(half, t, held, w, dw);
+  if (t.den <= 0 || t.num < 0 || t.num > t.den) throw EvaluationError("curve parameter " + t.str() + " is outside [0, 1]");
+  follow(half, Fraction::make(t.num, t.den), held, w, dw);  // the cycle test compares reduced fractions
 }
 
 void curve_basis_by_orbit(const HalfMatrices& half, double t, const std::function<bool(double, double*, double*)>& held,

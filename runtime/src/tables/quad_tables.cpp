@@ -196,7 +196,20 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
   }
   if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
   // Generated stencils: the patch recursion from what the file holds (quad_expansion.hpp);
-  // validate() then checks them like stored ones (finite, indices in range).
+  // validate() then checks them like stored ones (finite, indices in range, sums).
+  // Its time is bounded first, now that the rows' sizes are known.
+  std::uint64_t work = 0;
+  for (std::size_t k = 0; k < limits_of_generated.size(); ++k) {
+    const QuadDescent::Valence& d = t.descent_valences_[k];
+    std::uint64_t densest_child = 0;
+    for (const auto& child : d.regular_children) densest_child = std::max<std::uint64_t>(densest_child, child.weights.size());
+    for (int n : t.rates_) {
+      work += format::expansion_work(static_cast<std::uint64_t>(n), d.ev_child.weights.size() + densest_child);
+      if (work > format::kMaxExpansionWork)
+        r.fail("valence " + std::to_string(t.valences_[k].valence) + ": too much work to expand at load time (more than " +
+               std::to_string(format::kMaxExpansionWork) + " multiply-adds, the runtime's limit; regenerate with --binary-layout stored)");
+    }
+  }
   for (std::size_t k = 0; k < limits_of_generated.size(); ++k) {
     Valence& v = t.valences_[k];
     ExpandedPatch e = expand_patch(v.valence, t.descent_valences_[k], limits_of_generated[k], t.rates_, t.regular_, t.regular_first_);
@@ -272,6 +285,13 @@ void QuadTables::validate(const std::string& origin) {
     }
     if (v.weights.size() % static_cast<std::size_t>(v.points) != 0) fail(where + ": the weights do not fill whole stencils");
     if (!finite(v.weights)) fail(where + ": a weight is not finite");
+    // Every stencil reproduces constants: its weights sum to 1 (up to the rounding of its scalars).
+    for (std::size_t s = 0; s + static_cast<std::size_t>(v.points) <= v.weights.size(); s += static_cast<std::size_t>(v.points)) {
+      double sum = 0, size = 0;
+      for (int h = 0; h < v.points; ++h) sum += v.weights[s + static_cast<std::size_t>(h)], size += std::fabs(v.weights[s + static_cast<std::size_t>(h)]);
+      if (!(std::fabs(sum - 1) <= 1e-5 * std::max(1.0, size)))
+        fail(where + ": stencil " + std::to_string(s / static_cast<std::size_t>(v.points)) + " sums to " + std::to_string(sum) + ", not 1");
+    }
     const std::size_t stencils = v.weights.size() / static_cast<std::size_t>(v.points);
     if (v.nodes.size() != rates_.size() || v.centres.size() != rates_.size()) fail(where + ": stencil index missing for some rate");
     for (std::size_t s = 0; s < rates_.size(); ++s) {
