@@ -115,7 +115,7 @@ namespace {
 // A scheme without a polynomial basis (no Bfr): distances never above the
 // nearest of dense exact limit points, points on the surface, residuals
 // orthogonal to it inside the face, signs by the centre of the icosahedron.
-void check_against_dense_points(const std::shared_ptr<const Tables>& tables, int dense) {
+void check_against_dense_points(const std::shared_ptr<const Tables>& tables, int dense, bool exact_tangents) {
   const Mesh mesh = read_obj((kMeshes / "icosahedron.obj").string());
   const Surface surface = surface_of(tables, mesh);
   const ClosestPointQuery query(surface);
@@ -165,6 +165,18 @@ void check_against_dense_points(const std::shared_ptr<const Tables>& tables, int
       CHECK(cosine(tu) <= 1e-6);
       CHECK(cosine(tv) <= 1e-6);
       ++orthogonal_checked;
+      // Against the exact tangents at the returned parameters (nonpoly: any parameter, through the orbit
+      // under halving; sqrt(3) has none yet): the residual's component along them. The search stops when
+      // the distance is certified, not at orthogonality, and nonpoly's derivatives are only Hoelder
+      // continuous, so the component does not fall with the parameter error as it would for a polynomial
+      // patch; measured: at most 3.1e-8 of the diagonal (issue 15 asks 1e-9: not met for nonpoly).
+      if (exact_tangents) {
+        const Derivatives d = surface.derivatives(r.face, r.u, r.v);
+        const double along_u = cosine(d.du) * r.distance / diagonal, along_v = cosine(d.dv) * r.distance / diagonal;
+        INFO("tangential residual / diagonal " << along_u << " " << along_v);
+        CHECK(along_u <= 1e-7);
+        CHECK(along_v <= 1e-7);
+      }
     }
     // The icosahedron's limit surface is closed and convex-ish around the origin: signs by a ray to the centre.
     if (distance(q, {0, 0, 0}) < 0.1 * diagonal) CHECK(r.signed_distance < 0);
@@ -177,12 +189,12 @@ void check_against_dense_points(const std::shared_ptr<const Tables>& tables, int
 
 TEST_CASE("nonpoly closest points are never farther than dense exact limit points, and lie on the surface",
           "[runtime][distance]") {
-  check_against_dense_points(Tables::load(generated_table("nonpoly", "--valence 3-8 --n 16", "sgs").string()), 16);
+  check_against_dense_points(Tables::load(generated_table("nonpoly", "--valence 3-8 --n 16", "sgs").string()), 16, true);
 }
 
 TEST_CASE("sqrt(3) closest points are never farther than dense exact limit points, and lie on the surface",
           "[runtime][distance]") {
-  check_against_dense_points(Tables::load(generated_table("sqrt3", "--valence 3-8 --n 1,3,9,27", "sgt").string()), 27);
+  check_against_dense_points(Tables::load(generated_table("sqrt3", "--valence 3-8 --n 1,3,9,27", "sgt").string()), 27, false);
 }
 
 // Whether a ray from q along +x crosses the triangles an odd number of times
