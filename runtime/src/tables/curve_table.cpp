@@ -72,32 +72,40 @@ CurveTable load_curve_table(const std::string& path, std::uint64_t expected_hash
   return t;
 }
 
-double evaluate_uniform_curve(const CurveTable& table, const std::vector<double>& points, std::int64_t k) {
-  if (table.functions.size() != 1) throw EvaluationError("evaluate_uniform_curve needs a uniform (one-function) table");
-  const CurveFunction& phi = table.functions.front();
+namespace {
+
+// sum_j points[j] * f(k/n - j) for grid values f of a one-function table.
+double combine(const CurveTable& table, std::int64_t first, const std::vector<double>& values, const std::vector<double>& points,
+               std::int64_t k) {
   double sum = 0;
   for (std::size_t j = 0; j < points.size(); ++j) {
     std::int64_t at = 0;
     if (__builtin_sub_overflow(k, static_cast<std::int64_t>(j) * table.n, &at)) continue;  // beyond every support
-    sum += points[j] * phi.at(at);
+    sum += points[j] * grid_value(first, values, at);
   }
   return sum;
 }
 
+const CurveFunction& only_function(const CurveTable& table, const char* caller) {
+  if (table.functions.size() != 1) throw EvaluationError(std::string(caller) + " needs a uniform (one-function) table");
+  return table.functions.front();
+}
+
+}  // namespace
+
+double evaluate_uniform_curve(const CurveTable& table, const std::vector<double>& points, std::int64_t k) {
+  const CurveFunction& phi = only_function(table, "evaluate_uniform_curve");
+  return combine(table, phi.first, phi.values, points, k);
+}
+
 double evaluate_uniform_curve_derivative(const CurveTable& table, const std::vector<double>& points, std::int64_t k, int order) {
-  if (table.functions.size() != 1) throw EvaluationError("evaluate_uniform_curve_derivative needs a uniform (one-function) table");
+  const CurveFunction& phi = only_function(table, "evaluate_uniform_curve_derivative");
   if (order < 1 || order > static_cast<int>(table.derivative_orders))
     throw EvaluationError("this curve table holds derivatives of order 1.." + std::to_string(table.derivative_orders) +
                           " only, not " + std::to_string(order) +
                           " (the scheme is not that smooth, or the table is from a scheme without derivative tables)");
-  const GridValues& d = table.functions.front().derivatives[static_cast<std::size_t>(order - 1)];
-  double sum = 0;
-  for (std::size_t j = 0; j < points.size(); ++j) {
-    std::int64_t at = 0;
-    if (__builtin_sub_overflow(k, static_cast<std::int64_t>(j) * table.n, &at)) continue;  // beyond every support
-    sum += points[j] * d.at(at);
-  }
-  return sum;
+  const GridValues& d = phi.derivatives[static_cast<std::size_t>(order - 1)];
+  return combine(table, d.first, d.values, points, k);
 }
 
 }  // namespace stencil_runtime
