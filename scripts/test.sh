@@ -21,9 +21,15 @@ for stage in "${stages[@]}"; do
 done
 
 bash scripts/install-deps.sh
+# The tests' scratch files go to a directory of our own, emptied after every
+# stage, so that no stage depends on (or fills) the machine's /tmp.
+scratch="$PWD/.test-tmp"
+trap 'rm -rf "$scratch"' EXIT
 for stage in "${stages[@]}"; do
   start=$(date +%s)
   echo "=== test.sh: stage $stage"
+  rm -rf "$scratch" && mkdir -p "$scratch"
+  export TMPDIR="$scratch"
   case "$stage" in
     suite)
       cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
@@ -33,5 +39,6 @@ for stage in "${stages[@]}"; do
     sanitize) bash scripts/sanitize.sh ;;
     fuzz) bash scripts/fuzz.sh --seconds "${FUZZ_SECONDS:-20}" --jobs "$(nproc)" ;;
   esac
+  rm -rf "$scratch"
   echo "=== test.sh: stage $stage passed in $(($(date +%s) - start)) s"
 done

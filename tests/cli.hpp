@@ -7,6 +7,10 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <system_error>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
 
 struct CliResult {
   int status;
@@ -43,11 +47,29 @@ inline CliResult run_stenciltess(const std::string& args) { return run_command(S
 inline CliResult run_stencilfit(const std::string& args) { return run_command(STENCILFIT_EXE, args); }
 #endif
 
-// A fresh empty directory under the system temp dir.
+// Every scratch directory a test process made, removed when the process ends:
+// ctest runs each test case in its own process, and each generates its tables,
+// so directories left behind fill the disk (tens of GB over a CI run).
+struct ScratchDirs {
+  std::vector<std::filesystem::path> dirs;
+  ~ScratchDirs() {
+    for (const auto& dir : dirs) {
+      std::error_code ignored;
+      std::filesystem::remove_all(dir, ignored);
+    }
+  }
+};
+inline ScratchDirs& scratch_dirs() {
+  static ScratchDirs all;
+  return all;
+}
+
+// A fresh empty directory under the system temp dir, removed at exit.
 inline std::filesystem::path scratch_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("stencilgen-test-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  scratch_dirs().dirs.push_back(dir);
   return dir;
 }
 

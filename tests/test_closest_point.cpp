@@ -401,8 +401,7 @@ TEST_CASE("sub-patch derivatives equal difference quotients of exact evaluations
 TEST_CASE("stencildist answers as the library does and refuses bad points files by line", "[runtime][distance][cli]") {
   const std::string tables = generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string();
   const std::string cube = (kMeshes / "cube.obj").string();
-  const auto dir = std::filesystem::temp_directory_path() / "stencildist-test";
-  std::filesystem::create_directories(dir);
+  const auto dir = scratch_dir("stencildist");
   auto write = [&](const char* name, const std::string& text) {
     std::ofstream(dir / name) << text;
     return (dir / name).string();

@@ -7,6 +7,7 @@
 #include "curve/curve_scheme_loader.hpp"
 #include "curve/eigen_solver.hpp"
 #include "curve/residue_solver.hpp"
+#include "cli.hpp"
 #include "independent.hpp"
 
 using independent::Q;
@@ -51,8 +52,7 @@ TEST_CASE("nubspline3 has the paper's five column types with uniform cubic B-spl
 }
 
 TEST_CASE("column schemes are validated: contiguous special columns, uniform columns reaching only uniform points") {
-  const auto dir = std::filesystem::temp_directory_path() / ("stencilgen-columns-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = scratch_dir("columns");
   auto scheme_with = [&](const std::string& name, const std::string& columns) {
     const auto path = dir / (name + ".json");
     std::ofstream(path) << R"({"format": "stencilgen-scheme", "version": 1, "name": ")" << name
