@@ -18,10 +18,20 @@ namespace bfr_reference {
 
 namespace osd = OpenSubdiv;
 
+// Semi-sharp creases and corners as Far::TopologyDescriptor takes them.
+struct Creasing {
+  std::vector<int> crease_pairs;  // two vertices per creased edge
+  std::vector<float> crease_sharpness;
+  std::vector<int> corners;
+  std::vector<float> corner_sharpness;
+  bool chaikin = false;
+};
+
 inline std::unique_ptr<osd::Far::TopologyRefiner> make_refiner(int num_vertices, const std::vector<int>& sizes,
                                                                const std::vector<int>& indices,
                                                                osd::Sdc::SchemeType scheme = osd::Sdc::SCHEME_CATMARK,
-                                                               const std::vector<int>& holes = {}) {
+                                                               const std::vector<int>& holes = {},
+                                                               const Creasing& creasing = {}) {
   osd::Far::TopologyDescriptor desc;
   desc.numVertices = num_vertices;
   desc.numFaces = static_cast<int>(sizes.size());
@@ -29,8 +39,15 @@ inline std::unique_ptr<osd::Far::TopologyRefiner> make_refiner(int num_vertices,
   desc.vertIndicesPerFace = indices.data();
   desc.numHoles = static_cast<int>(holes.size());
   desc.holeIndices = holes.empty() ? nullptr : holes.data();
+  desc.numCreases = static_cast<int>(creasing.crease_sharpness.size());
+  desc.creaseVertexIndexPairs = creasing.crease_pairs.empty() ? nullptr : creasing.crease_pairs.data();
+  desc.creaseWeights = creasing.crease_sharpness.empty() ? nullptr : creasing.crease_sharpness.data();
+  desc.numCorners = static_cast<int>(creasing.corner_sharpness.size());
+  desc.cornerVertexIndices = creasing.corners.empty() ? nullptr : creasing.corners.data();
+  desc.cornerWeights = creasing.corner_sharpness.empty() ? nullptr : creasing.corner_sharpness.data();
   osd::Sdc::Options sdc;
   sdc.SetVtxBoundaryInterpolation(osd::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  if (creasing.chaikin) sdc.SetCreasingMethod(osd::Sdc::Options::CREASE_CHAIKIN);
   using Factory = osd::Far::TopologyRefinerFactory<osd::Far::TopologyDescriptor>;
   return std::unique_ptr<osd::Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(scheme, sdc)));
 }
@@ -44,9 +61,9 @@ class BfrLimit {
  public:
   BfrLimit(const std::vector<std::array<double, 3>>& positions, const std::vector<int>& sizes,
            const std::vector<int>& indices, osd::Sdc::SchemeType scheme = osd::Sdc::SCHEME_CATMARK,
-           const std::vector<int>& holes = {})
+           const std::vector<int>& holes = {}, const Creasing& creasing = {})
       : sizes_(sizes), indices_(indices),
-        refiner_(make_refiner(static_cast<int>(positions.size()), sizes_, indices_, scheme, holes)) {
+        refiner_(make_refiner(static_cast<int>(positions.size()), sizes_, indices_, scheme, holes, creasing)) {
     if (!refiner_) throw std::runtime_error("OpenSubdiv refused the mesh");
     osd::Bfr::SurfaceFactory::Options options;
     options.SetApproxLevelSmooth(kApproxLevel).SetApproxLevelSharp(kApproxLevel);

@@ -44,6 +44,27 @@ struct MeshTags {
   long smooth_triangles_line = 0;
 };
 
+// Semi-sharp creases and corners in OpenSubdiv's conventions (Sdc::Crease):
+// a sharpness per edge (its two end vertices) and per vertex; 0 is smooth, a
+// sharpness s keeps the feature sharp for about s subdivision steps, 10 or
+// more is infinitely sharp. Chaikin's method spreads an edge's sharpness
+// along the crease as it decays; the default is uniform (subtract 1 a step).
+struct SharpFeatures {
+  struct Edge {
+    int a = 0, b = 0;
+    double sharpness = 0;
+  };
+  struct Vertex {
+    int vertex = 0;
+    double sharpness = 0;
+  };
+  std::vector<Edge> edges;
+  std::vector<Vertex> vertices;
+  bool chaikin = false;
+
+  bool empty() const { return edges.empty() && vertices.empty(); }
+};
+
 struct Mesh {
   std::vector<Point> positions;
   std::vector<int> face_sizes;

@@ -51,16 +51,24 @@ class SurfaceTopology {
   // error naming the face and tessellations leave them out, their rims
   // becoming boundaries of the output. Throws MeshError for an index out of
   // range or when every face is a hole.
+  //
+  // `sharp`: semi-sharp creases and corners (OpenSubdiv's rules, either crease
+  // method), for quad schemes: the preparation applies whole-mesh steps with
+  // the sharp rules until every sharpness has decayed (ceil of the largest),
+  // the crease rule being the scheme's own regular curve; the surface is then
+  // smooth and evaluated exactly from the tables. Throws MeshError for an edge
+  // or vertex the mesh lacks, a negative or infinite (>= 10) sharpness, too
+  // many steps (limits::kMaxCreaseStepFaces), or a triangle scheme.
   static std::shared_ptr<const SurfaceTopology> create(std::shared_ptr<const Tables> tables, std::size_t vertex_count,
                                                        std::vector<int> face_sizes, std::vector<int> face_vertices,
-                                                       const std::vector<int>& holes = {});
-  // The same from a mesh read from a file, with its tags: holes as above; the
-  // runtime evaluates smooth closed meshes, so a sharp or semi-sharp crease,
-  // a corner of non-zero sharpness, or `smoothtriangles` on a quad scheme's
-  // mesh with triangles is refused with a MeshError naming the file and line
-  // of the tag (the smooth surface would be silently wrong). Tags without
-  // effect on a closed smooth mesh (sharpness 0, boundary interpolation,
-  // crease method) are accepted.
+                                                       const std::vector<int>& holes = {}, const SharpFeatures& sharp = {});
+  // The same from a mesh read from a file, with its tags: holes, creases,
+  // corners and the crease method as above. What the runtime cannot honour
+  // yet is refused with a MeshError naming the file and line of the tag (the
+  // smooth surface would be silently wrong): an infinitely sharp crease or
+  // corner (>= 10), a crease or corner on a triangle scheme's mesh, and
+  // `smoothtriangles` on a quad scheme's mesh with triangles. Boundary
+  // interpolation has no effect on a closed mesh.
   static std::shared_ptr<const SurfaceTopology> create(std::shared_ptr<const Tables> tables, const Mesh& mesh);
 
   const Tables& tables() const { return *tables_; }

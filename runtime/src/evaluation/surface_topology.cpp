@@ -30,7 +30,7 @@ SurfaceTopology::~SurfaceTopology() = default;
 
 std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<const Tables> tables, std::size_t vertex_count,
                                                                std::vector<int> face_sizes, std::vector<int> face_vertices,
-                                                               const std::vector<int>& holes) {
+                                                               const std::vector<int>& holes, const SharpFeatures& sharp) {
   if (!tables) throw EvaluationError("SurfaceTopology::create needs tables");
   if (face_sizes.empty()) throw MeshError("the mesh has no faces");
   if (vertex_count > limits::kMaxMeshElements || face_sizes.size() > limits::kMaxMeshElements)
@@ -60,8 +60,14 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   t->face_vertices_ = std::move(face_vertices);
   const Connectivity mesh{t->vertex_count_, t->face_sizes_, t->face_vertices_};
   try {
-    if (t->tables_->family() == SchemeFamily::Quad) t->family_ = std::make_unique<QuadFamily>(t->tables_, mesh);
-    else t->family_ = std::make_unique<TriangleFamily>(t->tables_, mesh);
+    if (t->tables_->family() == SchemeFamily::Quad) {
+      t->family_ = std::make_unique<QuadFamily>(t->tables_, mesh, sharp);
+    } else {
+      if (!sharp.empty())
+        throw MeshError("creases and corners are supported for quad schemes only so far; the scheme " +
+                        t->tables_->scheme() + " is a triangle scheme");
+      t->family_ = std::make_unique<TriangleFamily>(t->tables_, mesh);
+    }
   } catch (const MeshError& e) {
     throw MeshError(std::string(e.what()) + kNumbering);
   }

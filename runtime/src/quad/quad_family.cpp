@@ -6,6 +6,7 @@
 
 #include "family/parameter_ops.hpp"
 #include "mesh/polygon_links.hpp"
+#include "crease_refinement.hpp"
 #include "quad_refinement.hpp"
 
 namespace stencil_runtime {
@@ -15,6 +16,7 @@ struct QuadFamily::Prepared {
   FaceHierarchy hierarchy;
   std::vector<int> original_sizes;
   bool polygon_step = false;
+  int crease_steps = 0;  // of the steps, those that still had sharp features
   int steps = 0;
   Connectivity mesh;  // the prepared mesh
 };
@@ -55,9 +57,27 @@ int subface(const FaceDomain& d, const Fraction& u, const Fraction& v, std::arra
 }
 int subface(const FaceDomain& d, double u, double v, std::array<double, 2>& local) { return d.subface(u, v, local[0], local[1]); }
 
+// Refuses, before any work, sharpness that would take the whole-mesh steps
+// past limits::kMaxCreaseStepFaces.
+void check_crease_steps(const Connectivity& mesh, float sharpest) {
+  const auto steps = static_cast<int>(std::ceil(sharpest));
+  std::size_t faces = mesh.face_count();
+  bool quads = std::all_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k == 4; });
+  for (int k = 0; k < steps; ++k) {
+    if (quads) faces *= 4;
+    else faces = mesh.face_vertices.size();
+    quads = true;
+    if (faces > limits::kMaxCreaseStepFaces)
+      throw MeshError("a sharpness of " + std::to_string(sharpest) + " takes " + std::to_string(steps) +
+                      " whole-mesh subdivision steps, which would make more than " +
+                      std::to_string(limits::kMaxCreaseStepFaces) + " faces from this mesh's " +
+                      std::to_string(mesh.face_count()) + " (the limit); lower the sharpness");
+  }
+}
+
 }  // namespace
 
-QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivity& mesh) {
+QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivity& mesh, const SharpFeatures& features) {
   const QuadTables& t = tables.quad();
   QuadFamily::Prepared out;
   out.refinement = Refinement(mesh.vertex_count);
@@ -83,10 +103,20 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
         });
   }
   valences.finish();
+  LevelSharpness sharpness = LevelSharpness::of(mesh, features);
+  CurveCreaseRule crease;
+  if (!sharpness.smooth()) {
+    crease = curve_crease_rule(t, tables.scheme());
+    check_crease_steps(mesh, sharpness.max());
+  }
   if (all_quads) {
     out.mesh = mesh;
   } else {
     QuadStep step = subdivide_polygons(mesh, links, t);
+    if (!sharpness.smooth()) {
+      sharpness = sharpen_step(mesh, sharpness, crease, step);
+      ++out.crease_steps;
+    }
     std::vector<std::size_t> offsets(mesh.face_count() + 1, 0);
     for (std::size_t f = 0; f < mesh.face_count(); ++f) offsets[f + 1] = offsets[f] + static_cast<std::size_t>(mesh.face_sizes[f]);
     out.hierarchy.add(std::move(offsets), 2);
@@ -95,8 +125,21 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     out.polygon_step = true;
   }
   QuadTopology topo = all_quads ? QuadTopology(out.mesh, links) : QuadTopology(out.mesh);
+  // Sharp features decay by at least 1 a step: whole-mesh steps until none is
+  // left, after which every patch is stationary (smooth) again.
+  while (!sharpness.smooth()) {
+    QuadStep step = subdivide_quads(topo, t);
+    sharpness = sharpen_step(out.mesh, sharpness, crease, step);
+    out.hierarchy.add_uniform(4, 2);
+    out.refinement.add(std::move(step.step));
+    out.mesh = std::move(step.mesh);
+    ++out.steps;
+    ++out.crease_steps;
+    topo = QuadTopology(out.mesh);
+  }
+  const int crease_steps = out.steps;
   while (!isolated(topo)) {
-    if (out.steps + (out.polygon_step ? 1 : 0) == limits::kMaxRefinementSteps)
+    if (out.steps - crease_steps + (out.polygon_step ? 1 : 0) == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices still share faces after " + std::to_string(limits::kMaxRefinementSteps) +
                       " subdivision steps");
     QuadStep step = subdivide_quads(topo, t);
@@ -110,14 +153,15 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
 }
 
 
-QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh)
-    : QuadFamily(tables, prepare(*tables, mesh)) {}
+QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const SharpFeatures& sharp)
+    : QuadFamily(tables, prepare(*tables, mesh, sharp)) {}
 
 QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, Prepared prepared)
     : holder_(std::move(tables)),
       tables_(holder_->quad()),
       original_sizes_(std::move(prepared.original_sizes)),
       polygon_step_(prepared.polygon_step),
+      crease_steps_(prepared.crease_steps),
       steps_(prepared.steps),
       topology_(prepared.mesh) {
   refinement_ = std::move(prepared.refinement);
@@ -147,6 +191,9 @@ std::string QuadFamily::preparation() const {
   if (steps_ > 0 || out.empty()) {
     if (!out.empty()) out += " and ";
     out += std::to_string(steps_) + " subdivision step" + (steps_ == 1 ? "" : "s");
+  }
+  if (crease_steps_ > 0) {
+    out += " (" + std::to_string(crease_steps_) + " of them with the creases' sharp rules)";
   }
   return out;
 }

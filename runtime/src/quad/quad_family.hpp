@@ -23,7 +23,9 @@ namespace stencil_runtime {
 class QuadFamily final : public Family {
  public:
   // Throws MeshError naming the face, edge or vertex (see SurfaceTopology::create).
-  QuadFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh);
+  // `sharp`: semi-sharp creases and corners, resolved by whole-mesh steps with
+  // OpenSubdiv's creasing rules (crease_refinement.hpp) before the patches are gathered.
+  QuadFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const SharpFeatures& sharp = {});
 
   std::string preparation() const override;
   int refinement_steps() const override { return steps_ + (polygon_step_ ? 1 : 0); }
@@ -63,13 +65,14 @@ class QuadFamily final : public Family {
 
  private:
   struct Prepared;
-  static Prepared prepare(const Tables& tables, const Connectivity& mesh);
+  static Prepared prepare(const Tables& tables, const Connectivity& mesh, const SharpFeatures& sharp);
   QuadFamily(std::shared_ptr<const Tables> tables, Prepared prepared);
 
   std::shared_ptr<const Tables> holder_;  // keeps tables_ alive
   const QuadTables& tables_;
   std::vector<int> original_sizes_;
   bool polygon_step_ = false;
+  int crease_steps_ = 0;  // steps (the polygon step included) with sharp rules
   int steps_ = 0;  // isolation steps (after the polygon step)
   QuadTopology topology_;
   std::vector<QuadPatch> patches_;

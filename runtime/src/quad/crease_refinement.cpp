@@ -1,0 +1,140 @@
+#include "crease_refinement.hpp"
+
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace stencil_runtime {
+
+CurveCreaseRule curve_crease_rule(const QuadTables& t, const std::string& scheme) {
+  const CurveCreaseRule rule{2 * t.edge_end(), 2 * t.edge_wing()};
+  const double tol = 1e-14;
+  bool product = std::abs(t.face_corner() - 0.25) <= tol && std::abs(rule.centre + 2 * rule.neighbour - 1) <= tol;
+  if (const auto* v = t.vertex_rule(4))
+    product = product && std::abs(v->centre - rule.centre * rule.centre) <= tol &&
+              std::abs(v->edge - rule.centre * rule.neighbour) <= tol &&
+              std::abs(v->face - rule.neighbour * rule.neighbour) <= tol;
+  if (!product)
+    throw MeshError("the scheme " + scheme +
+                    "'s regular rules are not the tensor product of a curve with midpoint edge rule, so the runtime has "
+                    "no crease rule for it: creases and corners are refused");
+  return rule;
+}
+
+namespace {
+
+// a * x + b * y, merged.
+SparseEntries blend(double a, const SparseEntries& x, double b, const SparseEntries& y) {
+  SparseEntries out;
+  out.reserve(x.size() + y.size());
+  for (const auto& [c, w] : x) out.emplace_back(c, a * w);
+  for (const auto& [c, w] : y) out.emplace_back(c, b * w);
+  merge_entries(out);
+  return out;
+}
+
+SparseEntries row_of(const RefinementStep& step, std::size_t r) {
+  SparseEntries out;
+  for (std::size_t e = step.offsets[r]; e != step.offsets[r + 1]; ++e) out.emplace_back(step.columns[e], step.weights[e]);
+  return out;
+}
+
+// The step with some rows replaced.
+RefinementStep replaced(const RefinementStep& step, std::map<std::size_t, SparseEntries>& rows) {
+  RefinementStep out;
+  out.input_vertices = step.input_vertices;
+  out.columns.reserve(step.columns.size());
+  out.weights.reserve(step.weights.size());
+  for (std::size_t r = 0; r < step.rows(); ++r) {
+    SparseEntries row;
+    const auto it = rows.find(r);
+    row = it != rows.end() ? std::move(it->second) : row_of(step, r);
+    out.add_row(row);
+  }
+  return out;
+}
+
+// The vertex mask of one rule at vertex v (Smooth and Dart: the step's own row).
+SparseEntries vertex_mask(CreaseRule rule, const RefinementStep& step, std::uint32_t v, const std::vector<int>& neighbours,
+                          const std::vector<float>& sharpness, const CurveCreaseRule& curve) {
+  switch (rule) {
+    case CreaseRule::Smooth:
+    case CreaseRule::Dart: return row_of(step, v);
+    case CreaseRule::Corner: return {{v, 1.0}};
+    case CreaseRule::Crease: {
+      SparseEntries out{{v, curve.centre}};
+      for (std::size_t i = 0; i < neighbours.size(); ++i)
+        if (sharpness[i] > 0) out.emplace_back(static_cast<std::uint32_t>(neighbours[i]), curve.neighbour);
+      merge_entries(out);
+      return out;
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+LevelSharpness sharpen_step(const Connectivity& parent, const LevelSharpness& sharpness, const CurveCreaseRule& curve,
+                            QuadStep& step) {
+  const bool chaikin = sharpness.chaikin();
+  // Each vertex's neighbours (one per outgoing half-edge, so one per incident
+  // edge on a closed mesh) and the edge point of each of those edges.
+  std::vector<std::vector<int>> neighbours(parent.vertex_count);
+  std::vector<std::vector<int>> edge_points(parent.vertex_count);
+  std::size_t corner = 0, child = 0;
+  for (std::size_t f = 0; f < parent.face_count(); ++f) {
+    const std::size_t k = static_cast<std::size_t>(parent.face_sizes[f]);
+    for (std::size_t c = 0; c < k; ++c, ++child) {
+      const int a = parent.face_vertices[corner + c], b = parent.face_vertices[corner + (c + 1) % k];
+      neighbours[static_cast<std::size_t>(a)].push_back(b);
+      edge_points[static_cast<std::size_t>(a)].push_back(step.mesh.face_vertices[4 * child + 1]);
+    }
+    corner += k;
+  }
+  LevelSharpness next = sharpness.empty_like();
+  std::map<std::size_t, SparseEntries> rows;
+  std::vector<float> ps, cs;
+  for (std::size_t v = 0; v < parent.vertex_count; ++v) {
+    const auto vi = static_cast<int>(v);
+    const std::vector<int>& nb = neighbours[v];
+    const std::size_t n = nb.size();
+    ps.resize(n);
+    cs.resize(n);
+    bool any = false;
+    for (std::size_t i = 0; i < n; ++i) any |= (ps[i] = sharpness.edge(vi, nb[i])) > 0;
+    const float pv = sharpness.vertex(vi);
+    if (!any && pv <= 0) continue;
+    for (std::size_t i = 0; i < n; ++i) {
+      cs[i] = child_edge_sharpness(i, ps.data(), n, chaikin);
+      next.set_edge(vi, edge_points[v][i], cs[i]);
+    }
+    const float cv = decayed_sharpness(pv);
+    next.set_vertex(vi, cv);
+    const CreaseRule p_rule = crease_rule(pv, ps.data(), n), c_rule = crease_rule(cv, cs.data(), n);
+    if (p_rule == CreaseRule::Smooth || p_rule == CreaseRule::Dart) continue;
+    const auto u = static_cast<std::uint32_t>(v);
+    SparseEntries mask = vertex_mask(p_rule, step.step, u, nb, ps, curve);
+    if (c_rule != p_rule) {
+      const double w = transition_weight(pv, cv, ps.data(), cs.data(), n, chaikin);
+      mask = blend(w, mask, 1.0 - w, vertex_mask(c_rule, step.step, u, nb, cs, curve));
+    }
+    rows[v] = std::move(mask);
+  }
+  // Edge points of sharp edges: the midpoint while both halves stay sharp, else
+  // the smooth point pulled towards it by the edge's sharpness (OpenSubdiv
+  // does not clamp that weight to 1).
+  for (std::size_t v = 0; v < parent.vertex_count; ++v)
+    for (std::size_t i = 0; i < neighbours[v].size(); ++i) {
+      const int a = static_cast<int>(v), b = neighbours[v][i], e = edge_points[v][i];
+      if (a > b) continue;
+      const float s = sharpness.edge(a, b);
+      if (s <= 0) continue;
+      const SparseEntries mid{{static_cast<std::uint32_t>(a), 0.5}, {static_cast<std::uint32_t>(b), 0.5}};
+      const bool stays = next.edge(a, e) > 0 && next.edge(e, b) > 0;
+      rows[static_cast<std::size_t>(e)] = stays ? mid : blend(s, mid, 1.0 - static_cast<double>(s), row_of(step.step, static_cast<std::size_t>(e)));
+    }
+  if (!rows.empty()) step.step = replaced(step.step, rows);
+  return next;
+}
+
+}  // namespace stencil_runtime
