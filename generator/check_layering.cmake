@@ -8,7 +8,7 @@ set(allowed_algebra base algebra)
 set(allowed_common base algebra common)
 set(allowed_curve base algebra common curve)
 set(allowed_quad base algebra common curve quad)
-set(allowed_triangle base algebra common triangle)
+set(allowed_triangle base algebra common curve triangle)  # curve: a crease curve
 set(allowed_cli base algebra common curve quad triangle cli)
 
 set(violations "")

@@ -22,7 +22,8 @@
 #include "cli.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
-#include "quad/crease_refinement.hpp"
+#include "quad/quad_creases.hpp"
+#include "tables/triangle_tables.hpp"
 
 using namespace stencil_runtime;
 using namespace test_runtime;
@@ -91,18 +92,25 @@ Surface surface_with(const std::shared_ptr<const Tables>& tables, const Mesh& me
                  mesh.positions);
 }
 
-// Largest distance to Bfr over the mesh size, at every node of every quad at rates 1..8.
+bool is_loop(const std::shared_ptr<const Tables>& tables) { return tables->family() == SchemeFamily::Triangle; }
+
+bfr_reference::osd::Sdc::SchemeType osd_scheme(const std::shared_ptr<const Tables>& tables) {
+  return is_loop(tables) ? bfr_reference::osd::Sdc::SCHEME_LOOP : bfr_reference::osd::Sdc::SCHEME_CATMARK;
+}
+
+// Largest distance to Bfr over the mesh size, at every node of every quad
+// (Catmull-Clark) or triangle (Loop) at rates 1..8.
 double bfr_difference(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, const Features& f) {
   const Surface surface = surface_with(tables, mesh, f);
-  bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices,
-                                    bfr_reference::osd::Sdc::SCHEME_CATMARK, {}, f.osd);
+  bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices, osd_scheme(tables), {}, f.osd);
   const double size = extent(mesh);
+  const bool loop = is_loop(tables);
   double worst = 0;
   for (std::size_t face = 0; face < mesh.face_count(); ++face) {
-    if (mesh.face_sizes[face] != 4) continue;
+    if (mesh.face_sizes[face] != (loop ? 3 : 4)) continue;
     for (long n = 1; n <= 8; ++n)
       for (long j = 0; j <= n; ++j)
-        for (long i = 0; i <= n; ++i) {
+        for (long i = 0; i + (loop ? j : 0) <= n; ++i) {
           const Point ours = surface.evaluate(face, grid(i, j, n));
           const auto ref = reference.evaluate(static_cast<int>(face), static_cast<double>(i) / n, static_cast<double>(j) / n);
           worst = std::max(worst, distance(ours, ref) / size);
@@ -121,10 +129,10 @@ struct Primvar {
 
 // Far's limit points of the vertices of uniform refinement level `level`
 // (in double), every sharpness having decayed by then.
-std::vector<Point> far_limit_points(const Mesh& mesh, const Features& f, int level) {
+std::vector<Point> far_limit_points(const Mesh& mesh, const Features& f, int level, bfr_reference::osd::Sdc::SchemeType scheme) {
   namespace osd = bfr_reference::osd;
   auto refiner = bfr_reference::make_refiner(static_cast<int>(mesh.vertex_count()), mesh.face_sizes, mesh.face_vertices,
-                                             osd::Sdc::SCHEME_CATMARK, {}, f.osd);
+                                             scheme, {}, f.osd);
   osd::Far::TopologyRefiner::UniformOptions options(level);
   options.fullTopologyInLastLevel = true;  // the limit masks need it
   refiner->RefineUniform(options);
@@ -147,19 +155,20 @@ std::vector<Point> far_limit_points(const Mesh& mesh, const Features& f, int lev
 }
 
 // Largest distance, over the mesh size, from our surface at every node of rate
-// 2^level of every quad to the nearest of Far's limit points at that level
-// (which are those nodes, in another order).
+// 2^level of every quad (triangle for Loop) to the nearest of Far's limit
+// points at that level (which are those nodes, in another order).
 double far_difference(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, const Features& f, int level) {
   const Surface surface = surface_with(tables, mesh, f);
-  std::vector<Point> reference = far_limit_points(mesh, f, level);
+  std::vector<Point> reference = far_limit_points(mesh, f, level, osd_scheme(tables));
   std::sort(reference.begin(), reference.end());
   const double size = extent(mesh);
   const long n = 1L << level;
+  const bool loop = is_loop(tables);
   double worst = 0;
   for (std::size_t face = 0; face < mesh.face_count(); ++face) {
-    if (mesh.face_sizes[face] != 4) continue;
+    if (mesh.face_sizes[face] != (loop ? 3 : 4)) continue;
     for (long j = 0; j <= n; ++j)
-      for (long i = 0; i <= n; ++i) {
+      for (long i = 0; i + (loop ? j : 0) <= n; ++i) {
         const Point ours = surface.evaluate(face, grid(i, j, n));
         // Candidates: reference points whose x is within 1e-6 of the size (sorted by x).
         const auto first = std::lower_bound(reference.begin(), reference.end(), Point{ours[0] - 1e-6 * size, -1e300, -1e300});
@@ -273,13 +282,18 @@ TEST_CASE("the crease rule is the scheme's regular curve: the cubic B-spline for
           "[runtime][creases]") {
   for (const auto& [scheme, curve] : {std::pair{"catmull-clark", "bspline3"}, std::pair{"nonpoly", "nonpoly-curve"}}) {
     const auto tables = Tables::load(generated_table(scheme, "--valence 3-8 --n 8", "sgs").string());
-    const CurveCreaseRule rule = curve_crease_rule(tables->quad(), scheme);
+    const CurveCreaseRule rule = quad_crease_rule(tables->quad(), scheme);
     INFO(scheme << " against " << curve << ".json");
     CHECK(rule.centre == Approx(mask_at(curve, 0)).epsilon(1e-15));
     CHECK(rule.neighbour == Approx(mask_at(curve, 2)).epsilon(1e-15));
     CHECK(mask_at(curve, -2) == mask_at(curve, 2));
     CHECK(mask_at(curve, 1) == 0.5);  // edge points are midpoints, as the runtime assumes
   }
+  // Loop's is the crease_curve its scheme file names, carried by the .sgt file.
+  const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 8", "sgt").string());
+  REQUIRE(loop->triangle().crease());
+  CHECK(loop->triangle().crease()->centre == mask_at("bspline3", 0));
+  CHECK(loop->triangle().crease()->neighbour == mask_at("bspline3", 2));
 }
 
 TEST_CASE("nonpoly and Catmull-Clark with creases: continuous across every edge, tessellations closed for random rate mixes",
@@ -325,4 +339,50 @@ TEST_CASE("nonpoly and Catmull-Clark with creases: continuous across every edge,
       CHECK(tessellation_defect(soup, euler_characteristic(mesh)) == "");
     }
   }
+}
+
+TEST_CASE("Loop: semi-sharp creases and corners equal OpenSubdiv's, both methods", "[runtime][creases][opensubdiv]") {
+  const auto tables = Tables::load(generated_table("loop", "--valence 3-8 --n 8", "sgt").string());
+  std::mt19937 rng(11u);
+  for (const char* name : {"icosahedron", "tri-torus", "tri-mix"}) {
+    const Mesh mesh = load(name);
+    const auto edges = edges_of(mesh);
+    for (bool chaikin : {false, true}) {
+      const float choices[] = {chaikin ? 0.25f : 0.3f, 0.5f, 1.0f, 1.5f, 2.25f};
+      Features f;
+      for (const auto& [a, b] : edges)
+        if (rng() % 4 == 0) f.crease(a, b, choices[rng() % 5]);
+      for (int k = 0; k < 2; ++k) f.corner(static_cast<int>(rng() % mesh.vertex_count()), choices[rng() % 5]);
+      if (chaikin) f.chaikin();
+      INFO(name << ", " << f.ours.edges.size() << " creases, " << (chaikin ? "Chaikin" : "uniform"));
+      const double far = far_difference(tables, mesh, f, 3);
+      CHECK(far < 1e-10);
+      WARN(name << " (Loop), " << (chaikin ? "Chaikin" : "uniform") << ": largest difference to Far over the mesh size " << far);
+      if (!chaikin) CHECK(bfr_difference(tables, mesh, f) < 1e-10);
+    }
+  }
+  // One edge at a time on the icosahedron: darts, and 0.5 next to 3 (Chaikin).
+  const Mesh ico = load("icosahedron");
+  const auto edges = edges_of(ico);
+  for (float s : {0.5f, 1.0f, 2.5f}) {
+    Features one;
+    one.crease(edges[0].first, edges[0].second, s);
+    CHECK(bfr_difference(tables, ico, one) < 1e-10);
+    CHECK(far_difference(tables, ico, one, 3) < 1e-10);
+  }
+}
+
+TEST_CASE("creases on sqrt(3) meshes and on tables without a crease rule are refused with the reason", "[runtime][creases]") {
+  const auto tables = Tables::load(generated_table("sqrt3", "--valence 3-8 --n 3", "sgt").string());
+  const Mesh ico = load("icosahedron");
+  Features f;
+  f.crease(edges_of(ico)[0].first, edges_of(ico)[0].second, 1.5f);
+  CHECK_THROWS_WITH(surface_with(tables, ico, f), Catch::Contains("sqrt(3)") && Catch::Contains("no crease rule"));
+  Features bad;
+  bad.crease(0, 0, 1);
+  CHECK_THROWS_WITH(surface_with(catmull_clark(), load("cube"), bad), Catch::Contains("edge 0-0 names no edge"));
+  Features infinite;
+  infinite.crease(edges_of(ico)[0].first, edges_of(ico)[0].second, 10);
+  CHECK_THROWS_WITH(surface_with(Tables::load(generated_table("loop", "--valence 3-8 --n 8", "sgt").string()), ico, infinite),
+                    Catch::Contains("infinitely sharp"));
 }

@@ -120,13 +120,13 @@ TEST_CASE("tags the runtime cannot honour are refused, tags without effect chang
     CHECK(r.status == 1);
     CHECK_THAT(r.output, Catch::Contains(message));
   }
-  // Semi-sharp creases on a triangle scheme's mesh: not yet.
+  // An infinitely sharp crease on a triangle scheme's mesh names the line too.
   {
     const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4", "sgt").string());
     std::ofstream(dir / "tet-crease.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
-                                             "t crease 2/1/0 0 1 1.5\n";
+                                             "t crease 2/1/0 0 1 11\n";
     CHECK_THROWS_WITH(SurfaceTopology::create(loop, read_obj((dir / "tet-crease.obj").string())),
-                      Catch::Contains("tet-crease.obj:9") && Catch::Contains("triangle scheme") && Catch::Contains("not supported yet"));
+                      Catch::Contains("tet-crease.obj:9") && Catch::Contains("infinitely sharp") && Catch::Contains("not supported yet"));
   }
   // Smooth triangles matter on a quad scheme's mesh with triangles only.
   {

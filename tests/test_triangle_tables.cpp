@@ -171,11 +171,26 @@ TEST_CASE("bad triangle scheme input is refused with the file and field named, n
   const std::string irrational_regular =
       write("c.json", head + R"("refinement": "sqrt3", "rules": {"vertex": {"neighbour": "cos2pi(1/7)/v"}}})");
   const std::string negative = write("d.json", head + R"("refinement": "sqrt3", "rules": {"vertex": {"neighbour": "1/(v-5)/18"}}})");
+  // Crease curves: looked up next to the scheme file.
+  std::filesystem::copy_file(sg::default_schemes_dir() / "fourpoint.json", dir / "fourpoint.json",
+                             std::filesystem::copy_options::overwrite_existing);
+  write("lopsided.json", R"({"format": "stencilgen-scheme", "version": 1, "name": "lopsided", "type": "curve-uniform", "arity": 2,
+                             "mask": {"first": -2, "coefficients": ["1/8", "5/8", "3/4", "3/8", "1/8"]}})");
+  const std::string loop_rules = R"("rules": {"edge": {"end": "3/8", "opposite": "1/8"}, "vertex": {"neighbour": "1/16"}}, "valences": {"min": 3, "max": 12}})";
+  const std::string sqrt3_crease =
+      write("e.json", head + R"("refinement": "sqrt3", "crease_curve": "bspline3", "rules": {"vertex": {"neighbour": "1/18"}}, "valences": {"min": 3, "max": 12}})");
+  const std::string wide_crease = write("f.json", head + R"("refinement": "loop", "crease_curve": "fourpoint", )" + loop_rules);
+  const std::string lopsided_crease = write("g.json", head + R"("refinement": "loop", "crease_curve": "lopsided", )" + loop_rules);
+  const std::string missing_crease = write("h.json", head + R"("refinement": "loop", "crease_curve": "nowhere", )" + loop_rules);
   const std::pair<std::string, std::string> cases[] = {
       {no_refinement, "missing required field 'refinement'"},
       {bad_edge, "rules.edge: 2 * end + 2 * opposite must be 1"},
       {irrational_regular, "must be rational at the regular valence v = 6"},
-      {negative, "rules.vertex.neighbour: at v = 3"}};
+      {negative, "rules.vertex.neighbour: at v = 3"},
+      {sqrt3_crease, "crease_curve: only schemes with Loop's refinement"},
+      {wide_crease, "crease_curve: 'fourpoint' has a mask coefficient at -3"},
+      {lopsided_crease, "crease_curve: 'lopsided' must have a symmetric mask"},
+      {missing_crease, "crease_curve: "}};
   for (const auto& [file, message] : cases) {
     const auto out = dir / "out";
     const CliResult r = run_stencilgen("--scheme " + file + " --valence 3 --n 2 --out " + out.string());

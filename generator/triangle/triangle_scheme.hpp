@@ -31,6 +31,14 @@ struct TriangleScheme {
   // Both: new vertex = (1 - v w) old + w * (each of its v neighbours), w = vertex_neighbour(v).
   // (For sqrt(3) the new face vertex is the centroid; the old vertex is relaxed.)
   std::string vertex_neighbour;
+  // The rule along a crease (scheme field "crease_curve", a binary curve
+  // scheme with midpoint edge rule): new vertex = crease_centre * old +
+  // crease_neighbour * (each of its two crease neighbours); new edge points
+  // are midpoints. Absent (has_crease false) when the scheme names none.
+  bool has_crease = false;
+  std::string crease_curve;
+  Rational crease_centre, crease_neighbour;
+  std::uint64_t crease_hash = 0;  // of the crease curve's scheme
   int min_valence = limits::kMinValence, max_valence = limits::kMaxValence;
 
   // The dilation of one refinement of the lattice (sqrt(3): two steps composed).

@@ -1,21 +1,60 @@
 #include "triangle/triangle_scheme_loader.hpp"
 
 #include "base/limits.hpp"
+#include "common/hash.hpp"
 #include "common/read_file.hpp"
 #include "common/scheme_file.hpp"
+#include "curve/curve_scheme_loader.hpp"
 
 namespace sg {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+namespace {
+
+// The crease rule from a curve scheme: binary, uniform, a symmetric primal mask
+// on [-2, 2] whose odd rule is the midpoint (the edge point of a crease edge).
+void load_crease_curve(TriangleScheme& s, const json& doc, const SchemeContext& ctx, const fs::path& curve_dir) {
+  const std::string field = "crease_curve";
+  if (s.refinement != TriangleRefinement::Loop)
+    ctx.fail(field, "only schemes with Loop's refinement take a crease curve (sqrt(3) splits no edges)");
+  s.crease_curve = ctx.string(doc[field], field);
+  if (!is_scheme_name(s.crease_curve))
+    ctx.fail(field, "'" + excerpt(s.crease_curve) + "' is not the name of a curve scheme (" + kSchemeNameRule + ")");
+  CurveScheme c;
+  try {
+    c = load_curve_scheme(s.crease_curve, {}, curve_dir);
+  } catch (const Error& e) {
+    ctx.fail(field, e.what());
+  }
+  if (!c.is_uniform() || c.arity != 2) ctx.fail(field, "'" + c.name + "' must be a uniform binary curve scheme");
+  Rational m[5];
+  for (const Term& t : c.types[0].terms) {
+    if (t.shift < -2 || t.shift > 2)
+      ctx.fail(field, "'" + c.name + "' has a mask coefficient at " + std::to_string(t.shift) +
+                          "; a crease rule must be supported on [-2, 2] (one ring along the crease)");
+    m[t.shift + 2] = t.coeff;
+  }
+  if (m[0] != m[4] || m[1] != m[3]) ctx.fail(field, "'" + c.name + "' must have a symmetric mask");
+  if (m[1] != Rational(1, 2))
+    ctx.fail(field, "'" + c.name + "' must insert edge midpoints (odd rule 1/2, 1/2), got " + to_string(m[1]));
+  s.has_crease = true;
+  s.crease_centre = m[2];
+  s.crease_neighbour = m[0];
+  s.crease_hash = c.hash;
+}
+
+}  // namespace
+
 TriangleScheme load_triangle_scheme(const std::string& spec, const std::vector<std::string>& overrides,
                                     const fs::path& dir) {
   const fs::path file = resolve_scheme_file(spec, dir);
-  return triangle_scheme_from_json(read_file(file, limits::kMaxSchemeFileBytes, "scheme"), file.string(), overrides);
+  return triangle_scheme_from_json(read_file(file, limits::kMaxSchemeFileBytes, "scheme"), file.string(), overrides,
+                                   file.has_parent_path() ? file.parent_path() : dir);
 }
 
 TriangleScheme triangle_scheme_from_json(const std::string& text, const std::string& origin,
-                                         const std::vector<std::string>& overrides) {
+                                         const std::vector<std::string>& overrides, const fs::path& curve_dir) {
   const SchemeContext ctx(origin);
   const json doc = parse_scheme_document(text, ctx);
   const std::string type = doc.at("type").get<std::string>();
@@ -63,7 +102,10 @@ TriangleScheme triangle_scheme_from_json(const std::string& text, const std::str
       ctx.fail("rules.vertex.neighbour", "at v = " + std::to_string(v) + " it is " + to_string(x, 12) +
                                              "; need 0 < w <= 1/v so that every weight is non-negative");
   }
-  s.hash = scheme_content_hash(doc, s.parameters);
+  if (doc.contains("crease_curve")) load_crease_curve(s, doc, ctx, curve_dir);
+  json canonical = doc;  // the crease curve's content is part of the identity
+  if (s.has_crease) canonical["crease_curve_hash"] = hex64(s.crease_hash);
+  s.hash = scheme_content_hash(canonical, s.parameters);
   return s;
 }
 

@@ -36,6 +36,11 @@ TriangleTable make_triangle_table(const TriangleScheme& scheme, const TrianglePa
     t.rules.edge_end = to_string(scheme.edge_end);
     t.rules.edge_opposite = to_string(scheme.edge_opposite);
   }
+  if (scheme.has_crease) {
+    t.rules.crease_curve = scheme.crease_curve;
+    t.rules.crease_centre = to_string(scheme.crease_centre);
+    t.rules.crease_neighbour = to_string(scheme.crease_neighbour);
+  }
   t.rules.neighbour_regular = to_string(*scheme.exact_neighbour_weight(6));
   t.rules.neighbour = rule_string(scheme.exact_neighbour_weight(patch.valence), scheme.real_neighbour_weight(patch.valence));
 
@@ -165,6 +170,12 @@ std::string triangle_table_to_json(const TriangleTable& t) {
   }
   rules["neighbour_regular"] = t.rules.neighbour_regular;
   rules["neighbour"] = t.rules.neighbour;
+  if (!t.rules.crease_curve.empty())
+    rules["crease"] = {{"curve", t.rules.crease_curve},
+                       {"centre", t.rules.crease_centre},
+                       {"neighbour", t.rules.crease_neighbour},
+                       {"meaning", "along a crease: new vertex = centre * old + neighbour * each crease neighbour; new edge "
+                                   "point = midpoint"}};
   head["rules"] = rules;
   std::string out = head.dump(1);
   out.resize(out.size() - 2);

@@ -40,6 +40,7 @@ struct TriangleTable {
   struct Rules {
     std::string edge_end, edge_opposite;  // Loop only
     std::string neighbour_regular, neighbour;  // w(6) and w(valence), exact or 40 digits
+    std::string crease_curve, crease_centre, crease_neighbour;  // empty without a crease rule
   } rules;
 };
 

@@ -79,6 +79,9 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
   put<double>(out, to_double(scheme.edge_end));
   put<double>(out, to_double(scheme.edge_opposite));
   put<double>(out, to_double(*scheme.exact_neighbour_weight(6)));
+  put<std::uint8_t>(out, scheme.has_crease ? 1 : 0);  // then the crease rule's centre and neighbour (0 without one)
+  put<double>(out, scheme.has_crease ? to_double(scheme.crease_centre) : 0.0);
+  put<double>(out, scheme.has_crease ? to_double(scheme.crease_neighbour) : 0.0);
   put<std::uint32_t>(out, static_cast<std::uint32_t>(set.rates.size()));
   for (long n : set.rates) put<std::uint32_t>(out, static_cast<std::uint32_t>(n));
   put<std::uint32_t>(out, static_cast<std::uint32_t>(set.valences.size()));

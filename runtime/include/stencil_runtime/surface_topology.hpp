@@ -53,12 +53,13 @@ class SurfaceTopology {
   // range or when every face is a hole.
   //
   // `sharp`: semi-sharp creases and corners (OpenSubdiv's rules, either crease
-  // method), for quad schemes: the preparation applies whole-mesh steps with
-  // the sharp rules until every sharpness has decayed (ceil of the largest),
-  // the crease rule being the scheme's own regular curve; the surface is then
-  // smooth and evaluated exactly from the tables. Throws MeshError for an edge
-  // or vertex the mesh lacks, a negative or infinite (>= 10) sharpness, too
-  // many steps (limits::kMaxCreaseStepFaces), or a triangle scheme.
+  // method): the preparation applies whole-mesh steps with the sharp rules
+  // until every sharpness has decayed (ceil of the largest), the crease rule
+  // being the scheme's own curve (a quad scheme's regular curve; a Loop
+  // scheme's crease_curve); the surface is then smooth and evaluated exactly
+  // from the tables. Throws MeshError for an edge or vertex the mesh lacks, a
+  // negative or infinite (>= 10) sharpness, too many steps
+  // (limits::kMaxCreaseStepFaces), or tables without a crease rule (sqrt(3)).
   static std::shared_ptr<const SurfaceTopology> create(std::shared_ptr<const Tables> tables, std::size_t vertex_count,
                                                        std::vector<int> face_sizes, std::vector<int> face_vertices,
                                                        const std::vector<int>& holes = {}, const SharpFeatures& sharp = {});
@@ -66,9 +67,8 @@ class SurfaceTopology {
   // corners and the crease method as above. What the runtime cannot honour
   // yet is refused with a MeshError naming the file and line of the tag (the
   // smooth surface would be silently wrong): an infinitely sharp crease or
-  // corner (>= 10), a crease or corner on a triangle scheme's mesh, and
-  // `smoothtriangles` on a quad scheme's mesh with triangles. Boundary
-  // interpolation has no effect on a closed mesh.
+  // corner (>= 10) and `smoothtriangles` on a quad scheme's mesh with
+  // triangles. Boundary interpolation has no effect on a closed mesh.
   static std::shared_ptr<const SurfaceTopology> create(std::shared_ptr<const Tables> tables, const Mesh& mesh);
 
   const Tables& tables() const { return *tables_; }

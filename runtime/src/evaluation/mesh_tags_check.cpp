@@ -29,21 +29,16 @@ constexpr double kInfinite = 10;  // OpenSubdiv's infinite sharpness
 std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<const Tables> tables, const Mesh& mesh) {
   if (!tables) throw EvaluationError("SurfaceTopology::create needs tables");
   const MeshTags& tags = mesh.tags;
-  const bool triangles = tables->family() == SchemeFamily::Triangle;
   SharpFeatures sharp;
   sharp.chaikin = tags.chaikin_creases;
   for (const auto& c : tags.creases) {
     const std::string edge = "the edge " + std::to_string(c.a) + "-" + std::to_string(c.b);
     if (c.sharpness >= kInfinite) refuse(mesh, c.line, "an infinitely sharp crease (sharpness " + number(c.sharpness) + " >= 10) on " + edge);
-    if (c.sharpness > 0 && triangles)
-      refuse(mesh, c.line, "a crease on " + edge + " of a triangle scheme's mesh (" + tables->scheme() + ")");
     sharp.edges.push_back({c.a, c.b, c.sharpness});
   }
   for (const auto& c : tags.corners) {
     const std::string vertex = "vertex " + std::to_string(c.vertex);
     if (c.sharpness >= kInfinite) refuse(mesh, c.line, "an infinitely sharp corner (sharpness " + number(c.sharpness) + " >= 10) at " + vertex);
-    if (c.sharpness > 0 && triangles)
-      refuse(mesh, c.line, "a corner at " + vertex + " of a triangle scheme's mesh (" + tables->scheme() + ")");
     sharp.vertices.push_back({c.vertex, c.sharpness});
   }
   if (tags.smooth_triangles && tables->family() == SchemeFamily::Quad &&
@@ -51,7 +46,6 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
     refuse(mesh, tags.smooth_triangles_line, "OpenSubdiv's smooth triangle rule (`smoothtriangles`)");
   std::vector<int> holes;
   for (const auto& h : tags.holes) holes.push_back(h.face);
-  if (triangles) sharp = {};  // sharpness 0 everywhere: nothing to honour
   return create(std::move(tables), mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, holes, sharp);
 }
 

@@ -63,10 +63,7 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
     if (t->tables_->family() == SchemeFamily::Quad) {
       t->family_ = std::make_unique<QuadFamily>(t->tables_, mesh, sharp);
     } else {
-      if (!sharp.empty())
-        throw MeshError("creases and corners are supported for quad schemes only so far; the scheme " +
-                        t->tables_->scheme() + " is a triangle scheme");
-      t->family_ = std::make_unique<TriangleFamily>(t->tables_, mesh);
+      t->family_ = std::make_unique<TriangleFamily>(t->tables_, mesh, sharp);
     }
   } catch (const MeshError& e) {
     throw MeshError(std::string(e.what()) + kNumbering);

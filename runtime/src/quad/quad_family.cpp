@@ -6,7 +6,7 @@
 
 #include "family/parameter_ops.hpp"
 #include "mesh/polygon_links.hpp"
-#include "crease_refinement.hpp"
+#include "quad_creases.hpp"
 #include "quad_refinement.hpp"
 
 namespace stencil_runtime {
@@ -57,24 +57,6 @@ int subface(const FaceDomain& d, const Fraction& u, const Fraction& v, std::arra
 }
 int subface(const FaceDomain& d, double u, double v, std::array<double, 2>& local) { return d.subface(u, v, local[0], local[1]); }
 
-// Refuses, before any work, sharpness that would take the whole-mesh steps
-// past limits::kMaxCreaseStepFaces.
-void check_crease_steps(const Connectivity& mesh, float sharpest) {
-  const auto steps = static_cast<int>(std::ceil(sharpest));
-  std::size_t faces = mesh.face_count();
-  bool quads = std::all_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k == 4; });
-  for (int k = 0; k < steps; ++k) {
-    if (quads) faces *= 4;
-    else faces = mesh.face_vertices.size();
-    quads = true;
-    if (faces > limits::kMaxCreaseStepFaces)
-      throw MeshError("a sharpness of " + std::to_string(sharpest) + " takes " + std::to_string(steps) +
-                      " whole-mesh subdivision steps, which would make more than " +
-                      std::to_string(limits::kMaxCreaseStepFaces) + " faces from this mesh's " +
-                      std::to_string(mesh.face_count()) + " (the limit); lower the sharpness");
-  }
-}
-
 }  // namespace
 
 QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivity& mesh, const SharpFeatures& features) {
@@ -106,15 +88,15 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   LevelSharpness sharpness = LevelSharpness::of(mesh, features);
   CurveCreaseRule crease;
   if (!sharpness.smooth()) {
-    crease = curve_crease_rule(t, tables.scheme());
-    check_crease_steps(mesh, sharpness.max());
+    crease = quad_crease_rule(t, tables.scheme());
+    check_crease_steps(mesh.face_count(), all_quads ? 4 * mesh.face_count() : mesh.face_vertices.size(), sharpness.max());
   }
   if (all_quads) {
     out.mesh = mesh;
   } else {
     QuadStep step = subdivide_polygons(mesh, links, t);
     if (!sharpness.smooth()) {
-      sharpness = sharpen_step(mesh, sharpness, crease, step);
+      sharpness = sharpen_step(mesh, sharpness, crease, quad_step_edge_points(mesh, step.mesh), step.step);
       ++out.crease_steps;
     }
     std::vector<std::size_t> offsets(mesh.face_count() + 1, 0);
@@ -129,7 +111,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   // left, after which every patch is stationary (smooth) again.
   while (!sharpness.smooth()) {
     QuadStep step = subdivide_quads(topo, t);
-    sharpness = sharpen_step(out.mesh, sharpness, crease, step);
+    sharpness = sharpen_step(out.mesh, sharpness, crease, quad_step_edge_points(out.mesh, step.mesh), step.step);
     out.hierarchy.add_uniform(4, 2);
     out.refinement.add(std::move(step.step));
     out.mesh = std::move(step.mesh);

@@ -69,6 +69,16 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
   t.edge_end_ = r.get<double>();
   t.edge_opposite_ = r.get<double>();
   const double neighbour_regular = r.get<double>();
+  if (version >= 5) {
+    const auto has_crease = r.get<std::uint8_t>();
+    if (has_crease > 1) r.fail("invalid crease flag " + std::to_string(has_crease));
+    const double centre = r.get<double>(), neighbour = r.get<double>();
+    if (has_crease) {
+      if (!std::isfinite(centre) || !std::isfinite(neighbour) || std::abs(centre + 2 * neighbour - 1) > 1e-12)
+        r.fail("the crease rule's weights do not sum to 1");
+      t.crease_ = TriangleTables::CreaseRule{centre, neighbour};
+    }
+  }
   // Bytes left before the checksum.
   auto left = [&] { return bytes.size() - 8 - std::min(bytes.size() - 8, r.position()); };
   const auto rate_count = r.get<std::uint32_t>();

@@ -14,6 +14,7 @@
 // own layout. Region 0 is the patch (EV, e_0, e_1).
 #include <cstdint>
 #include <string>
+#include <optional>
 #include <vector>
 
 #include "sparse_rows.hpp"
@@ -50,6 +51,12 @@ class TriangleTables {
   // Loop's edge rule (3/8 on the ends, 1/8 on the opposite corners); 0 for sqrt(3).
   double edge_end() const { return edge_end_; }
   double edge_opposite() const { return edge_opposite_; }
+  // The rule along a crease (the scheme's crease curve), when the scheme has one:
+  // new vertex = centre * old + neighbour * each crease neighbour; edge points are midpoints.
+  struct CreaseRule {
+    double centre = 0, neighbour = 0;
+  };
+  const std::optional<CreaseRule>& crease() const { return crease_; }
   // The vertex rule's weight per neighbour at valence v (the old vertex keeps
   // 1 - v * weight); false when the table does not hold valence v.
   bool neighbour_weight(int valence, double& weight) const;
@@ -135,6 +142,7 @@ class TriangleTables {
   std::uint64_t hash_ = 0;
   TriangleRefinement refinement_ = TriangleRefinement::Loop;
   double edge_end_ = 0, edge_opposite_ = 0;
+  std::optional<CreaseRule> crease_;
   std::vector<int> rates_;
   std::vector<int> slot_of_rate_;
   std::vector<Valence> valences_;

@@ -4,6 +4,7 @@
 #include <string>
 #include <type_traits>
 
+#include "family/crease_step.hpp"
 #include "family/parameter_ops.hpp"
 #include "triangle_steps.hpp"
 
@@ -13,6 +14,7 @@ struct TriangleFamily::Prepared {
   Refinement refinement;
   FaceHierarchy hierarchy;
   int steps = 0;
+  int crease_steps = 0;  // of the steps, those that still had sharp features
   Connectivity mesh;
   std::vector<TrianglePatch> patches;  // as the last isolation check found them
 };
@@ -80,7 +82,32 @@ std::pair<int, std::array<P, 2>> ternary_child(const P& u, const P& v) {
 
 }  // namespace
 
-TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Connectivity& mesh) {
+namespace {
+
+// Where a Loop step puts the edge point of each corner's edge: child c < 3 of
+// face f covers corner c and has that edge point second (loop_step).
+std::vector<int> loop_step_edge_points(const Connectivity& parent, const Connectivity& child) {
+  std::vector<int> out(parent.face_vertices.size());
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = child.face_vertices[3 * (4 * (k / 3) + k % 3) + 1];
+  return out;
+}
+
+// The crease rule of the tables, or a MeshError saying why there is none.
+CurveCreaseRule triangle_crease_rule(const Tables& tables) {
+  const TriangleTables& t = tables.triangle();
+  if (t.refinement() == TriangleRefinement::Sqrt3)
+    throw MeshError("the scheme " + tables.scheme() +
+                    " refines by sqrt(3), which splits no edges, so it has no crease rule: creases and corners are refused");
+  if (!t.crease())
+    throw MeshError("these " + tables.scheme() +
+                    " tables carry no crease rule (the scheme names no crease_curve, or the tables predate format 5): "
+                    "regenerate them with this stencilgen");
+  return {t.crease()->centre, t.crease()->neighbour};
+}
+
+}  // namespace
+
+TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Connectivity& mesh, const SharpFeatures& features) {
   const TriangleTables& t = tables.triangle();
   TriangleFamily::Prepared out;
   out.refinement = Refinement(mesh.vertex_count);
@@ -92,8 +119,24 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
   valences.finish();
   const bool sqrt3 = t.refinement() == TriangleRefinement::Sqrt3;
   out.mesh = mesh;
+  LevelSharpness sharpness = LevelSharpness::of(mesh, features);
+  if (!sharpness.smooth()) {
+    const CurveCreaseRule crease = triangle_crease_rule(tables);
+    check_crease_steps(mesh.face_count(), 4 * mesh.face_count(), sharpness.max());
+    // Loop steps with the sharp rules until every sharpness has decayed.
+    while (!sharpness.smooth()) {
+      TriangleStep step = loop_step(topo, t);
+      sharpness = sharpen_step(out.mesh, sharpness, crease, loop_step_edge_points(out.mesh, step.mesh), step.steps.front());
+      out.hierarchy.add_uniform(4, 2);
+      out.refinement.add(std::move(step.steps.front()));
+      out.mesh = std::move(step.mesh);
+      ++out.steps;
+      ++out.crease_steps;
+      topo = TriangleTopology(out.mesh);
+    }
+  }
   while (!gather_patches(topo, t, out.patches)) {
-    if (out.steps == limits::kMaxRefinementSteps)
+    if (out.steps - out.crease_steps == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices are still too close after " + std::to_string(limits::kMaxRefinementSteps) + " " +
                       (sqrt3 ? "double sqrt(3) steps" : "subdivision steps"));
     TriangleStep step = sqrt3 ? sqrt3_double_step(topo, t) : loop_step(topo, t);
@@ -108,13 +151,14 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
 }
 
 
-TriangleFamily::TriangleFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh)
-    : TriangleFamily(tables, prepare(*tables, mesh)) {}
+TriangleFamily::TriangleFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const SharpFeatures& sharp)
+    : TriangleFamily(tables, prepare(*tables, mesh, sharp)) {}
 
 TriangleFamily::TriangleFamily(std::shared_ptr<const Tables> tables, Prepared prepared)
     : holder_(std::move(tables)),
       tables_(holder_->triangle()),
       steps_(prepared.steps),
+      crease_steps_(prepared.crease_steps),
       topology_(prepared.mesh),
       patches_(std::move(prepared.patches)) {
   if (tables_.has_descent()) descent_.emplace(tables_);
@@ -245,7 +289,8 @@ Derivatives TriangleFamily::derivatives(std::size_t face, const ExactParameter& 
 }
 
 std::string TriangleFamily::preparation() const {
-  return std::to_string(steps_) + (sqrt3() ? " double sqrt(3) step" : " subdivision step") + (steps_ == 1 ? "" : "s");
+  return std::to_string(steps_) + (sqrt3() ? " double sqrt(3) step" : " subdivision step") + (steps_ == 1 ? "" : "s") +
+         (crease_steps_ > 0 ? " (" + std::to_string(crease_steps_) + " of them with the creases' sharp rules)" : "");
 }
 
 FaceDomain TriangleFamily::domain(std::size_t) const { return FaceDomain::of(SchemeFamily::Triangle, 3); }

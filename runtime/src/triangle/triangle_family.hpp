@@ -25,7 +25,9 @@ namespace stencil_runtime {
 class TriangleFamily final : public Family {
  public:
   // Throws MeshError naming the face, edge or vertex (see SurfaceTopology::create).
-  TriangleFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh);
+  // `sharp`: semi-sharp creases and corners (Loop only), resolved by whole-mesh
+  // Loop steps with OpenSubdiv's creasing rules (family/crease_step.hpp).
+  TriangleFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const SharpFeatures& sharp = {});
 
   std::string preparation() const override;
   int refinement_steps() const override { return steps_; }
@@ -93,12 +95,13 @@ class TriangleFamily final : public Family {
   bool held_stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const;
   const TrianglePatchDescent& checked_descent() const;
   struct Prepared;
-  static Prepared prepare(const Tables& tables, const Connectivity& mesh);
+  static Prepared prepare(const Tables& tables, const Connectivity& mesh, const SharpFeatures& sharp);
   TriangleFamily(std::shared_ptr<const Tables> tables, Prepared prepared);
 
   std::shared_ptr<const Tables> holder_;  // keeps tables_ alive
   const TriangleTables& tables_;
   int steps_ = 0;
+  int crease_steps_ = 0;  // of the steps, those with sharp rules
   TriangleTopology topology_;
   std::vector<TrianglePatch> patches_;
   std::optional<TrianglePatchDescent> descent_;  // when the tables hold the patch subdivision

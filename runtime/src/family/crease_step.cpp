@@ -1,25 +1,12 @@
-#include "crease_refinement.hpp"
+#include "crease_step.hpp"
 
 #include <cmath>
 #include <map>
 #include <string>
 
-namespace stencil_runtime {
+#include "stencil_runtime/limits.hpp"
 
-CurveCreaseRule curve_crease_rule(const QuadTables& t, const std::string& scheme) {
-  const CurveCreaseRule rule{2 * t.edge_end(), 2 * t.edge_wing()};
-  const double tol = 1e-14;
-  bool product = std::abs(t.face_corner() - 0.25) <= tol && std::abs(rule.centre + 2 * rule.neighbour - 1) <= tol;
-  if (const auto* v = t.vertex_rule(4))
-    product = product && std::abs(v->centre - rule.centre * rule.centre) <= tol &&
-              std::abs(v->edge - rule.centre * rule.neighbour) <= tol &&
-              std::abs(v->face - rule.neighbour * rule.neighbour) <= tol;
-  if (!product)
-    throw MeshError("the scheme " + scheme +
-                    "'s regular rules are not the tensor product of a curve with midpoint edge rule, so the runtime has "
-                    "no crease rule for it: creases and corners are refused");
-  return rule;
-}
+namespace stencil_runtime {
 
 namespace {
 
@@ -74,20 +61,31 @@ SparseEntries vertex_mask(CreaseRule rule, const RefinementStep& step, std::uint
 
 }  // namespace
 
+void check_crease_steps(std::size_t faces, std::size_t first, float sharpest) {
+  const auto steps = static_cast<int>(std::ceil(sharpest));
+  std::size_t made = first;
+  for (int k = 0; k < steps; ++k, made *= 4)
+    if (made > limits::kMaxCreaseStepFaces)
+      throw MeshError("a sharpness of " + std::to_string(sharpest) + " takes " + std::to_string(steps) +
+                      " whole-mesh subdivision steps, which would make more than " +
+                      std::to_string(limits::kMaxCreaseStepFaces) + " faces from this mesh's " + std::to_string(faces) +
+                      " (the limit); lower the sharpness");
+}
+
 LevelSharpness sharpen_step(const Connectivity& parent, const LevelSharpness& sharpness, const CurveCreaseRule& curve,
-                            QuadStep& step) {
+                            const std::vector<int>& new_edge_points, RefinementStep& step) {
   const bool chaikin = sharpness.chaikin();
   // Each vertex's neighbours (one per outgoing half-edge, so one per incident
   // edge on a closed mesh) and the edge point of each of those edges.
   std::vector<std::vector<int>> neighbours(parent.vertex_count);
   std::vector<std::vector<int>> edge_points(parent.vertex_count);
-  std::size_t corner = 0, child = 0;
+  std::size_t corner = 0;
   for (std::size_t f = 0; f < parent.face_count(); ++f) {
     const std::size_t k = static_cast<std::size_t>(parent.face_sizes[f]);
-    for (std::size_t c = 0; c < k; ++c, ++child) {
+    for (std::size_t c = 0; c < k; ++c) {
       const int a = parent.face_vertices[corner + c], b = parent.face_vertices[corner + (c + 1) % k];
       neighbours[static_cast<std::size_t>(a)].push_back(b);
-      edge_points[static_cast<std::size_t>(a)].push_back(step.mesh.face_vertices[4 * child + 1]);
+      edge_points[static_cast<std::size_t>(a)].push_back(new_edge_points[corner + c]);
     }
     corner += k;
   }
@@ -113,10 +111,10 @@ LevelSharpness sharpen_step(const Connectivity& parent, const LevelSharpness& sh
     const CreaseRule p_rule = crease_rule(pv, ps.data(), n), c_rule = crease_rule(cv, cs.data(), n);
     if (p_rule == CreaseRule::Smooth || p_rule == CreaseRule::Dart) continue;
     const auto u = static_cast<std::uint32_t>(v);
-    SparseEntries mask = vertex_mask(p_rule, step.step, u, nb, ps, curve);
+    SparseEntries mask = vertex_mask(p_rule, step, u, nb, ps, curve);
     if (c_rule != p_rule) {
       const double w = transition_weight(pv, cv, ps.data(), cs.data(), n, chaikin);
-      mask = blend(w, mask, 1.0 - w, vertex_mask(c_rule, step.step, u, nb, cs, curve));
+      mask = blend(w, mask, 1.0 - w, vertex_mask(c_rule, step, u, nb, cs, curve));
     }
     rows[v] = std::move(mask);
   }
@@ -131,9 +129,9 @@ LevelSharpness sharpen_step(const Connectivity& parent, const LevelSharpness& sh
       if (s <= 0) continue;
       const SparseEntries mid{{static_cast<std::uint32_t>(a), 0.5}, {static_cast<std::uint32_t>(b), 0.5}};
       const bool stays = next.edge(a, e) > 0 && next.edge(e, b) > 0;
-      rows[static_cast<std::size_t>(e)] = stays ? mid : blend(s, mid, 1.0 - static_cast<double>(s), row_of(step.step, static_cast<std::size_t>(e)));
+      rows[static_cast<std::size_t>(e)] = stays ? mid : blend(s, mid, 1.0 - static_cast<double>(s), row_of(step, static_cast<std::size_t>(e)));
     }
-  if (!rows.empty()) step.step = replaced(step.step, rows);
+  if (!rows.empty()) step = replaced(step, rows);
   return next;
 }
 
