@@ -25,6 +25,7 @@ struct Creasing {
   std::vector<int> corners;
   std::vector<float> corner_sharpness;
   bool chaikin = false;
+  bool smooth_triangles = false;  // Catmark's TRI_SUB_SMOOTH
 };
 
 inline std::unique_ptr<osd::Far::TopologyRefiner> make_refiner(int num_vertices, const std::vector<int>& sizes,
@@ -48,6 +49,7 @@ inline std::unique_ptr<osd::Far::TopologyRefiner> make_refiner(int num_vertices,
   osd::Sdc::Options sdc;
   sdc.SetVtxBoundaryInterpolation(osd::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
   if (creasing.chaikin) sdc.SetCreasingMethod(osd::Sdc::Options::CREASE_CHAIKIN);
+  if (creasing.smooth_triangles) sdc.SetTriangleSubdivision(osd::Sdc::Options::TRI_SUB_SMOOTH);
   using Factory = osd::Far::TopologyRefinerFactory<osd::Far::TopologyDescriptor>;
   return std::unique_ptr<osd::Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(scheme, sdc)));
 }

@@ -72,7 +72,7 @@ std::vector<std::pair<int, int>> edges_of(const Mesh& m) {
 }
 
 struct Features {
-  SharpFeatures ours;
+  MeshFeatures ours;
   bfr_reference::Creasing osd;
   void crease(int a, int b, float s) {
     ours.edges.push_back({a, b, s});
@@ -85,6 +85,7 @@ struct Features {
     osd.corner_sharpness.push_back(s);
   }
   void chaikin() { ours.chaikin = osd.chaikin = true; }
+  void smooth_triangles() { ours.smooth_triangles = osd.smooth_triangles = true; }
 };
 
 Surface surface_with(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, const Features& f) {
@@ -127,9 +128,10 @@ struct Primvar {
   }
 };
 
-// Far's limit points of the vertices of uniform refinement level `level`
-// (in double), every sharpness having decayed by then.
-std::vector<Point> far_limit_points(const Mesh& mesh, const Features& f, int level, bfr_reference::osd::Sdc::SchemeType scheme) {
+// Far's vertices of uniform refinement level `level` (in double), and, with
+// `limit`, their limit points (every sharpness having decayed by then).
+std::vector<Point> far_points(const Mesh& mesh, const Features& f, int level, bfr_reference::osd::Sdc::SchemeType scheme,
+                              bool with_limit) {
   namespace osd = bfr_reference::osd;
   auto refiner = bfr_reference::make_refiner(static_cast<int>(mesh.vertex_count()), mesh.face_sizes, mesh.face_vertices,
                                              scheme, {}, f.osd);
@@ -146,9 +148,11 @@ std::vector<Point> far_limit_points(const Mesh& mesh, const Features& f, int lev
     primvars.Interpolate(l, src, dst);
     src = dst;
   }
-  std::vector<Primvar> limit(static_cast<std::size_t>(refiner->GetLevel(level).GetNumVertices()));
-  Primvar* destination = limit.data();
-  primvars.Limit(src, destination);
+  std::vector<Primvar> limit(src, src + refiner->GetLevel(level).GetNumVertices());
+  if (with_limit) {
+    Primvar* destination = limit.data();
+    primvars.Limit(src, destination);
+  }
   std::vector<Point> out;
   for (const Primvar& q : limit) out.push_back({q.p[0], q.p[1], q.p[2]});
   return out;
@@ -159,7 +163,7 @@ std::vector<Point> far_limit_points(const Mesh& mesh, const Features& f, int lev
 // points at that level (which are those nodes, in another order).
 double far_difference(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, const Features& f, int level) {
   const Surface surface = surface_with(tables, mesh, f);
-  std::vector<Point> reference = far_limit_points(mesh, f, level, osd_scheme(tables));
+  std::vector<Point> reference = far_points(mesh, f, level, osd_scheme(tables), true);
   std::sort(reference.begin(), reference.end());
   const double size = extent(mesh);
   const long n = 1L << level;
@@ -177,6 +181,25 @@ double far_difference(const std::shared_ptr<const Tables>& tables, const Mesh& m
           nearest = std::min(nearest, distance(ours, *it));
         worst = std::max(worst, std::min(nearest, 1e300) / size);
       }
+  }
+  return worst;
+}
+
+// Largest distance, over the mesh size, between the prepared mesh's vertices
+// (every step so far is a whole-mesh step) and Far's vertices at the same
+// level, matched as sets.
+double far_prepared_difference(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, const Features& f) {
+  const Surface surface = surface_with(tables, mesh, f);
+  std::vector<Point> reference = far_points(mesh, f, surface.topology().refinement_steps(), osd_scheme(tables), false);
+  REQUIRE(reference.size() == surface.prepared_positions().size());
+  std::sort(reference.begin(), reference.end());
+  const double size = extent(mesh);
+  double worst = 0;
+  for (const Point& ours : surface.prepared_positions()) {
+    const auto first = std::lower_bound(reference.begin(), reference.end(), Point{ours[0] - 1e-6 * size, -1e300, -1e300});
+    double nearest = 1e300;
+    for (auto it = first; it != reference.end() && (*it)[0] <= ours[0] + 1e-6 * size; ++it) nearest = std::min(nearest, distance(ours, *it));
+    worst = std::max(worst, nearest / size);
   }
   return worst;
 }
@@ -385,4 +408,33 @@ TEST_CASE("creases on sqrt(3) meshes and on tables without a crease rule are ref
   infinite.crease(edges_of(ico)[0].first, edges_of(ico)[0].second, 10);
   CHECK_THROWS_WITH(surface_with(Tables::load(generated_table("loop", "--valence 3-8 --n 8", "sgt").string()), ico, infinite),
                     Catch::Contains("infinitely sharp"));
+}
+
+TEST_CASE("OpenSubdiv's smooth triangle rule on Catmull-Clark meshes with triangles equals Far's and Bfr's",
+          "[runtime][creases][opensubdiv]") {
+  const auto tables = catmull_clark();
+  for (const Mesh& mesh : {house(), load("tri-mix")}) {
+    for (bool creased : {false, true}) {
+      Features f;
+      f.smooth_triangles();
+      if (creased) f.crease(mesh.face_vertices[0], mesh.face_vertices[1], 1.5f);
+      INFO(mesh.face_count() << " faces" << (creased ? ", one crease" : ""));
+      CHECK(far_prepared_difference(tables, mesh, f) < 1e-14);
+      CHECK(bfr_difference(tables, mesh, f) < 1e-10);  // its quads, where it has any
+      Features plain = f;
+      plain.ours.smooth_triangles = plain.osd.smooth_triangles = false;
+      CHECK(far_prepared_difference(tables, mesh, plain) < 1e-14);
+      // The rule matters: the prepared points move by a good part of the size.
+      const Surface with = surface_with(tables, mesh, f), without = surface_with(tables, mesh, plain);
+      double moved = 0;
+      for (std::size_t k = 0; k < with.prepared_positions().size(); ++k)
+        moved = std::max(moved, distance(with.prepared_positions()[k], without.prepared_positions()[k]) / extent(mesh));
+      CHECK(moved > 1e-2);
+    }
+  }
+  // nonpoly's polygon edge rule is its own: the Catmull-Clark option is refused.
+  Features f;
+  f.smooth_triangles();
+  const auto nonpoly = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 8", "sgs").string());
+  CHECK_THROWS_WITH(surface_with(nonpoly, house(), f), Catch::Contains("smooth triangle rule") && Catch::Contains("nonpoly"));
 }

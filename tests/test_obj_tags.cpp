@@ -128,12 +128,14 @@ TEST_CASE("tags the runtime cannot honour are refused, tags without effect chang
     CHECK_THROWS_WITH(SurfaceTopology::create(loop, read_obj((dir / "tet-crease.obj").string())),
                       Catch::Contains("tet-crease.obj:9") && Catch::Contains("infinitely sharp") && Catch::Contains("not supported yet"));
   }
-  // Smooth triangles matter on a quad scheme's mesh with triangles only.
+  // Smooth triangles are Catmull-Clark's rule: refused, with the line, on nonpoly's mesh with triangles.
   {
     std::ofstream(dir / "tet.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
                                       "t smoothtriangles 0/0/1 smooth\n";
-    CHECK_THROWS_WITH(SurfaceTopology::create(tables, read_obj((dir / "tet.obj").string())),
-                      Catch::Contains("tet.obj:9") && Catch::Contains("smoothtriangles"));
+    const auto nonpoly = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 4", "sgs").string());
+    CHECK_THROWS_WITH(SurfaceTopology::create(nonpoly, read_obj((dir / "tet.obj").string())),
+                      Catch::Contains("tet.obj:9") && Catch::Contains("smoothtriangles") && Catch::Contains("nonpoly"));
+    CHECK_NOTHROW(SurfaceTopology::create(tables, read_obj((dir / "tet.obj").string())));
   }
   // Without effect on a closed smooth mesh: the same surface, bit for bit.
   const Mesh plain = read_obj((kMeshes / "cube.obj").string());
@@ -154,7 +156,7 @@ TEST_CASE("semi-sharp crease and corner tags give the surface of the same featur
     const std::string method = chaikin ? "t creasemethod 0/0/1 chaikin\n" : "";
     const Mesh tagged = read_obj(tagged_cube(dir, "creased", "t crease 3/2/0 0 1 3 2.5 0.5\nt corner 1/1/0 6 1.5\n" + method).string());
     const Mesh plain = read_obj((kMeshes / "cube.obj").string());
-    SharpFeatures features;
+    MeshFeatures features;
     features.edges = {{0, 1, 2.5}, {1, 3, 0.5}};
     features.vertices = {{6, 1.5}};
     features.chaikin = chaikin;

@@ -44,12 +44,16 @@ struct MeshTags {
   long smooth_triangles_line = 0;
 };
 
-// Semi-sharp creases and corners in OpenSubdiv's conventions (Sdc::Crease):
-// a sharpness per edge (its two end vertices) and per vertex; 0 is smooth, a
-// sharpness s keeps the feature sharp for about s subdivision steps, 10 or
-// more is infinitely sharp. Chaikin's method spreads an edge's sharpness
-// along the crease as it decays; the default is uniform (subtract 1 a step).
-struct SharpFeatures {
+// What changes a mesh's subdivision rules, in OpenSubdiv's conventions:
+// semi-sharp creases and corners (Sdc::Crease), a sharpness per edge (its two
+// end vertices) and per vertex; 0 is smooth, a sharpness s keeps the feature
+// sharp for about s subdivision steps, 10 or more is infinitely sharp.
+// Chaikin's method spreads an edge's sharpness along the crease as it decays;
+// the default is uniform (subtract 1 a step). `smooth_triangles` is
+// OpenSubdiv's Catmull-Clark option TRI_SUB_SMOOTH (the `smoothtriangles`
+// tag): the first step's edge points next to triangles lean towards the
+// triangles' centres.
+struct MeshFeatures {
   struct Edge {
     int a = 0, b = 0;
     double sharpness = 0;
@@ -61,8 +65,7 @@ struct SharpFeatures {
   std::vector<Edge> edges;
   std::vector<Vertex> vertices;
   bool chaikin = false;
-
-  bool empty() const { return edges.empty() && vertices.empty(); }
+  bool smooth_triangles = false;
 };
 
 struct Mesh {

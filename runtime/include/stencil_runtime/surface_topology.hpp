@@ -52,7 +52,7 @@ class SurfaceTopology {
   // becoming boundaries of the output. Throws MeshError for an index out of
   // range or when every face is a hole.
   //
-  // `sharp`: semi-sharp creases and corners (OpenSubdiv's rules, either crease
+  // `features`: semi-sharp creases and corners (OpenSubdiv's rules, either crease
   // method): the preparation applies whole-mesh steps with the sharp rules
   // until every sharpness has decayed (ceil of the largest), the crease rule
   // being the scheme's own curve (a quad scheme's regular curve; a Loop
@@ -60,15 +60,19 @@ class SurfaceTopology {
   // from the tables. Throws MeshError for an edge or vertex the mesh lacks, a
   // negative or infinite (>= 10) sharpness, too many steps
   // (limits::kMaxCreaseStepFaces), or tables without a crease rule (sqrt(3)).
+  // `features.smooth_triangles` (OpenSubdiv's TRI_SUB_SMOOTH) changes the
+  // polygon step's edge points next to triangles; it needs Catmull-Clark's
+  // polygon edge rule (MeshError otherwise) and has no effect on Loop.
   static std::shared_ptr<const SurfaceTopology> create(std::shared_ptr<const Tables> tables, std::size_t vertex_count,
                                                        std::vector<int> face_sizes, std::vector<int> face_vertices,
-                                                       const std::vector<int>& holes = {}, const SharpFeatures& sharp = {});
+                                                       const std::vector<int>& holes = {}, const MeshFeatures& features = {});
   // The same from a mesh read from a file, with its tags: holes, creases,
-  // corners and the crease method as above. What the runtime cannot honour
-  // yet is refused with a MeshError naming the file and line of the tag (the
-  // smooth surface would be silently wrong): an infinitely sharp crease or
-  // corner (>= 10) and `smoothtriangles` on a quad scheme's mesh with
-  // triangles. Boundary interpolation has no effect on a closed mesh.
+  // corners, the crease method and smooth triangles as above. What the
+  // runtime cannot honour yet is refused with a MeshError naming the file and
+  // line of the tag (the surface would be silently wrong): an infinitely sharp
+  // crease or corner (>= 10), and `smoothtriangles` on a quad scheme without
+  // Catmull-Clark's polygon edge rule. Boundary interpolation has no effect on
+  // a closed mesh.
   static std::shared_ptr<const SurfaceTopology> create(std::shared_ptr<const Tables> tables, const Mesh& mesh);
 
   const Tables& tables() const { return *tables_; }

@@ -1,11 +1,13 @@
-// SurfaceTopology::create from a Mesh: its OBJ tags are checked first, so that
-// a tag the runtime cannot honour is an error instead of a silently smooth
-// surface (issue 17 adds creases, corners and holes).
+// SurfaceTopology::create from a Mesh: its OBJ tags become the features the
+// runtime honours (holes, semi-sharp creases and corners, the crease method,
+// smooth triangles), and a tag it cannot honour yet is an error naming its
+// line instead of a silently different surface.
 #include <algorithm>
 #include <sstream>
 #include <string>
 
 #include "stencil_runtime/surface_topology.hpp"
+#include "tables/quad_tables.hpp"
 
 namespace stencil_runtime {
 
@@ -29,24 +31,31 @@ constexpr double kInfinite = 10;  // OpenSubdiv's infinite sharpness
 std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<const Tables> tables, const Mesh& mesh) {
   if (!tables) throw EvaluationError("SurfaceTopology::create needs tables");
   const MeshTags& tags = mesh.tags;
-  SharpFeatures sharp;
-  sharp.chaikin = tags.chaikin_creases;
+  MeshFeatures features;
+  features.chaikin = tags.chaikin_creases;
   for (const auto& c : tags.creases) {
     const std::string edge = "the edge " + std::to_string(c.a) + "-" + std::to_string(c.b);
     if (c.sharpness >= kInfinite) refuse(mesh, c.line, "an infinitely sharp crease (sharpness " + number(c.sharpness) + " >= 10) on " + edge);
-    sharp.edges.push_back({c.a, c.b, c.sharpness});
+    features.edges.push_back({c.a, c.b, c.sharpness});
   }
   for (const auto& c : tags.corners) {
     const std::string vertex = "vertex " + std::to_string(c.vertex);
     if (c.sharpness >= kInfinite) refuse(mesh, c.line, "an infinitely sharp corner (sharpness " + number(c.sharpness) + " >= 10) at " + vertex);
-    sharp.vertices.push_back({c.vertex, c.sharpness});
+    features.vertices.push_back({c.vertex, c.sharpness});
   }
-  if (tags.smooth_triangles && tables->family() == SchemeFamily::Quad &&
-      std::find(mesh.face_sizes.begin(), mesh.face_sizes.end(), 3) != mesh.face_sizes.end())
-    refuse(mesh, tags.smooth_triangles_line, "OpenSubdiv's smooth triangle rule (`smoothtriangles`)");
+  // Smooth triangles change Catmull-Clark's first step only (Loop ignores the tag, as OpenSubdiv).
+  const bool triangles = std::find(mesh.face_sizes.begin(), mesh.face_sizes.end(), 3) != mesh.face_sizes.end();
+  if (tags.smooth_triangles && triangles && tables->family() == SchemeFamily::Quad) {
+    const QuadTables& quad = tables->quad();
+    if (quad.polygon_edge_end() != 0.25 || quad.polygon_edge_face() != 0.25)
+      refuse(mesh, tags.smooth_triangles_line,
+             "OpenSubdiv's smooth triangle rule (`smoothtriangles`, made for Catmull-Clark's polygon edge rule) on the "
+             "scheme " + tables->scheme());
+    features.smooth_triangles = true;
+  }
   std::vector<int> holes;
   for (const auto& h : tags.holes) holes.push_back(h.face);
-  return create(std::move(tables), mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, holes, sharp);
+  return create(std::move(tables), mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, holes, features);
 }
 
 }  // namespace stencil_runtime

@@ -30,7 +30,7 @@ SurfaceTopology::~SurfaceTopology() = default;
 
 std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<const Tables> tables, std::size_t vertex_count,
                                                                std::vector<int> face_sizes, std::vector<int> face_vertices,
-                                                               const std::vector<int>& holes, const SharpFeatures& sharp) {
+                                                               const std::vector<int>& holes, const MeshFeatures& features) {
   if (!tables) throw EvaluationError("SurfaceTopology::create needs tables");
   if (face_sizes.empty()) throw MeshError("the mesh has no faces");
   if (vertex_count > limits::kMaxMeshElements || face_sizes.size() > limits::kMaxMeshElements)
@@ -61,9 +61,9 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   const Connectivity mesh{t->vertex_count_, t->face_sizes_, t->face_vertices_};
   try {
     if (t->tables_->family() == SchemeFamily::Quad) {
-      t->family_ = std::make_unique<QuadFamily>(t->tables_, mesh, sharp);
+      t->family_ = std::make_unique<QuadFamily>(t->tables_, mesh, features);
     } else {
-      t->family_ = std::make_unique<TriangleFamily>(t->tables_, mesh, sharp);
+      t->family_ = std::make_unique<TriangleFamily>(t->tables_, mesh, features);
     }
   } catch (const MeshError& e) {
     throw MeshError(std::string(e.what()) + kNumbering);

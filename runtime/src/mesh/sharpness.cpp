@@ -25,7 +25,7 @@ bool semi_sharp(float s) { return s > 0 && s < kInfiniteSharpness; }
 
 }  // namespace
 
-LevelSharpness LevelSharpness::of(const Connectivity& mesh, const SharpFeatures& features) {
+LevelSharpness LevelSharpness::of(const Connectivity& mesh, const MeshFeatures& features) {
   LevelSharpness out;
   out.chaikin_ = features.chaikin;
   std::set<std::pair<int, int>> edges;

@@ -26,7 +26,7 @@ class LevelSharpness {
   // edge that is not an edge of the mesh, a vertex that does not exist, a
   // sharpness that is negative or not finite, and (until the crease tables
   // exist) an infinitely sharp one. A feature given twice takes its last value.
-  static LevelSharpness of(const Connectivity& mesh, const SharpFeatures& features);
+  static LevelSharpness of(const Connectivity& mesh, const MeshFeatures& features);
 
   bool chaikin() const { return chaikin_; }
   bool smooth() const { return edges_.empty() && vertices_.empty(); }

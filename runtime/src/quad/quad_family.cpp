@@ -59,7 +59,7 @@ int subface(const FaceDomain& d, double u, double v, std::array<double, 2>& loca
 
 }  // namespace
 
-QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivity& mesh, const SharpFeatures& features) {
+QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivity& mesh, const MeshFeatures& features) {
   const QuadTables& t = tables.quad();
   QuadFamily::Prepared out;
   out.refinement = Refinement(mesh.vertex_count);
@@ -94,7 +94,11 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   if (all_quads) {
     out.mesh = mesh;
   } else {
-    QuadStep step = subdivide_polygons(mesh, links, t);
+    const bool triangles = std::find(mesh.face_sizes.begin(), mesh.face_sizes.end(), 3) != mesh.face_sizes.end();
+    if (features.smooth_triangles && triangles && (t.polygon_edge_end() != 0.25 || t.polygon_edge_face() != 0.25))
+      throw MeshError("OpenSubdiv's smooth triangle rule (`smoothtriangles`) is made for Catmull-Clark's polygon edge "
+                      "rule (1/4 each end and each face point); the scheme " + tables.scheme() + " has its own");
+    QuadStep step = subdivide_polygons(mesh, links, t, features.smooth_triangles);
     if (!sharpness.smooth()) {
       sharpness = sharpen_step(mesh, sharpness, crease, quad_step_edge_points(mesh, step.mesh), step.step);
       ++out.crease_steps;
@@ -135,7 +139,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
 }
 
 
-QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const SharpFeatures& sharp)
+QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const MeshFeatures& sharp)
     : QuadFamily(tables, prepare(*tables, mesh, sharp)) {}
 
 QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, Prepared prepared)

@@ -25,7 +25,7 @@ class QuadFamily final : public Family {
   // Throws MeshError naming the face, edge or vertex (see SurfaceTopology::create).
   // `sharp`: semi-sharp creases and corners, resolved by whole-mesh steps with
   // OpenSubdiv's creasing rules (crease_refinement.hpp) before the patches are gathered.
-  QuadFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const SharpFeatures& sharp = {});
+  QuadFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const MeshFeatures& sharp = {});
 
   std::string preparation() const override;
   int refinement_steps() const override { return steps_ + (polygon_step_ ? 1 : 0); }
@@ -65,7 +65,7 @@ class QuadFamily final : public Family {
 
  private:
   struct Prepared;
-  static Prepared prepare(const Tables& tables, const Connectivity& mesh, const SharpFeatures& sharp);
+  static Prepared prepare(const Tables& tables, const Connectivity& mesh, const MeshFeatures& sharp);
   QuadFamily(std::shared_ptr<const Tables> tables, Prepared prepared);
 
   std::shared_ptr<const Tables> holder_;  // keeps tables_ alive

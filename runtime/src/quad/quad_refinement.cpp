@@ -79,7 +79,7 @@ QuadStep subdivide_quads(const QuadTopology& topo, const QuadTables& t) {
   return out;
 }
 
-QuadStep subdivide_polygons(const Connectivity& mesh, const PolygonLinks& links, const QuadTables& t) {
+QuadStep subdivide_polygons(const Connectivity& mesh, const PolygonLinks& links, const QuadTables& t, bool smooth_triangles) {
   const std::size_t nf = mesh.face_count(), nv = mesh.vertex_count;
   const auto& start = links.start;
   const std::size_t nh = start[nf];
@@ -124,9 +124,17 @@ QuadStep subdivide_polygons(const Connectivity& mesh, const PolygonLinks& links,
     out.step.add_row(row);
   }
   for (std::size_t h : edge_owner) {  // both ends and both face points
-    row.assign({{vert(h), t.polygon_edge_end()}, {vert(links.next[h]), t.polygon_edge_end()}});
-    add_face_point(links.face_of[h], t.polygon_edge_face());
-    add_face_point(links.face_of[links.twin[h]], t.polygon_edge_face());
+    const std::size_t f = links.face_of[h], g = links.face_of[links.twin[h]];
+    double end = t.polygon_edge_end(), face = t.polygon_edge_face();
+    if (smooth_triangles && (mesh.face_sizes[f] == 3 || mesh.face_sizes[g] == 3)) {
+      // OpenSubdiv's constant (Sdc's CATMARK_SMOOTH_TRI_EDGE_WEIGHT), in its order of operations.
+      auto weight = [&](std::size_t k) { return mesh.face_sizes[k] == 3 ? 0.470 : 0.25; };
+      face = 0.5 * (weight(f) + weight(g));
+      end = 0.5 * (1.0 - 2.0 * face);
+    }
+    row.assign({{vert(h), end}, {vert(links.next[h]), end}});
+    add_face_point(f, face);
+    add_face_point(g, face);
     out.step.add_row(row);
   }
   out.mesh.vertex_count = out.step.rows();

@@ -30,6 +30,10 @@ QuadStep subdivide_quads(const QuadTopology& topology, const QuadTables& rules);
 // of any size (>= 3); every face of the result is a quad. Children of face f
 // (k corners) are faces offset(f) + c, c = 0..k-1, laid out as in
 // subdivide_quads. Throws MeshError naming the vertex whose valence has no rule.
-QuadStep subdivide_polygons(const Connectivity& mesh, const PolygonLinks& links, const QuadTables& rules);
+// `smooth_triangles`: OpenSubdiv's Catmull-Clark option TRI_SUB_SMOOTH, for an
+// edge next to one or two triangles: each face point weighs f = the mean of
+// 0.47 per triangle and 1/4 per other face, each end (1 - 2f) / 2.
+QuadStep subdivide_polygons(const Connectivity& mesh, const PolygonLinks& links, const QuadTables& rules,
+                            bool smooth_triangles = false);
 
 }  // namespace stencil_runtime

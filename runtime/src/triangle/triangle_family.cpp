@@ -107,7 +107,7 @@ CurveCreaseRule triangle_crease_rule(const Tables& tables) {
 
 }  // namespace
 
-TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Connectivity& mesh, const SharpFeatures& features) {
+TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Connectivity& mesh, const MeshFeatures& features) {
   const TriangleTables& t = tables.triangle();
   TriangleFamily::Prepared out;
   out.refinement = Refinement(mesh.vertex_count);
@@ -151,7 +151,7 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
 }
 
 
-TriangleFamily::TriangleFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const SharpFeatures& sharp)
+TriangleFamily::TriangleFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const MeshFeatures& sharp)
     : TriangleFamily(tables, prepare(*tables, mesh, sharp)) {}
 
 TriangleFamily::TriangleFamily(std::shared_ptr<const Tables> tables, Prepared prepared)

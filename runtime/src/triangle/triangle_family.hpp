@@ -27,7 +27,7 @@ class TriangleFamily final : public Family {
   // Throws MeshError naming the face, edge or vertex (see SurfaceTopology::create).
   // `sharp`: semi-sharp creases and corners (Loop only), resolved by whole-mesh
   // Loop steps with OpenSubdiv's creasing rules (family/crease_step.hpp).
-  TriangleFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const SharpFeatures& sharp = {});
+  TriangleFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const MeshFeatures& sharp = {});
 
   std::string preparation() const override;
   int refinement_steps() const override { return steps_; }
@@ -95,7 +95,7 @@ class TriangleFamily final : public Family {
   bool held_stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const;
   const TrianglePatchDescent& checked_descent() const;
   struct Prepared;
-  static Prepared prepare(const Tables& tables, const Connectivity& mesh, const SharpFeatures& sharp);
+  static Prepared prepare(const Tables& tables, const Connectivity& mesh, const MeshFeatures& sharp);
   TriangleFamily(std::shared_ptr<const Tables> tables, Prepared prepared);
 
   std::shared_ptr<const Tables> holder_;  // keeps tables_ alive
