@@ -57,7 +57,8 @@ const rt::Mesh& bundled_mesh(const char* name) {
 void use_surface(const std::shared_ptr<const rt::Tables>& tables, const rt::Mesh& mesh, const std::vector<int>& rates,
                  Budget& budget) {
   try {
-    const auto topology = rt::SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
+    // With the mesh's tags (holes, creases, corners, smooth triangles), as the tools do.
+    const auto topology = rt::SurfaceTopology::create(tables, mesh);
     const rt::Surface surface(topology, mesh.positions);
     rt::tessellate(surface, rates, {1});
     const std::size_t faces = std::min<std::size_t>(topology->face_count(), 8);

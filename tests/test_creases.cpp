@@ -404,6 +404,10 @@ TEST_CASE("creases on sqrt(3) meshes and on tables without a crease rule are ref
   Features bad;
   bad.crease(0, 0, 1);
   CHECK_THROWS_WITH(surface_with(catmull_clark(), load("cube"), bad), Catch::Contains("edge 0-0 names no edge"));
+  Features too_many;  // 10 whole-mesh steps from 6 faces: 6.3 million faces, over the limit, refused before any work
+  too_many.crease(0, 1, 9.5f);
+  CHECK_THROWS_WITH(surface_with(catmull_clark(), load("cube"), too_many),
+                    Catch::Contains("takes 10 whole-mesh subdivision steps") && Catch::Contains("lower the sharpness"));
   Features infinite;
   infinite.crease(edges_of(ico)[0].first, edges_of(ico)[0].second, 10);
   CHECK_THROWS_WITH(surface_with(Tables::load(generated_table("loop", "--valence 3-8 --n 8", "sgt").string()), ico, infinite),

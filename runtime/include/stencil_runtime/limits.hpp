@@ -17,8 +17,9 @@ inline constexpr int kMaxRate = 4096;
 // extraordinary vertices (each multiplies the faces by 4, or 9 for sqrt(3)).
 inline constexpr int kMaxRefinementSteps = 3;
 // Most faces the steps that resolve semi-sharp creases may make: a crease of
-// sharpness s takes ceil(s) whole-mesh steps, each multiplying the faces by 4.
-inline constexpr std::size_t kMaxCreaseStepFaces = std::size_t{1} << 24;
+// sharpness s takes ceil(s) whole-mesh steps, each multiplying the faces by 4
+// (2^21 faces: about 0.7 GB and 3 s to prepare on the 2-core test machine).
+inline constexpr std::size_t kMaxCreaseStepFaces = std::size_t{1} << 21;
 // Vertices and faces of a mesh (input and prepared): indices are 32-bit.
 inline constexpr std::size_t kMaxMeshElements = std::size_t{1} << 30;
 // Points of one tessellation (output indices are 32-bit signed).
