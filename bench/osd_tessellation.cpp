@@ -72,6 +72,13 @@ Far::TopologyRefiner* make_refiner(const Input& mesh) {
   desc.numFaces = static_cast<int>(sizes.size());
   desc.numVertsPerFace = sizes.data();
   desc.vertIndicesPerFace = verts.data();
+  if (mesh.crease_pairs && mesh.crease_sharpness) {
+    if (mesh.crease_pairs->size() != 2 * mesh.crease_sharpness->size())
+      throw std::invalid_argument("osd_bench: two crease vertices per sharpness");
+    desc.numCreases = static_cast<int>(mesh.crease_sharpness->size());
+    desc.creaseVertexIndexPairs = mesh.crease_pairs->data();
+    desc.creaseWeights = mesh.crease_sharpness->data();
+  }
 
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   Far::TopologyRefiner* refiner = Factory::Create(desc, Factory::Options(mesh.loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, sdc));

@@ -22,6 +22,9 @@ struct Input {
   const std::vector<int>* face_sizes;
   const std::vector<int>* face_vertices;
   bool loop = false;  // Loop (triangle meshes) instead of Catmull-Clark
+  // Optional semi-sharp creases: two vertices per edge, one sharpness per edge.
+  const std::vector<int>* crease_pairs = nullptr;
+  const std::vector<float>* crease_sharpness = nullptr;
 };
 
 struct Result {

@@ -1,0 +1,120 @@
+// Benchmark: the cost of semi-sharp creases (issue 17's target: tessellation
+// throughput on a mesh with creases within 1.25x of a closed smooth mesh of
+// the same size). The chess piece refined by Catmull-Clark steps to >= 50k
+// faces, smooth and with every 10th edge creased (sharpness 1, then 2:
+// one and two whole-mesh steps with the sharp rules in the preparation);
+// uniform rates 8 and 16 and a random mix 1..24, 1 and 2 threads: the
+// preparation time, then a whole static tessellation (plan and points, as
+// bench_tessellation), in triangles per second. OpenSubdiv 3.5's Bfr
+// tessellates the same meshes with the same creases in the same run.
+// Usage: bench_creases [CATMULL-CLARK.sgs]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "osd_tessellation.hpp"
+#include "stencil_runtime/mesh_io.hpp"
+#include "stencil_runtime/subdivide.hpp"
+#include "stencil_runtime/tessellation.hpp"
+
+using namespace stencil_runtime;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+template <class F>
+double median3(F f) {
+  double t[3] = {f(), f(), f()};
+  std::sort(t, t + 3);
+  return t[1];
+}
+
+// Every 10th edge (in the order the faces first name them), with sharpness s.
+MeshFeatures creases(const Mesh& mesh, double s) {
+  MeshFeatures out;
+  std::size_t corner = 0, count = 0;
+  for (int k : mesh.face_sizes) {
+    for (int c = 0; c < k; ++c) {
+      const int a = mesh.face_vertices[corner + static_cast<std::size_t>(c)];
+      const int b = mesh.face_vertices[corner + static_cast<std::size_t>((c + 1) % k)];
+      if (a < b && count++ % 10 == 0) out.edges.push_back({a, b, s});
+    }
+    corner += static_cast<std::size_t>(k);
+  }
+  return out;
+}
+
+}  // namespace
+
+int run(int argc, char** argv) {
+  const std::string cc_path = argc > 1 ? argv[1] : "tables/catmull-clark/catmull-clark.sgs";
+  const auto tables = Tables::load(cc_path);
+  Mesh mesh = read_obj(std::string(STENCIL_SOURCE_DIR) + "/meshes/chess-piece.obj");
+  while (mesh.face_count() < 50000) mesh = subdivide(*tables, mesh);
+  std::printf("# chess piece refined to %zu faces; every 10th edge creased\n\n", mesh.face_count());
+  std::printf("| sharpness | prepared faces | preparation (s) | rate | threads | triangles | ours (M tri/s) | ours / smooth | Bfr (M tri/s) | Bfr / smooth |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<std::vector<double>> smooth_rates;  // [rate][threads] of the smooth mesh: ours, Bfr
+  for (double sharpness : {0.0, 1.0, 2.0}) {
+    const MeshFeatures features = creases(mesh, sharpness);
+    const auto t0 = Clock::now();
+    const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, {},
+                                                  sharpness > 0 ? features : MeshFeatures{});
+    const double prepare_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    const Surface surface(topology, mesh.positions);
+    std::vector<int> pairs;
+    std::vector<float> weights;
+    for (const auto& e : features.edges) {
+      pairs.insert(pairs.end(), {e.a, e.b});
+      weights.push_back(static_cast<float>(e.sharpness));
+    }
+    osd_bench::Input input{&mesh.positions, &mesh.face_sizes, &mesh.face_vertices, false};
+    if (sharpness > 0) input.crease_pairs = &pairs, input.crease_sharpness = &weights;
+    osd_bench::BfrTessellator osd(input);
+    std::size_t row = 0;
+    for (int rate : {8, 16, 0}) {
+      std::mt19937 rng(7);
+      std::vector<int> rates(mesh.face_count(), rate);
+      if (rate == 0)
+        for (int& r : rates) r = std::uniform_int_distribution<int>(1, 24)(rng);
+      for (int threads : {1, 2}) {
+        std::size_t triangles = 0, osd_triangles = 0;
+        const double ours = median3([&] {
+          const auto s = Clock::now();
+          const TessellationPlan plan(surface.shared_topology(), rates, {threads});
+          PolygonSoup soup = plan.make_soup();
+          plan.evaluate(surface, soup.positions.data());
+          triangles = soup.triangle_count();
+          return std::chrono::duration<double>(Clock::now() - s).count();
+        });
+        const double theirs = median3([&] {
+          const osd_bench::Result r = osd.run(rates, threads);
+          osd_triangles = r.triangles;
+          return r.seconds;
+        });
+        const double ours_rate = triangles / ours / 1e6, osd_rate = osd_triangles / theirs / 1e6;
+        if (sharpness == 0) smooth_rates.push_back({ours_rate, osd_rate});
+        const auto& base = smooth_rates[row++];
+        std::printf("| %g | %zu | %.2f | %s | %d | %zu | %.1f | %.2f | %.1f | %.2f |\n", sharpness,
+                    topology->prepared_face_count(), prepare_s, rate ? std::to_string(rate).c_str() : "mix 1..24", threads,
+                    triangles, ours_rate, ours_rate / base[0], osd_rate, osd_rate / base[1]);
+        std::fflush(stdout);
+      }
+    }
+  }
+  return 0;
+}
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_creases: error: %s\n", e.what());
+    return 1;
+  }
+}
