@@ -204,6 +204,21 @@ double far_prepared_difference(const std::shared_ptr<const Tables>& tables, cons
   return worst;
 }
 
+// About one edge in four creased and `corners` vertices sharp, with sharpness
+// from 0.3 (uniform) or 0.25 (Chaikin: it averages the sharpness round a
+// vertex in float, as OpenSubdiv does, but not necessarily in its order, so
+// with non-dyadic values the results may differ at float precision: 1.3e-10
+// of the size on the chess piece) to 2.25.
+Features random_features(const Mesh& mesh, bool chaikin, int corners, std::mt19937& rng) {
+  const float choices[] = {chaikin ? 0.25f : 0.3f, 0.5f, 1.0f, 1.5f, 2.25f};
+  Features f;
+  for (const auto& [a, b] : edges_of(mesh))
+    if (rng() % 4 == 0) f.crease(a, b, choices[rng() % 5]);
+  for (int k = 0; k < corners; ++k) f.corner(static_cast<int>(rng() % mesh.vertex_count()), choices[rng() % 5]);
+  if (chaikin) f.chaikin();
+  return f;
+}
+
 std::shared_ptr<const Tables> catmull_clark() {
   return Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string());
 }
@@ -265,17 +280,8 @@ TEST_CASE("random creases and corners on the chess piece and on a mesh with tria
   const auto tables = catmull_clark();
   std::mt19937 rng(20261125u);
   for (const Mesh& mesh : {load("chess-piece"), house()}) {
-    const auto edges = edges_of(mesh);
     for (bool chaikin : {false, true}) {
-      // Chaikin averages the sharpness round a vertex in float, as OpenSubdiv
-      // does, but not necessarily in its order: with non-dyadic values (0.3)
-      // the results may differ at float precision (1.3e-10 of the size here).
-      const float choices[] = {chaikin ? 0.25f : 0.3f, 0.5f, 1.0f, 1.5f, 2.25f};
-      Features f;
-      for (const auto& [a, b] : edges)
-        if (rng() % 4 == 0) f.crease(a, b, choices[rng() % 5]);
-      for (int k = 0; k < 3; ++k) f.corner(static_cast<int>(rng() % mesh.vertex_count()), choices[rng() % 5]);
-      if (chaikin) f.chaikin();
+      const Features f = random_features(mesh, chaikin, 3, rng);
       INFO(mesh.face_count() << " faces, " << f.ours.edges.size() << " creases, " << (chaikin ? "Chaikin" : "uniform"));
       const double far = far_difference(tables, mesh, f, 3);
       CHECK(far < 1e-10);
@@ -369,14 +375,8 @@ TEST_CASE("Loop: semi-sharp creases and corners equal OpenSubdiv's, both methods
   std::mt19937 rng(11u);
   for (const char* name : {"icosahedron", "tri-torus", "tri-mix"}) {
     const Mesh mesh = load(name);
-    const auto edges = edges_of(mesh);
     for (bool chaikin : {false, true}) {
-      const float choices[] = {chaikin ? 0.25f : 0.3f, 0.5f, 1.0f, 1.5f, 2.25f};
-      Features f;
-      for (const auto& [a, b] : edges)
-        if (rng() % 4 == 0) f.crease(a, b, choices[rng() % 5]);
-      for (int k = 0; k < 2; ++k) f.corner(static_cast<int>(rng() % mesh.vertex_count()), choices[rng() % 5]);
-      if (chaikin) f.chaikin();
+      const Features f = random_features(mesh, chaikin, 2, rng);
       INFO(name << ", " << f.ours.edges.size() << " creases, " << (chaikin ? "Chaikin" : "uniform"));
       const double far = far_difference(tables, mesh, f, 3);
       CHECK(far < 1e-10);

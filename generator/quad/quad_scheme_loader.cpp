@@ -5,6 +5,7 @@
 #include "common/read_file.hpp"
 #include "common/scheme_file.hpp"
 #include "curve/curve_scheme_loader.hpp"
+#include "curve/one_ring_mask.hpp"
 
 namespace sg {
 namespace fs = std::filesystem;
@@ -16,17 +17,12 @@ namespace {
 // curve mask of width 5: even rule (s2, s0, s2), odd rule (s1, s1).
 void check_tensor_product(const QuadScheme& q, const SchemeContext& ctx) {
   const CurveScheme& c = q.curve;
-  const std::string field = "regular_curve";
-  if (!c.is_uniform() || c.arity != 2)
-    ctx.fail(field, "'" + c.name + "' must be a uniform binary curve scheme");
-  Rational s[5];
-  for (const Term& t : c.types[0].terms) {
-    if (t.shift < -2 || t.shift > 2)
-      ctx.fail(field, "'" + c.name + "' has a mask coefficient at " + std::to_string(t.shift) +
-                          "; quad schemes need a primal mask supported on [-2, 2] (one-ring rules)");
-    s[t.shift + 2] = t.coeff;
+  std::array<Rational, 5> s;
+  try {
+    s = one_ring_mask(c, "quad schemes need a primal mask supported on [-2, 2] (one-ring rules)");
+  } catch (const Error& e) {
+    ctx.fail("regular_curve", e.what());
   }
-  if (s[0] != s[4] || s[1] != s[3]) ctx.fail(field, "'" + c.name + "' must have a symmetric mask");
   auto expect = [&](const char* rule, const Rational& have, const Rational& want) {
     if (have != want)
       ctx.fail("rules." + std::string(rule),

@@ -5,6 +5,7 @@
 #include "common/read_file.hpp"
 #include "common/scheme_file.hpp"
 #include "curve/curve_scheme_loader.hpp"
+#include "curve/one_ring_mask.hpp"
 
 namespace sg {
 namespace fs = std::filesystem;
@@ -27,15 +28,12 @@ void load_crease_curve(TriangleScheme& s, const json& doc, const SchemeContext& 
   } catch (const Error& e) {
     ctx.fail(field, e.what());
   }
-  if (!c.is_uniform() || c.arity != 2) ctx.fail(field, "'" + c.name + "' must be a uniform binary curve scheme");
-  Rational m[5];
-  for (const Term& t : c.types[0].terms) {
-    if (t.shift < -2 || t.shift > 2)
-      ctx.fail(field, "'" + c.name + "' has a mask coefficient at " + std::to_string(t.shift) +
-                          "; a crease rule must be supported on [-2, 2] (one ring along the crease)");
-    m[t.shift + 2] = t.coeff;
+  std::array<Rational, 5> m;
+  try {
+    m = one_ring_mask(c, "a crease rule must be supported on [-2, 2] (one ring along the crease)");
+  } catch (const Error& e) {
+    ctx.fail(field, e.what());
   }
-  if (m[0] != m[4] || m[1] != m[3]) ctx.fail(field, "'" + c.name + "' must have a symmetric mask");
   if (m[1] != Rational(1, 2))
     ctx.fail(field, "'" + c.name + "' must insert edge midpoints (odd rule 1/2, 1/2), got " + to_string(m[1]));
   s.has_crease = true;
