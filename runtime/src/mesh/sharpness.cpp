@@ -28,6 +28,7 @@ bool semi_sharp(float s) { return s > 0 && s < kInfiniteSharpness; }
 LevelSharpness LevelSharpness::of(const Connectivity& mesh, const MeshFeatures& features) {
   LevelSharpness out;
   out.chaikin_ = features.chaikin;
+  if (features.edges.empty() && features.vertices.empty()) return out;  // the common case: nothing to look up
   std::set<std::pair<int, int>> edges;
   std::size_t corner = 0;
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {

@@ -123,9 +123,9 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     ++out.crease_steps;
     topo = QuadTopology(out.mesh);
   }
-  const int crease_steps = out.steps;
+  const int before_isolation = out.steps;
   while (!isolated(topo)) {
-    if (out.steps - crease_steps + (out.polygon_step ? 1 : 0) == limits::kMaxRefinementSteps)
+    if (out.steps - before_isolation + (out.polygon_step ? 1 : 0) == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices still share faces after " + std::to_string(limits::kMaxRefinementSteps) +
                       " subdivision steps");
     QuadStep step = subdivide_quads(topo, t);
