@@ -183,5 +183,19 @@ TEST_CASE("semi-sharp crease and corner tags give the surface of the same featur
     std::getline(out, heading);  // "face 0 at (1/4,0): limit point of ..."
     out >> x >> y >> z;
     CHECK(distance({x, y, z}, expected) < 1e-12);
+    // stenciltess too: its output is closed along the creases.
+    const fs::path written = dir / "creased-out.obj";
+    const CliResult t = run_stenciltess("--tables " + generated_table("catmull-clark", "--valence 3-8 --n 4", "sgs").parent_path().string() +
+                                        " --mesh " + (dir / "creased.obj").string() + " --rate 4 --out " + written.string());
+    REQUIRE(t.status == 0);
+    const Mesh soup = read_obj(written.string());
+    CHECK(soup.face_count() > 0);
+    CHECK(euler_characteristic(soup) == 2);
+    const auto directed = directed_edges(soup);
+    for (const auto& [e, count] : directed) {
+      INFO("output edge " << e.first << " -> " << e.second);
+      CHECK(count == 1);
+      CHECK(directed.count({e.second, e.first}) == 1);
+    }
   }
 }

@@ -43,12 +43,17 @@ int main(int argc, char** argv) {
       "Animation: --frames names a sequence of OBJ files with the mesh's connectivity and new positions (sorted by\n"
       "file name); the topology and the tessellation plan are made once from --mesh (rates from its positions), and\n"
       "frame k is written to --out with %d replaced by k (from 0). Every frame's output equals what a run on that\n"
-      "frame alone writes with the same rates (--rate or --rates).\n\n"
+      "frame alone writes with the same rates (--rate or --rates).\n"
+      "The mesh's OpenSubdiv tag lines are honoured: faces tagged `hole` are left out (their rims become the\n"
+      "output's boundaries); semi-sharp creases and corners (`t crease`, `t corner`, sharpness below 10, and\n"
+      "`t creasemethod chaikin`) and `t smoothtriangles` (Catmull-Clark) as in OpenSubdiv; the output stays closed\n"
+      "along creases. Infinitely sharp creases are refused naming the line.\n\n"
       "  stenciltess --tables tables/nonpoly --mesh meshes/chess-piece.obj --rate 8 --out piece.ply\n"
       "  stenciltess --tables tables/nonpoly --mesh meshes/torus-3-5.obj --tolerance 1e-3 --out torus.obj\n"
       "  stenciltess --tables tables/nonpoly --mesh M.obj --camera 0,0,6,0,0,0 --pixels 8 --out view.ply\n"
       "  stenciltess --tables tables/loop --mesh meshes/tri-torus.obj --rate 6 --out torus.ply\n"
       "  stenciltess --tables tables/nonpoly --mesh meshes/chess-piece.obj --rate 8 --normals --out piece.ply\n"
+      "  stenciltess --tables tables/catmull-clark --mesh creased.obj --rate 8 --out creased.ply   (t crease lines)\n"
       "  stenciltess --tables tables/nonpoly --mesh rest.obj --frames 'anim/frame*.obj' --rate 8 --out 'out/frame%04d.ply'",
       "stenciltess"};
   std::string tables_spec, mesh_path, out, rates_file, camera, frames;
