@@ -55,16 +55,18 @@ int generate_quad(const GenerateOptions& o, const std::string& valence_spec) {
                 << format_report(report);
   }
   const auto set = generate_quad_tables(scheme, valences, rates, progress_lines(o.quiet));
-  const BinaryLayout layout = o.layout == "stored" ? BinaryLayout::Stored : BinaryLayout::Generated;
-  if (layout == BinaryLayout::Generated && !generated_layout_fits(set))
+  const bool asked_generated = o.layout != "stored";
+  const bool generated = asked_generated && generated_layout_fits(set);
+  if (asked_generated && !generated)
     std::cerr << "stencilgen: note: these rates and valences are too large for the runtime to expand at load time; "
                  "the .sgs stores every stencil\n";
-  const std::size_t bytes = write_quad_tables(scheme, set, o.out, binary_precision(o.precision), layout);
+  const std::size_t bytes = write_quad_tables(scheme, set, o.out, binary_precision(o.precision),
+                                              generated ? BinaryLayout::Generated : BinaryLayout::Stored);
   std::cout << "wrote exact surface tables for '" << scheme.name << "' (valences " << valence_spec << ", rates "
             << rates.front() << ".." << rates.back() << ", " << rates.size() * valences.size() << " tables) to "
             << (std::filesystem::path(o.out) / scheme.name).string() << " in " << seconds_since(start)
             << " s; binary " << scheme.name << ".sgs: " << bytes << " bytes (" << o.precision << " precision, "
-            << (layout == BinaryLayout::Generated && generated_layout_fits(set) ? "generated" : "stored") << " stencils)\n";
+            << (generated ? "generated" : "stored") << " stencils)\n";
   return 0;
 }
 

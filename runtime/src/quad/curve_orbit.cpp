@@ -29,7 +29,6 @@ void carry_back(const HalfMatrices& half, int c, double* w, double* dw) {
 struct Orbit {
   std::vector<int> children;  // c at each step
   std::size_t cycle_start = 0;
-  bool periodic = false;
 };
 
 // Power iteration around the cycle children[s..end): returns once both rows are stable.
@@ -84,7 +83,6 @@ void follow(const HalfMatrices& half, P t, const Held& held, double* w, double* 
         if (!odd_seen) {
           odd_seen = true, first_odd = t, orbit.cycle_start = orbit.children.size();
         } else if (t == first_odd) {
-          orbit.periodic = true;
           solve_cycle(half, orbit, w, dw);
           orbit.children.resize(orbit.cycle_start);  // carry back from the cycle's first point
           break;
