@@ -19,9 +19,10 @@ std::string number(double x) {
   return s.str();
 }
 
+std::string where(const Mesh& mesh, long line) { return mesh.source.empty() ? "tag" : mesh.source + ":" + std::to_string(line); }
+
 [[noreturn]] void refuse(const Mesh& mesh, long line, const std::string& what) {
-  const std::string where = mesh.source.empty() ? "tag" : mesh.source + ":" + std::to_string(line);
-  throw MeshError(where + ": " + what + " is not supported yet; remove the tag (or lower the sharpness) to evaluate");
+  throw MeshError(where(mesh, line) + ": " + what + " is not supported yet; remove the tag (or lower the sharpness) to evaluate");
 }
 
 constexpr double kInfinite = 10;  // OpenSubdiv's infinite sharpness
@@ -46,11 +47,11 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   // Smooth triangles change Catmull-Clark's first step only (Loop ignores the tag, as OpenSubdiv).
   const bool triangles = std::find(mesh.face_sizes.begin(), mesh.face_sizes.end(), 3) != mesh.face_sizes.end();
   if (tags.smooth_triangles && triangles && tables->family() == SchemeFamily::Quad) {
-    const QuadTables& quad = tables->quad();
-    if (quad.polygon_edge_end() != 0.25 || quad.polygon_edge_face() != 0.25)
-      refuse(mesh, tags.smooth_triangles_line,
-             "OpenSubdiv's smooth triangle rule (`smoothtriangles`, made for Catmull-Clark's polygon edge rule) on the "
-             "scheme " + tables->scheme());
+    try {
+      tables->quad().check_smooth_triangles();
+    } catch (const MeshError& e) {
+      throw MeshError(where(mesh, tags.smooth_triangles_line) + ": " + e.what());
+    }
     features.smooth_triangles = true;
   }
   std::vector<int> holes;

@@ -95,9 +95,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     out.mesh = mesh;
   } else {
     const bool triangles = std::find(mesh.face_sizes.begin(), mesh.face_sizes.end(), 3) != mesh.face_sizes.end();
-    if (features.smooth_triangles && triangles && (t.polygon_edge_end() != 0.25 || t.polygon_edge_face() != 0.25))
-      throw MeshError("OpenSubdiv's smooth triangle rule (`smoothtriangles`) is made for Catmull-Clark's polygon edge "
-                      "rule (1/4 each end and each face point); the scheme " + tables.scheme() + " has its own");
+    if (features.smooth_triangles && triangles) t.check_smooth_triangles();
     QuadStep step = subdivide_polygons(mesh, links, t, features.smooth_triangles);
     if (!sharpness.smooth()) {
       sharpness = sharpen_step(mesh, sharpness, crease, quad_step_edge_points(mesh, step.mesh), step.step);

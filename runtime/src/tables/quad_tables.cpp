@@ -436,3 +436,13 @@ void QuadTables::stencil(int valence, int slot, long a, long b, bool centre, dou
 }
 
 }  // namespace stencil_runtime
+
+namespace stencil_runtime {
+
+void QuadTables::check_smooth_triangles() const {
+  if (polygon_edge_end_ != 0.25 || polygon_edge_face_ != 0.25)
+    throw MeshError("OpenSubdiv's smooth triangle rule (`smoothtriangles`) is made for Catmull-Clark's polygon edge "
+                    "rule (1/4 each end and each face point); the scheme " + name_ + " has its own");
+}
+
+}  // namespace stencil_runtime

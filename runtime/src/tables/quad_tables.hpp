@@ -68,6 +68,10 @@ class QuadTables {
   bool has_polygon_rules() const { return has_polygon_; }
   double polygon_edge_end() const { return polygon_edge_end_; }
   double polygon_edge_face() const { return polygon_edge_face_; }
+  // OpenSubdiv's smooth triangle rule replaces Catmull-Clark's polygon edge
+  // rule (1/4 each end and each face point) and is refused with MeshError for a
+  // scheme with its own.
+  void check_smooth_triangles() const;
   const VertexRule* polygon_vertex_rule(int valence) const;
   const std::vector<int>& rates() const { return rates_; }
   std::vector<int> valences() const;  // extraordinary valences stored (4 is the regular patch)
