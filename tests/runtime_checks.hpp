@@ -4,7 +4,10 @@
 // characteristic of a control mesh.
 #include <algorithm>
 #include <array>
+#include <catch2/catch.hpp>
 #include <cmath>
+#include <functional>
+#include <numeric>
 #include <map>
 #include <set>
 #include <string>
@@ -126,3 +129,56 @@ inline stencil_runtime::Mesh prism() {
   m.face_vertices = {0, 2, 1, 3, 4, 5, 0, 1, 4, 3, 1, 2, 5, 4, 2, 0, 3, 5};
   return m;
 }
+
+// Every point used; every undirected edge used once (rim) or twice in opposite
+// directions; the rim edges form `loops` closed loops; V - E + F = 2 - loops
+// for a genus-0 mesh (`genus` otherwise).
+inline void check_rimmed_manifold(const stencil_runtime::PolygonSoup& soup, std::size_t loops, int genus) {
+  std::map<std::pair<int, int>, int> directed;
+  std::vector<char> used(soup.positions.size(), 0);
+  std::size_t faces = 0;
+  auto polygon = [&](const int* p, int k) {
+    ++faces;
+    for (int i = 0; i < k; ++i) {
+      REQUIRE(p[i] >= 0);
+      REQUIRE(static_cast<std::size_t>(p[i]) < soup.positions.size());
+      used[static_cast<std::size_t>(p[i])] = 1;
+      ++directed[{p[i], p[(i + 1) % k]}];
+    }
+  };
+  for (const auto& q : soup.quads) polygon(q.data(), 4);
+  for (const auto& t : soup.triangles) polygon(t.data(), 3);
+  CHECK(std::all_of(used.begin(), used.end(), [](char c) { return c != 0; }));
+  std::size_t edges = 0;
+  std::vector<int> parent(soup.positions.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  std::function<int(int)> find = [&](int x) { return parent[static_cast<std::size_t>(x)] == x ? x : parent[static_cast<std::size_t>(x)] = find(parent[static_cast<std::size_t>(x)]); };
+  std::set<int> rim_points;
+  for (const auto& [e, count] : directed) {
+    INFO("directed edge " << e.first << " -> " << e.second);
+    REQUIRE(count == 1);  // consistently oriented: no directed edge twice
+    const bool twin = directed.count({e.second, e.first}) != 0;
+    if (e.first < e.second || !twin) ++edges;
+    if (!twin) {  // a rim edge
+      parent[static_cast<std::size_t>(find(e.first))] = find(e.second);
+      rim_points.insert(e.first);
+      rim_points.insert(e.second);
+    }
+  }
+  {  // every rim point has one rim edge in and one out
+    std::map<int, int> in, out;
+    for (const auto& [e, count] : directed)
+      if (!directed.count({e.second, e.first})) ++out[e.first], ++in[e.second];
+    for (int p : rim_points) {
+      INFO("rim point " << p);
+      CHECK(in[p] == 1);
+      CHECK(out[p] == 1);
+    }
+  }
+  std::set<int> roots;
+  for (int p : rim_points) roots.insert(find(p));
+  CHECK(roots.size() == loops);
+  const long chi = static_cast<long>(soup.positions.size()) - static_cast<long>(edges) + static_cast<long>(faces);
+  CHECK(chi == 2 - 2 * genus - static_cast<long>(loops));
+}
+

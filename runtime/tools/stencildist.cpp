@@ -39,7 +39,7 @@ std::string result_lines(const std::vector<ClosestPoint>& results, bool normals,
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "stencildist: closest points on the exact limit surface of a closed control mesh, and the distances to it,\n"
+      "stencildist: closest points on the exact limit surface of a control mesh, and the distances to it,\n"
       "from stencilgen's tables (a quad scheme's .sgs with a polygon mesh, a triangle scheme's .sgt with a triangle\n"
       "mesh). One line per query point, in input order: `face u v x y z distance` (face numbered from 0 in file\n"
       "order, (u, v) in that face's domain as stencileval --help describes), plus `nx ny nz` (the unit normal) with\n"
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
   double tolerance = 1e-9, max_distance = INFINITY;
   int threads = 0;
   app.add_option("--tables", tables_spec, "a .sgs or .sgt table file, or the directory stencilgen wrote it to")->required();
-  app.add_option("--mesh", mesh_path, "closed control mesh (.obj)")->required();
+  app.add_option("--mesh", mesh_path, "control mesh (.obj): closed, or with boundaries for a quad scheme (no --signed then)")->required();
   app.add_option("--points", points_path, "query points: .xyz/.txt (`x y z` lines) or .ply (vertices)")->required();
   app.add_option("--out", out_path, "result file (default: standard output)");
   app.add_flag("--signed", signed_distance, "signed distances: negative inside the surface (outward-oriented faces)");
@@ -63,12 +63,19 @@ int main(int argc, char** argv) {
                  "diagonal (default 1e-9)");
   app.add_option("--max-distance", max_distance, "points farther than this (absolute) give `none` (default: no limit)");
   app.add_option("--threads", threads, "threads for the queries (default 0: all cores)");
+  stencil_tools::BoundaryOption boundary;
+  boundary.add(app);
   return stencil_tools::run_tool(app, argc, argv, [&] {
     if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive number");
+    if (tolerance < 1e-14)
+      throw std::runtime_error("--tolerance must be at least 1e-14 (a fraction of the diagonal; doubles resolve about "
+                               "1e-16 of it)");
     if (!(max_distance > 0)) throw std::runtime_error("--max-distance must be a positive number");
     if (threads < 0 || threads > 256) throw std::runtime_error("--threads must be 1..256 (or 0 for all cores)");
+    stencil_tools::check_output_is_not_input(out_path, {mesh_path, points_path});
     const auto tables = Tables::load(tables_spec);
-    const Mesh mesh = read_obj(mesh_path);
+    Mesh mesh = read_obj(mesh_path);
+    boundary.apply(mesh);
     for (const std::string& warning : mesh.warnings) std::cerr << warning << '\n';
     const std::vector<Point> queries = stencil_tools::read_points(points_path);
     Point lo = mesh.positions.at(0), hi = lo;
@@ -77,6 +84,8 @@ int main(int argc, char** argv) {
     const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 
     const auto topology = SurfaceTopology::create(tables, mesh);
+    if (signed_distance && topology->has_boundary())
+      throw std::runtime_error(mesh_path + ": --signed needs a closed surface, and this mesh has a boundary");
     if (signed_distance && topology->has_holes())
       throw std::runtime_error(mesh_path + ": --signed needs a closed surface, and this mesh has faces tagged `hole` "
                                "(line " + std::to_string(mesh.tags.holes.front().line) + ")");

@@ -101,7 +101,7 @@ std::string result_line(const Query& q, const Columns& columns) {
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "stencileval: exact limit points of a closed control mesh at rational parameters, from stencilgen's tables\n"
+      "stencileval: exact limit points of a control mesh at rational parameters, from stencilgen's tables\n"
       "(a quad scheme's .sgs with a polygon mesh, a triangle scheme's .sgt with a triangle mesh).\n"
       "Faces are numbered from 0 in file order. What (u, v) means on face F (v0, v1, ...) as listed in the OBJ file,\n"
       "as in OpenSubdiv's Bfr:\n"
@@ -128,8 +128,9 @@ int main(int argc, char** argv) {
       "round it are unchanged, as in OpenSubdiv); semi-sharp creases and corners (sharpness below 10; uniform or\n"
       "Chaikin) are resolved by a few subdivision steps with OpenSubdiv's sharp rules, then evaluated exactly\n"
       "(Catmull-Clark, nonpoly, Loop; not sqrt(3)); `smoothtriangles` is Catmull-Clark's triangle rule. Infinitely\n"
-      "sharp creases and corners (10 or more) are refused naming the line (only closed meshes are evaluated);\n"
-      "unknown tags are warned about.\n\n"
+      "sharp creases and corners (10 or more) are refused naming the line; unknown tags are warned about.\n"
+      "Meshes with boundaries (quad schemes; `t interpolateboundary` or --boundary): boundary vertices in two faces,\n"
+      "and with edge-and-corner corners in one face, as OpenSubdiv; other boundary vertices are refused naming them.\n\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --face 0 --uv 1/3,1/2\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --batch queries.txt   (lines: F U V)\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --face 0 --uv 0.3,0.7\n"
@@ -139,7 +140,7 @@ int main(int argc, char** argv) {
   std::string tables_spec, mesh_path, uv, batch, face_text;
   double tolerance = 1e-12;
   app.add_option("--tables", tables_spec, "a .sgs or .sgt table file, the directory stencilgen wrote it to, or a directory of exact JSON quad tables")->required();
-  app.add_option("--mesh", mesh_path, "closed control mesh (.obj): polygons for a quad scheme, triangles for a triangle scheme")->required();
+  app.add_option("--mesh", mesh_path, "control mesh (.obj): polygons for a quad scheme (closed, or with boundaries: see above), triangles for a triangle scheme (closed)")->required();
   app.add_option("--face", face_text, "face number, from 0 in file order");
   app.add_option("--uv", uv, "parameters U,V: exact rationals (1/3,1/2) or decimals (0.3,0.7)");
   app.add_option("--tolerance", tolerance,
@@ -147,6 +148,8 @@ int main(int argc, char** argv) {
                  "extent (default 1e-12)");
   app.add_option("--batch", batch, "file of `F U V` lines; prints one `x y z` line per query (with the columns "
                                    "--derivatives and --normal add)");
+  stencil_tools::BoundaryOption boundary;
+  boundary.add(app);
   Columns columns;
   app.add_flag("--derivatives", columns.derivatives, "also d/du and d/dv (quad schemes)");
   app.add_flag("--second-derivatives", columns.second, "also d2/du2, d2/dudv, d2/dv2 (Catmull-Clark)");
@@ -158,7 +161,8 @@ int main(int argc, char** argv) {
     if (!batch.empty() && (!face_text.empty() || !uv.empty()))
       throw std::runtime_error("--batch replaces --face and --uv; give one or the other");
     const auto tables = Tables::load(tables_spec);
-    const Mesh mesh = read_obj(mesh_path);  // after the tables, so that a bad table file is reported first
+    Mesh mesh = read_obj(mesh_path);  // after the tables, so that a bad table file is reported first
+    boundary.apply(mesh);
     for (const std::string& warning : mesh.warnings) std::cerr << warning << '\n';
     const Surface surface(SurfaceTopology::create(tables, mesh),
                           mesh.positions);

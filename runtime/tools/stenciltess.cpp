@@ -35,7 +35,7 @@ struct WrittenFiles {
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "stenciltess: watertight adaptive tessellation of a closed control mesh (the paper's dual scheme), from\n"
+      "stenciltess: watertight adaptive tessellation of a control mesh (the paper's dual scheme), from\n"
       "stencilgen's tables: a quad scheme's .sgs with a polygon mesh, a triangle scheme's .sgt with a triangle mesh.\n"
       "One exact limit point per grid cell (quads) or small grid triangle (triangles) of each face at its own rate;\n"
       "quads (triangles: hexagons as two quads) inside faces, triangle zippers along edges, a polygon around every\n"
@@ -47,7 +47,10 @@ int main(int argc, char** argv) {
       "The mesh's OpenSubdiv tag lines are honoured: faces tagged `hole` are left out (their rims become the\n"
       "output's boundaries); semi-sharp creases and corners (`t crease`, `t corner`, sharpness below 10, and\n"
       "`t creasemethod chaikin`) and `t smoothtriangles` (Catmull-Clark) as in OpenSubdiv; the output stays closed\n"
-      "along creases. Infinitely sharp creases are refused naming the line.\n\n"
+      "along creases. Infinitely sharp creases are refused naming the line.\n"
+      "Meshes with boundaries (quad schemes): boundary vertices in two faces, and with --boundary edge-and-corner\n"
+      "(or `t interpolateboundary 1/0/0 1`) corners in one face; other boundary vertices are refused naming them.\n"
+      "The output's rim lies along the boundary, half a cell inside it, like a hole's rim.\n\n"
       "  stenciltess --tables tables/nonpoly --mesh meshes/chess-piece.obj --rate 8 --out piece.ply\n"
       "  stenciltess --tables tables/nonpoly --mesh meshes/torus-3-5.obj --tolerance 1e-3 --out torus.obj\n"
       "  stenciltess --tables tables/nonpoly --mesh M.obj --camera 0,0,6,0,0,0 --pixels 8 --out view.ply\n"
@@ -60,7 +63,7 @@ int main(int argc, char** argv) {
   int rate = 0, threads = 0, width = 1920;
   double tolerance = 0, pixels = 0, fov = 60;
   app.add_option("--tables", tables_spec, "a .sgs or .sgt table file, the directory stencilgen wrote it to, or a directory of exact JSON quad tables")->required();
-  app.add_option("--mesh", mesh_path, "closed control mesh (.obj): polygons for a quad scheme, triangles for a triangle scheme")->required();
+  app.add_option("--mesh", mesh_path, "control mesh (.obj): polygons for a quad scheme (closed, or with boundaries: see above), triangles for a triangle scheme (closed)")->required();
   app.add_option("--out", out, "output .obj (text) or .ply (binary), written whole or not at all; with --frames a pattern such as out/f%04d.ply")->required();
   auto* r1 = app.add_option("--rate", rate, "uniform rate N (1..4096) for every face");
   auto* r2 = app.add_option("--rates", rates_file, "file with one rate per face (file order)");
@@ -71,6 +74,8 @@ int main(int argc, char** argv) {
   app.add_option("--width", width, "with --camera: image width in pixels (default 1920)");
   app.add_option("--threads", threads, "threads, 1..256 (default: all cores)");
   app.add_option("--frames", frames, "animation: a pattern of OBJ files (quoted), e.g. 'anim/frame*.obj'");
+  stencil_tools::BoundaryOption boundary;
+  boundary.add(app);
   bool with_normals = false;
   app.add_flag("--normals", with_normals,
                "also write per-vertex unit normals of the limit surface (quad schemes and Loop; PLY nx ny nz, OBJ vn)");
@@ -82,9 +87,14 @@ int main(int argc, char** argv) {
     if (app.count("--rate") && (rate < 1 || rate > limits::kMaxRate))
       throw std::runtime_error("--rate must be 1.." + std::to_string(limits::kMaxRate));
     if (!frames.empty()) stencil_tools::check_frame_pattern(out);
+    else stencil_tools::check_output_is_not_input(out, {mesh_path, rates_file});
+    if (camera.empty())
+      for (const char* option : {"--pixels", "--fov", "--width"})
+        if (app.count(option)) throw std::runtime_error(std::string(option) + " applies to --camera rates only");
     const auto t0 = Clock::now();
     const auto tables = Tables::load(tables_spec);
-    const Mesh mesh = read_obj(mesh_path);
+    Mesh mesh = read_obj(mesh_path);
+    boundary.apply(mesh);
     for (const std::string& warning : mesh.warnings) std::cerr << warning << '\n';
     std::vector<int> rates;
     if (app.count("--rate")) rates.assign(mesh.face_count(), rate);

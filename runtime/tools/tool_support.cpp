@@ -51,6 +51,7 @@ std::string read_text_file(const std::string& path, std::size_t max_bytes) {
   std::ifstream in(path, std::ios::binary);
   std::string text(static_cast<std::size_t>(size), '\0');
   if (!in.read(text.data(), static_cast<std::streamsize>(size))) throw std::runtime_error(path + ": read failed");
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);  // a UTF-8 byte-order mark (Windows editors)
   return text;
 }
 
@@ -143,6 +144,30 @@ std::vector<std::string> expand_pattern(const std::string& pattern) {
   if (status != 0) throw std::runtime_error(stencil_runtime::quoted_excerpt(pattern) + ": cannot list the files it names");
   std::sort(out.begin(), out.end());
   return out;
+}
+
+void check_output_is_not_input(const std::string& output, const std::vector<std::string>& inputs) {
+  namespace fs = std::filesystem;
+  if (output.empty()) return;
+  for (const std::string& input : inputs)
+    if (!input.empty() && fs::weakly_canonical(input) == fs::weakly_canonical(output))
+      throw std::runtime_error(output + " is an input and the output; give the output another name");
+}
+
+void BoundaryOption::add(CLI::App& app) {
+  app.add_option("--boundary", text,
+                 "meshes with boundaries: edge-only (default, as OpenSubdiv's tools) or edge-and-corner (a boundary "
+                 "vertex in one face is a corner); overrides the mesh's `t interpolateboundary` tag ('none' is not "
+                 "supported yet)")
+      ->check(CLI::IsMember({"none", "edge-only", "edge-and-corner"}));
+}
+
+void BoundaryOption::apply(stencil_runtime::Mesh& mesh) const {
+  using stencil_runtime::BoundaryInterpolation;
+  if (text.empty()) return;
+  mesh.tags.boundary = text == "none"        ? BoundaryInterpolation::None
+                       : text == "edge-only" ? BoundaryInterpolation::EdgeOnly
+                                             : BoundaryInterpolation::EdgeAndCorner;
 }
 
 }  // namespace stencil_tools

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "stencil_runtime/exact_parameter.hpp"
+#include "stencil_runtime/mesh.hpp"
 
 namespace stencil_tools {
 
@@ -49,5 +50,17 @@ std::string frame_name(const std::string& pattern, std::size_t frame);
 // The files a shell pattern such as "anim/frame*.obj" names, sorted by name;
 // throws when it names none.
 std::vector<std::string> expand_pattern(const std::string& pattern);
+
+// Refuses an output path that names one of the inputs (the run would destroy
+// what it reads); empty paths are ignored.
+void check_output_is_not_input(const std::string& output, const std::vector<std::string>& inputs);
+
+// --boundary none|edge-only|edge-and-corner: how a mesh with boundaries is
+// interpolated there; given, it overrides the mesh's `interpolateboundary` tag.
+struct BoundaryOption {
+  std::string text;
+  void add(CLI::App& app);
+  void apply(stencil_runtime::Mesh& mesh) const;
+};
 
 }  // namespace stencil_tools

@@ -66,6 +66,9 @@ struct MeshFeatures {
   std::vector<Vertex> vertices;
   bool chaikin = false;
   bool smooth_triangles = false;
+  // How a mesh with boundaries is interpolated there (docs/runtime.md,
+  // "Boundaries"); closed meshes ignore it.
+  BoundaryInterpolation boundary = BoundaryInterpolation::EdgeOnly;
 };
 
 struct Mesh {

@@ -90,6 +90,8 @@ class SurfaceTopology {
   FaceDomain domain(std::size_t face) const;
   bool is_hole(std::size_t face) const { return face < holes_.size() && holes_[face] != 0; }
   bool has_holes() const { return !holes_.empty(); }
+  // Whether the mesh has boundary edges (an open surface: no inside, like one with holes).
+  bool has_boundary() const;
   // Per prepared face: whether it covers part of a hole (empty when none is).
   std::vector<char> prepared_holes() const;
 

@@ -34,6 +34,7 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   const MeshTags& tags = mesh.tags;
   MeshFeatures features;
   features.chaikin = tags.chaikin_creases;
+  features.boundary = tags.boundary;
   for (const auto& c : tags.creases) {
     const std::string edge = "the edge " + std::to_string(c.a) + "-" + std::to_string(c.b);
     if (c.sharpness >= kInfinite) refuse(mesh, c.line, "an infinitely sharp crease (sharpness " + number(c.sharpness) + " >= 10) on " + edge);

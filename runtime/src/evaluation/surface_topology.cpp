@@ -98,6 +98,8 @@ std::vector<char> SurfaceTopology::prepared_holes() const {
 std::string SurfaceTopology::preparation() const { return family_->preparation(); }
 int SurfaceTopology::refinement_steps() const { return family_->refinement_steps(); }
 std::size_t SurfaceTopology::prepared_face_count() const { return family_->hierarchy().prepared_faces(); }
+bool SurfaceTopology::has_boundary() const { return family_->has_boundary(); }
+
 std::size_t SurfaceTopology::prepared_vertex_count() const { return family_->refinement().prepared_vertices(); }
 
 namespace {

@@ -104,6 +104,8 @@ class Family {
   // The steps applied, for messages: e.g. "1 subdivision step".
   virtual std::string preparation() const = 0;
   virtual int refinement_steps() const = 0;
+  // Whether the mesh has boundary edges (a quad family's meshes may).
+  virtual bool has_boundary() const { return false; }
   // What (u, v) means on original face `face`.
   virtual FaceDomain domain(std::size_t face) const = 0;
 

@@ -43,7 +43,9 @@ void zipper(int na, int nb, const EmitQuad& quad, const EmitTri& tri) {
 // edges, and round a vertex one fan per run of consecutive faces that are not
 // holes (none for a run of one or two faces: the zipper between two faces
 // already ends at their corner points). The rows along a hole's edges, the
-// fans' closing edges and the zippers' end edges then form its rim.
+// fans' closing edges and the zippers' end edges then form its rim. The
+// mesh's own boundary is treated alike: no zipper along a boundary edge, and
+// a boundary vertex's open fan of faces is one run (split by its holes).
 template <int K>
 class SeamPolygons {
  public:
@@ -54,10 +56,11 @@ class SeamPolygons {
         quad_offset_(nh_ + nv_ + 1, 0), tri_offset_(nh_ + nv_ + 1, 0), vertex_owner_(nv_, UINT32_MAX) {
     for (std::uint32_t h = 0; h < nh_; ++h) {
       const auto v = static_cast<std::size_t>(topo.vertex(Topology::face_of(h), Topology::corner_of(h)));
-      if (vertex_owner_[v] == UINT32_MAX) vertex_owner_[v] = h;
-      std::size_t q = 0, t = 0;
       const std::uint32_t o = topo.twin(h);
-      if (h < o && !hole(Topology::face_of(h)) && !hole(Topology::face_of(o))) {
+      // A boundary vertex's fan starts at its outgoing boundary half-edge.
+      if (vertex_owner_[v] == UINT32_MAX || o == Topology::kNoTwin) vertex_owner_[v] = h;
+      std::size_t q = 0, t = 0;
+      if (o != Topology::kNoTwin && h < o && !hole(Topology::face_of(h)) && !hole(Topology::face_of(o))) {
         const auto na = static_cast<std::size_t>(rates[Topology::face_of(h)]);
         const auto nb = static_cast<std::size_t>(rates[Topology::face_of(o)]);
         if (na == nb) q = na - 1;
@@ -68,14 +71,15 @@ class SeamPolygons {
     }
     std::uint32_t ring[limits::kMaxValence];
     for (std::size_t v = 0; v < nv_; ++v) {
-      // Without holes the valence says it all; the ring is walked only to find them.
-      const int k = holes_.empty() ? topo.valence(static_cast<int>(v)) : ring_of(v, ring);
+      // Without holes or boundaries the valence says it all; the ring is walked only to find them.
+      bool open = false;
+      const int k = holes_.empty() && !topo.has_boundary() ? topo.valence(static_cast<int>(v)) : ring_of(v, ring, open);
       std::size_t q = 0, t = 0;
-      if (holes_.empty() || !ring_has_hole(ring, k)) {
+      if (!open && (holes_.empty() || !ring_has_hole(ring, k))) {
         q = k == 4 ? 1 : 0;
         t = k == 4 ? 0 : static_cast<std::size_t>(k - 2);
       } else {
-        for_each_run(ring, k, [&](const std::uint32_t*, int length) { t += static_cast<std::size_t>(length - 2); });
+        for_each_run(ring, k, open, [&](const std::uint32_t*, int length) { t += static_cast<std::size_t>(length - 2); });
       }
       quad_offset_[nh_ + v + 1] = quad_offset_[nh_ + v] + q;
       tri_offset_[nh_ + v + 1] = tri_offset_[nh_ + v] + t;
@@ -91,7 +95,7 @@ class SeamPolygons {
              std::array<int, 4>* quads, std::array<int, 3>* tris) const {
     for (auto h = static_cast<std::uint32_t>(begin); h != end; ++h) {
       const std::uint32_t o = topo_.twin(h);
-      if (o < h) continue;
+      if (o < h || o == Topology::kNoTwin) continue;  // owned by the twin, or a boundary edge
       const std::size_t f = Topology::face_of(h), g = Topology::face_of(o);
       if (hole(f) || hole(g)) continue;  // the rim: no zipper
       const int kf = Topology::corner_of(h), kg = Topology::corner_of(o);
@@ -116,13 +120,14 @@ class SeamPolygons {
                 std::array<int, 4>* quads, std::array<int, 3>* tris) const {
     std::uint32_t halfedges[limits::kMaxValence];
     for (std::size_t v = begin; v != end; ++v) {
-      const int k = ring_of(v, halfedges);
+      bool open = false;
+      const int k = ring_of(v, halfedges, open);
       auto corner = [&](std::uint32_t e) {
         const std::size_t f = Topology::face_of(e);
         return static_cast<int>(point_offset[f]) + row(Topology::corner_of(e), 0, rates_[f]);
       };
       std::array<int, 3>* t = tris + tri_offset_[nh_ + v];
-      if (!ring_has_hole(halfedges, k)) {
+      if (!open && !ring_has_hole(halfedges, k)) {
         int ring[limits::kMaxValence];
         for (int i = 0; i < k; ++i) ring[i] = corner(halfedges[i]);
         if (k == 4) quads[quad_offset_[nh_ + v]] = {ring[0], ring[1], ring[2], ring[3]};
@@ -130,7 +135,7 @@ class SeamPolygons {
           for (int i = 1; i + 1 < k; ++i) *t++ = {ring[0], ring[i], ring[i + 1]};
         continue;
       }
-      for_each_run(halfedges, k, [&](const std::uint32_t* run, int length) {
+      for_each_run(halfedges, k, open, [&](const std::uint32_t* run, int length) {
         for (int i = 1; i + 1 < length; ++i) *t++ = {corner(run[0]), corner(run[i]), corner(run[i + 1])};
       });
     }
@@ -139,15 +144,17 @@ class SeamPolygons {
  private:
   bool hole(std::size_t f) const { return !holes_.empty() && holes_[f] != 0; }
 
-  // The half-edges leaving vertex v, counter-clockwise from its owner; their count.
-  int ring_of(std::size_t v, std::uint32_t* out) const {
+  // The half-edges leaving vertex v, counter-clockwise from its owner; their
+  // count. `open`: v is on the boundary, and the fan ends at its last face.
+  int ring_of(std::size_t v, std::uint32_t* out, bool& open) const {
     const std::uint32_t h = vertex_owner_[v];
     int k = 0;
     std::uint32_t e = h;
     do {
       out[k++] = e;
       e = topo_.turn_ccw(e);
-    } while (e != h && k < limits::kMaxValence);
+    } while (e != h && e != Topology::kNoTwin && k < limits::kMaxValence);
+    open = e == Topology::kNoTwin;
     return k;
   }
   bool ring_has_hole(const std::uint32_t* ring, int k) const {
@@ -155,10 +162,24 @@ class SeamPolygons {
       if (hole(Topology::face_of(ring[i]))) return true;
     return false;
   }
-  // Each run of at least three consecutive faces that are not holes (the ring
-  // holds one), in counter-clockwise order: emit(first half-edge, length).
+  // Each run of at least three consecutive faces that are not holes (a closed
+  // ring holds one), in counter-clockwise order: emit(first half-edge, length).
+  // An open fan is not wrapped round.
   template <class Emit>
-  void for_each_run(const std::uint32_t* ring, int k, const Emit& emit) const {
+  void for_each_run(const std::uint32_t* ring, int k, bool open, const Emit& emit) const {
+    if (open) {
+      std::uint32_t run[limits::kMaxValence];
+      int length = 0;
+      for (int i = 0; i <= k; ++i) {
+        if (i < k && !hole(Topology::face_of(ring[i]))) {
+          run[length++] = ring[i];
+          continue;
+        }
+        if (length >= 3) emit(run, length);
+        length = 0;
+      }
+      return;
+    }
     int start = 0;
     while (!hole(Topology::face_of(ring[start]))) ++start;  // a hole: runs begin after it
     std::uint32_t run[limits::kMaxValence];

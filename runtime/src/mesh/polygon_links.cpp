@@ -11,7 +11,7 @@ namespace {
 std::string edge_name(int a, int b) { return "(" + std::to_string(a) + ", " + std::to_string(b) + ")"; }
 }  // namespace
 
-PolygonLinks link_polygons(const Connectivity& mesh) {
+PolygonLinks link_polygons(const Connectivity& mesh, bool boundaries) {
   const std::size_t nf = mesh.face_count(), nv = mesh.vertex_count;
   PolygonLinks l;
   l.start.assign(nf + 1, 0);
@@ -65,29 +65,39 @@ PolygonLinks link_polygons(const Connectivity& mesh) {
     std::size_t found = nh;
     for (std::size_t k = first[static_cast<std::size_t>(b)]; k < first[static_cast<std::size_t>(b) + 1]; ++k)
       if (vert(l.next[outgoing[k]]) == a) found = outgoing[k];
-    if (found == nh)
-      throw MeshError("edge " + edge_name(a, b) + " of face " + std::to_string(l.face_of[h]) +
-                      " has no neighbouring face: the mesh has a boundary (only closed meshes are supported)");
+    if (found == nh) {
+      if (!boundaries)
+        throw MeshError("edge " + edge_name(a, b) + " of face " + std::to_string(l.face_of[h]) +
+                        " has no neighbouring face: the mesh has a boundary (only closed meshes are supported here)");
+      found = PolygonLinks::kNoTwin;
+      l.has_boundary = true;
+    }
     l.twin[h] = found;
   }
   for (std::size_t v = 0; v < nv; ++v)
     if (l.valence[v] == 0) throw MeshError("vertex " + std::to_string(v) + " belongs to no face");
   // Each vertex must have a single fan of faces: turning round it from one
   // outgoing half-edge (to the previous half-edge of the face, then across)
-  // must visit all of its edges.
-  std::vector<char> seen(nv, 0);
-  for (std::size_t h = 0; h < nh; ++h) {
-    const auto v = static_cast<std::size_t>(vert(h));
-    if (seen[v]) continue;
-    seen[v] = 1;
+  // must visit all of its faces. A boundary vertex has exactly one outgoing
+  // boundary half-edge, where its open fan starts.
+  l.boundary.assign(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v) {
+    std::size_t start = outgoing[first[v]];
+    int open = 0;
+    for (std::size_t k = first[v]; k < first[v + 1]; ++k)
+      if (l.twin[outgoing[k]] == PolygonLinks::kNoTwin) start = outgoing[k], ++open;
+    if (open > 1)
+      throw MeshError("vertex " + std::to_string(v) + " is non-manifold (its faces form " + std::to_string(open) +
+                      " fans, which meet only at the vertex)");
+    l.boundary[v] = open == 1;
     int count = 0;
-    std::size_t e = h;
+    std::size_t e = start;
     do {
       ++count;
       const std::size_t f = l.face_of[e];
       const std::size_t prev = e == l.start[f] ? l.start[f + 1] - 1 : e - 1;
       e = l.twin[prev];
-    } while (e != h && count <= l.valence[v]);
+    } while (e != start && e != PolygonLinks::kNoTwin && count <= l.valence[v]);
     if (count != l.valence[v])
       throw MeshError("vertex " + std::to_string(v) + " is non-manifold (its faces form more than one fan)");
   }

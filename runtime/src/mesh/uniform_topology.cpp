@@ -26,14 +26,19 @@ const Connectivity& k_gons(const Connectivity& mesh) {
 }  // namespace
 
 template <int K>
-UniformTopology<K>::UniformTopology(const Connectivity& mesh) : UniformTopology(mesh, link_polygons(k_gons<K>(mesh))) {}
+UniformTopology<K>::UniformTopology(const Connectivity& mesh, bool boundaries)
+    : UniformTopology(mesh, link_polygons(k_gons<K>(mesh), boundaries)) {}
 
 template <int K>
 UniformTopology<K>::UniformTopology(const Connectivity& mesh, const PolygonLinks& links) {
   k_gons<K>(mesh);
   vertex_of_ = mesh.face_vertices;
-  twin_.assign(links.twin.begin(), links.twin.end());
+  twin_.resize(links.twin.size());
+  for (std::size_t h = 0; h < twin_.size(); ++h)
+    twin_[h] = links.twin[h] == PolygonLinks::kNoTwin ? kNoTwin : static_cast<std::uint32_t>(links.twin[h]);
   valence_ = links.valence;
+  has_boundary_ = links.has_boundary;
+  if (has_boundary_) boundary_ = links.boundary;
 }
 
 template <int K>

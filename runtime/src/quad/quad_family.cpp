@@ -19,17 +19,54 @@ struct QuadFamily::Prepared {
   int crease_steps = 0;  // of the steps, those that still had sharp features
   int steps = 0;
   Connectivity mesh;  // the prepared mesh
+  bool boundary = false, corners = false;
+  std::vector<QuadPatch> boundary_patches;  // by face, valid where the face is on the boundary
 };
 
 namespace {
 
-bool isolated(const QuadTopology& topo) {
+bool touches_boundary(const QuadTopology& topo, std::size_t f) {
+  for (int c = 0; c < 4; ++c)
+    if (topo.on_boundary(topo.vertex(f, c))) return true;
+  return false;
+}
+
+// Whether every face has a patch: at most one extraordinary corner, and a
+// face touching the boundary one of the regular boundary patches.
+bool isolated(const QuadTopology& topo, bool corners) {
   for (std::size_t f = 0; f < topo.faces(); ++f) {
+    if (topo.has_boundary() && touches_boundary(topo, f)) {
+      if (!boundary_patch_ready(topo, f, corners)) return false;
+      continue;
+    }
     int extraordinary = 0;
     for (int c = 0; c < 4; ++c) extraordinary += topo.valence(topo.vertex(f, c)) != 4;
     if (extraordinary > 1) return false;
   }
   return true;
+}
+
+// The boundary vertices the runtime has patches for: in two faces, or in one
+// with edge-and-corner (steps keep a vertex's number of faces, so this is
+// checked once). Throws MeshError naming the first other one.
+void check_boundary_vertices(const PolygonLinks& links, const MeshFeatures& features) {
+  if (features.boundary == BoundaryInterpolation::None)
+    throw MeshError("the boundary interpolation `none` (faces at boundary vertices without a surface) is not supported "
+                    "yet; use edge-only or edge-and-corner");
+  const bool corners = features.boundary == BoundaryInterpolation::EdgeAndCorner;
+  for (std::size_t v = 0; v < links.boundary.size(); ++v) {
+    if (!links.boundary[v]) continue;
+    const int k = links.valence[v];
+    if (k == 2 || (k == 1 && corners)) continue;
+    throw MeshError("vertex " + std::to_string(v) + " is on the boundary in " + std::to_string(k) + " face" + (k == 1 ? "" : "s") +
+                    "; patches at boundary vertices are made for vertices in two faces (and in one face with "
+                    "edge-and-corner interpolation, a corner) only so far" +
+                    (k == 1 ? " (as a corner it is: `t interpolateboundary 1/0/0 1` in the OBJ file, or the tools' "
+                              "--boundary edge-and-corner)"
+                            : ""));
+  }
+  if (!features.edges.empty() || !features.vertices.empty())
+    throw MeshError("creases or corners tagged on a mesh with a boundary are not supported yet");
 }
 
 // Child c of a face split into quadrants (subdivide_quads) and the parameter
@@ -65,10 +102,20 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   out.refinement = Refinement(mesh.vertex_count);
   out.hierarchy.original_faces = mesh.face_count();
   out.original_sizes = mesh.face_sizes;
-  const PolygonLinks links = link_polygons(mesh);  // a closed manifold (names the face, edge or vertex)
+  const PolygonLinks links = link_polygons(mesh, true);  // a manifold (names the face, edge or vertex)
+  BoundaryRules boundary;
+  if (links.has_boundary) {
+    check_boundary_vertices(links, features);
+    const CurveCreaseRule crease = quad_crease_rule(t, tables.scheme());
+    boundary = {crease.centre, crease.neighbour, features.boundary == BoundaryInterpolation::EdgeAndCorner};
+    out.boundary = true;
+    out.corners = boundary.corners;
+  }
+  const BoundaryRules* rules = links.has_boundary ? &boundary : nullptr;
   ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 4);
   for (std::size_t v = 0; v < mesh.vertex_count; ++v)
-    valences.add_lazy(links.valence[v], [&] { return "vertex " + std::to_string(v); });
+    if (!links.has_boundary || !links.boundary[v])
+      valences.add_lazy(links.valence[v], [&] { return "vertex " + std::to_string(v); });
   const bool all_quads = std::all_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k == 4; });
   if (!all_quads) {
     if (!t.has_polygon_rules()) {
@@ -96,7 +143,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   } else {
     const bool triangles = std::find(mesh.face_sizes.begin(), mesh.face_sizes.end(), 3) != mesh.face_sizes.end();
     if (features.smooth_triangles && triangles) t.check_smooth_triangles();
-    QuadStep step = subdivide_polygons(mesh, links, t, features.smooth_triangles);
+    QuadStep step = subdivide_polygons(mesh, links, t, features.smooth_triangles, rules);
     if (!sharpness.smooth()) {
       sharpness = sharpen_step(mesh, sharpness, crease, quad_step_edge_points(mesh, step.mesh), step.step);
       ++out.crease_steps;
@@ -108,30 +155,51 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     out.mesh = std::move(step.mesh);
     out.polygon_step = true;
   }
-  QuadTopology topo = all_quads ? QuadTopology(out.mesh, links) : QuadTopology(out.mesh);
+  QuadTopology topo = all_quads ? QuadTopology(out.mesh, links) : QuadTopology(out.mesh, out.boundary);
   // Sharp features decay by at least 1 a step: whole-mesh steps until none is
   // left, after which every patch is stationary (smooth) again.
   while (!sharpness.smooth()) {
-    QuadStep step = subdivide_quads(topo, t);
+    QuadStep step = subdivide_quads(topo, t, rules);
     sharpness = sharpen_step(out.mesh, sharpness, crease, quad_step_edge_points(out.mesh, step.mesh), step.step);
     out.hierarchy.add_uniform(4, 2);
     out.refinement.add(std::move(step.step));
     out.mesh = std::move(step.mesh);
     ++out.steps;
     ++out.crease_steps;
-    topo = QuadTopology(out.mesh);
+    topo = QuadTopology(out.mesh, out.boundary);
   }
   const int before_isolation = out.steps;
-  while (!isolated(topo)) {
+  while (!isolated(topo, out.corners)) {
     if (out.steps - before_isolation + (out.polygon_step ? 1 : 0) == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices still share faces after " + std::to_string(limits::kMaxRefinementSteps) +
                       " subdivision steps");
-    QuadStep step = subdivide_quads(topo, t);
+    QuadStep step = subdivide_quads(topo, t, rules);
     out.hierarchy.add_uniform(4, 2);
     out.refinement.add(std::move(step.step));
     out.mesh = std::move(step.mesh);
     ++out.steps;
-    topo = QuadTopology(out.mesh);
+    topo = QuadTopology(out.mesh, out.boundary);
+  }
+  if (out.boundary) {
+    // The points beyond the boundary (boundary_patch_ready) become prepared
+    // points of their own: a last step keeps every vertex and appends them.
+    std::vector<std::vector<std::pair<int, double>>> phantoms;
+    out.boundary_patches.resize(topo.faces());
+    for (std::size_t f = 0; f < topo.faces(); ++f)
+      if (touches_boundary(topo, f)) out.boundary_patches[f] = gather_boundary_patch(topo, f, out.mesh.vertex_count, phantoms);
+    RefinementStep step;
+    step.input_vertices = out.mesh.vertex_count;
+    SparseEntries row;
+    for (std::size_t v = 0; v < out.mesh.vertex_count; ++v) {
+      row.assign(1, {static_cast<std::uint32_t>(v), 1.0});
+      step.add_row(row);
+    }
+    for (const auto& p : phantoms) {
+      row.clear();
+      for (const auto& [v, w] : p) row.emplace_back(static_cast<std::uint32_t>(v), w);
+      step.add_row(row);
+    }
+    out.refinement.add(std::move(step));
   }
   return out;
 }
@@ -147,12 +215,14 @@ QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, Prepared prepared)
       polygon_step_(prepared.polygon_step),
       crease_steps_(prepared.crease_steps),
       steps_(prepared.steps),
-      topology_(prepared.mesh) {
+      topology_(prepared.mesh, prepared.boundary) {
   refinement_ = std::move(prepared.refinement);
   hierarchy_ = std::move(prepared.hierarchy);
   prepared_ = std::move(prepared.mesh);
   patches_.reserve(topology_.faces());
-  for (std::size_t f = 0; f < topology_.faces(); ++f) patches_.push_back(gather_quad_patch(topology_, f));
+  for (std::size_t f = 0; f < topology_.faces(); ++f)
+    patches_.push_back(prepared.boundary && touches_boundary(topology_, f) ? std::move(prepared.boundary_patches[f])
+                                                                          : gather_quad_patch(topology_, f));
   if (tables_.descent()) descent_ = std::make_unique<QuadPatchDescent>(tables_);
   centre_weights_.resize(static_cast<std::size_t>(tables_.rates().back()) + 1);
   for (int n : tables_.rates()) {

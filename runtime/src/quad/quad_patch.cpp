@@ -1,5 +1,7 @@
 #include "quad_patch.hpp"
 
+#include <map>
+#include <optional>
 #include <string>
 
 namespace stencil_runtime {
@@ -78,6 +80,103 @@ QuadPatch gather_quad_patch(const QuadTopology& topo, std::size_t face) {
   p.points[o + 4] = ru.ul();  // (1,2)
   p.points[o + 5] = u.ul();   // (0,2)
   p.points[o + 6] = ul.ul();  // (-1,2)
+  return p;
+}
+
+namespace {
+
+// The cell across edge `from` (k+from -> k+from+1) of a cell, if the edge is not on the boundary.
+std::optional<Cell> across(const std::optional<Cell>& c, int from, int offset) {
+  if (!c) return std::nullopt;
+  if (c->topo->twin(QuadTopology::half_edge(c->face, c->k + from)) == QuadTopology::kNoTwin) return std::nullopt;
+  return c->across(from, offset);
+}
+
+}  // namespace
+
+bool boundary_patch_ready(const QuadTopology& topo, std::size_t face, bool corners) {
+  int boundary_edges = 0, first = -1;
+  for (int c = 0; c < 4; ++c)
+    if (topo.twin(QuadTopology::half_edge(face, c)) == QuadTopology::kNoTwin) {
+      ++boundary_edges;
+      if (first < 0 || c == first + 1) first = c;  // the later of two consecutive boundary edges
+    }
+  if (boundary_edges == 0 || boundary_edges > 2) return false;
+  // Two boundary edges must meet at a corner in one face: edges c-1 and c, corner c.
+  int corner_at = -1;
+  if (boundary_edges == 2) {
+    int c = -1;
+    for (int k = 0; k < 4; ++k)
+      if (topo.twin(QuadTopology::half_edge(face, k)) == QuadTopology::kNoTwin &&
+          topo.twin(QuadTopology::half_edge(face, k + 3)) == QuadTopology::kNoTwin)
+        c = k;
+    if (c < 0 || !corners || topo.valence(topo.vertex(face, c)) != 1) return false;
+    corner_at = c;
+  }
+  for (int c = 0; c < 4; ++c) {
+    const int v = topo.vertex(face, c);
+    if (c == corner_at) continue;
+    if (topo.on_boundary(v)) {
+      if (topo.valence(v) != 2) return false;
+      // A boundary corner must lie on one of the face's boundary edges.
+      const bool on_edge = topo.twin(QuadTopology::half_edge(face, c)) == QuadTopology::kNoTwin ||
+                           topo.twin(QuadTopology::half_edge(face, c + 3)) == QuadTopology::kNoTwin;
+      if (!on_edge) return false;
+    } else if (topo.valence(v) != 4) {
+      return false;
+    }
+  }
+  return true;
+}
+
+QuadPatch gather_boundary_patch(const QuadTopology& topo, std::size_t face, std::size_t first_phantom,
+                                std::vector<std::vector<std::pair<int, double>>>& phantoms) {
+  QuadPatch p;
+  p.valence = 4;
+  p.rotation = 0;
+  p.points.assign(16, -1);
+  const std::optional<Cell> c0 = Cell{&topo, face, 0};
+  const std::optional<Cell> rows[3] = {across(c0, 0, 2), c0, across(c0, 2, 0)};
+  auto at = [&](int i, int j) -> int& { return p.points[static_cast<std::size_t>((j + 1) * 4 + (i + 1))]; };
+  for (int r = 0; r < 3; ++r) {
+    const std::optional<Cell> cells[3] = {across(rows[r], 3, 3), rows[r], across(rows[r], 1, 1)};
+    for (int s = 0; s < 3; ++s) {
+      if (!cells[s]) continue;
+      const int i = s - 1, j = r - 1;
+      at(i, j) = cells[s]->ll(), at(i + 1, j) = cells[s]->lr(), at(i + 1, j + 1) = cells[s]->ur(), at(i, j + 1) = cells[s]->ul();
+    }
+  }
+  // Missing points as rows over mesh vertices: first the missing rows (j = -1
+  // or 2) by reflection through the boundary row, then the missing columns
+  // (which may reflect phantoms: the corner's point 4 p00 - 2 p10 - 2 p01 + p11).
+  std::map<int, std::map<int, double>> rows_of;  // (j+1)*4+(i+1) -> entries
+  auto entries = [&](int i, int j) {
+    const int h = (j + 1) * 4 + (i + 1);
+    if (rows_of.count(h)) return rows_of[h];
+    return std::map<int, double>{{at(i, j), 1.0}};
+  };
+  auto reflect = [&](int i, int j, int si, int sj, int ti, int tj) {  // (i,j) = 2 (si,sj) - (ti,tj)
+    std::map<int, double> e;
+    for (const auto& [v, w] : entries(si, sj)) e[v] += 2 * w;
+    for (const auto& [v, w] : entries(ti, tj)) e[v] -= w;
+    rows_of[(j + 1) * 4 + (i + 1)] = e;
+  };
+  const bool row_low = at(0, -1) < 0, row_high = at(0, 2) < 0, col_low = at(-1, 0) < 0, col_high = at(2, 0) < 0;
+  for (int i = -1; i <= 2; ++i) {
+    if (row_low && at(i, 0) >= 0 && at(i, 1) >= 0) reflect(i, -1, i, 0, i, 1);
+    if (row_high && at(i, 1) >= 0 && at(i, 0) >= 0) reflect(i, 2, i, 1, i, 0);
+  }
+  for (int j = -1; j <= 2; ++j) {
+    if (col_low && at(-1, j) < 0) reflect(-1, j, 0, j, 1, j);
+    if (col_high && at(2, j) < 0) reflect(2, j, 1, j, 0, j);
+  }
+  for (int h = 0; h < 16; ++h) {
+    if (p.points[static_cast<std::size_t>(h)] >= 0) continue;
+    const auto it = rows_of.find(h);
+    if (it == rows_of.end()) throw MeshError("internal: face " + std::to_string(face) + " has no point " + std::to_string(h) + " of its boundary patch");
+    p.points[static_cast<std::size_t>(h)] = static_cast<int>(first_phantom + phantoms.size());
+    phantoms.emplace_back(it->second.begin(), it->second.end());
+  }
   return p;
 }
 

@@ -40,4 +40,23 @@ struct QuadPatch {
 // Requires at most one extraordinary corner on the face (the preparation).
 QuadPatch gather_quad_patch(const QuadTopology& topology, std::size_t face);
 
+// Faces on a mesh's boundary whose patch is regular once the points beyond
+// the boundary are supplied (docs/runtime.md, "Boundaries"): the face has one
+// boundary edge whose two vertices are in two faces each, or (with `corners`,
+// edge-and-corner) two boundary edges meeting at a vertex in one face, their
+// other ends in two faces each; its other corners are interior, of valence 4.
+// The boundary curve of both quad schemes is their regular curve with the
+// boundary point held, which equals the regular curve on the sequence
+// reflected through the boundary point, p(-j) = 2 p(0) - p(j): the missing
+// row of the 4x4 block is the "phantom" row 2 p(row 0) - p(row 1), as in
+// OpenSubdiv's regular boundary patches.
+bool boundary_patch_ready(const QuadTopology& topology, std::size_t face, bool corners);
+
+// A regular patch (valence 4, rotation 0) of such a face: `points` holds the
+// mesh vertices it reaches; each missing point is appended to `phantoms` as
+// its row over mesh vertices, and named by its index `first_phantom +` its
+// position in `phantoms`.
+QuadPatch gather_boundary_patch(const QuadTopology& topology, std::size_t face, std::size_t first_phantom,
+                                std::vector<std::vector<std::pair<int, double>>>& phantoms);
+
 }  // namespace stencil_runtime

@@ -11,9 +11,24 @@ MeshError no_rule(int vertex, int valence) {
                    ", for which the tables have no rule");
 }
 
+MeshError no_boundary_rules() {
+  return MeshError("internal: a subdivision step on a mesh with boundaries was given no boundary rules");
+}
+
+// A boundary vertex's row: itself alone (a corner) or the crease curve's mask
+// over its neighbours along the boundary, `after` (across its outgoing boundary
+// edge) and `before` (across its incoming one).
+void boundary_row(SparseEntries& row, std::uint32_t v, std::uint32_t after, std::uint32_t before, int faces,
+                  const BoundaryRules& rules) {
+  row.assign(1, {v, 1.0});
+  if (rules.corners && faces == 1) return;
+  row.assign({{v, rules.centre}, {after, rules.neighbour}, {before, rules.neighbour}});
+}
+
 }  // namespace
 
-QuadStep subdivide_quads(const QuadTopology& topo, const QuadTables& t) {
+QuadStep subdivide_quads(const QuadTopology& topo, const QuadTables& t, const BoundaryRules* boundary) {
+  if (topo.has_boundary() && !boundary) throw no_boundary_rules();
   const std::size_t nf = topo.faces(), nv = topo.vertices();
   // Edge points are numbered after the face points, in the order of their first half-edge.
   std::vector<std::uint32_t> edge_point(4 * nf, 0);
@@ -27,10 +42,11 @@ QuadStep subdivide_quads(const QuadTopology& topo, const QuadTables& t) {
     edge_point[h] = static_cast<std::uint32_t>(nv + nf + edge_owner.size());
     edge_owner.push_back(h);
   }
-  std::vector<std::uint32_t> first_out(nv, UINT32_MAX);  // one outgoing half-edge per vertex
+  // One outgoing half-edge per vertex; on the boundary, the boundary one (its fan's first).
+  std::vector<std::uint32_t> first_out(nv, UINT32_MAX);
   for (std::uint32_t h = 0; h < 4 * nf; ++h) {
     const auto v = static_cast<std::size_t>(topo.vertex(QuadTopology::face_of(h), QuadTopology::corner_of(h)));
-    if (first_out[v] == UINT32_MAX) first_out[v] = h;
+    if (first_out[v] == UINT32_MAX || topo.twin(h) == QuadTopology::kNoTwin) first_out[v] = h;
   }
   QuadStep out;
   out.step.input_vertices = nv;
@@ -38,6 +54,14 @@ QuadStep subdivide_quads(const QuadTopology& topo, const QuadTables& t) {
   SparseEntries row;
   for (std::size_t v = 0; v < nv; ++v) {  // vertex points: centre, edge neighbours, diagonals
     const int valence = topo.valence(static_cast<int>(v));
+    if (topo.on_boundary(static_cast<int>(v))) {
+      std::uint32_t e = first_out[v], last = e;
+      for (; e != QuadTopology::kNoTwin; e = topo.turn_ccw(e)) last = e;
+      boundary_row(row, static_cast<std::uint32_t>(v), vertex(QuadTopology::face_of(first_out[v]), QuadTopology::corner_of(first_out[v]) + 1),
+                   vertex(QuadTopology::face_of(last), QuadTopology::corner_of(last) + 3), valence, *boundary);
+      out.step.add_row(row);
+      continue;
+    }
     const auto* rule = t.vertex_rule(valence);
     if (!rule) throw no_rule(static_cast<int>(v), valence);
     row.assign(1, {static_cast<std::uint32_t>(v), rule->centre});
@@ -57,8 +81,15 @@ QuadStep subdivide_quads(const QuadTopology& topo, const QuadTables& t) {
     out.step.add_row(row);
   }
   for (std::uint32_t h : edge_owner) {  // edge points: both ends, and the other corners of both faces
-    const std::size_t f = QuadTopology::face_of(h), g = QuadTopology::face_of(topo.twin(h));
-    const int c = QuadTopology::corner_of(h), d = QuadTopology::corner_of(topo.twin(h));
+    const std::size_t f = QuadTopology::face_of(h);
+    const int c = QuadTopology::corner_of(h);
+    if (topo.twin(h) == QuadTopology::kNoTwin) {  // a boundary edge: its midpoint
+      row.assign({{vertex(f, c), 0.5}, {vertex(f, c + 1), 0.5}});
+      out.step.add_row(row);
+      continue;
+    }
+    const std::size_t g = QuadTopology::face_of(topo.twin(h));
+    const int d = QuadTopology::corner_of(topo.twin(h));
     row.assign({{vertex(f, c), t.edge_end()}, {vertex(f, c + 1), t.edge_end()}});
     for (int k : {2, 3}) {
       row.emplace_back(vertex(f, c + k), t.edge_wing());
@@ -79,7 +110,9 @@ QuadStep subdivide_quads(const QuadTopology& topo, const QuadTables& t) {
   return out;
 }
 
-QuadStep subdivide_polygons(const Connectivity& mesh, const PolygonLinks& links, const QuadTables& t, bool smooth_triangles) {
+QuadStep subdivide_polygons(const Connectivity& mesh, const PolygonLinks& links, const QuadTables& t, bool smooth_triangles,
+                            const BoundaryRules* boundary) {
+  if (links.has_boundary && !boundary) throw no_boundary_rules();
   const std::size_t nf = mesh.face_count(), nv = mesh.vertex_count;
   const auto& start = links.start;
   const std::size_t nh = start[nf];
@@ -107,6 +140,19 @@ QuadStep subdivide_polygons(const Connectivity& mesh, const PolygonLinks& links,
   };
   for (std::size_t v = 0; v < nv; ++v) {
     const int valence = links.valence[v];
+    if (links.has_boundary && links.boundary[v]) {
+      // Its outgoing boundary half-edge leads to one neighbour; the incoming one
+      // (the half-edge before an outgoing one, without a twin) comes from the other.
+      std::uint32_t after = 0, before = 0;
+      for (std::size_t h : outgoing[v]) {
+        if (links.twin[h] == PolygonLinks::kNoTwin) after = vert(links.next[h]);
+        const std::size_t f = links.face_of[h], prev = h == start[f] ? start[f + 1] - 1 : h - 1;
+        if (links.twin[prev] == PolygonLinks::kNoTwin) before = vert(prev);
+      }
+      boundary_row(row, static_cast<std::uint32_t>(v), after, before, valence, *boundary);
+      out.step.add_row(row);
+      continue;
+    }
     const auto* rule = t.polygon_vertex_rule(valence);
     if (!rule) throw no_rule(static_cast<int>(v), valence);
     // centre * v + edge * mean of the edge midpoints + face * mean of the face points.
@@ -124,6 +170,11 @@ QuadStep subdivide_polygons(const Connectivity& mesh, const PolygonLinks& links,
     out.step.add_row(row);
   }
   for (std::size_t h : edge_owner) {  // both ends and both face points
+    if (links.twin[h] == PolygonLinks::kNoTwin) {  // a boundary edge: its midpoint
+      row.assign({{vert(h), 0.5}, {vert(links.next[h]), 0.5}});
+      out.step.add_row(row);
+      continue;
+    }
     const std::size_t f = links.face_of[h], g = links.face_of[links.twin[h]];
     double end = t.polygon_edge_end(), face = t.polygon_edge_face();
     if (smooth_triangles && (mesh.face_sizes[f] == 3 || mesh.face_sizes[g] == 3)) {

@@ -1,0 +1,346 @@
+// Meshes with boundaries (quad schemes): boundary vertices in two faces and,
+// with edge-and-corner interpolation, corners in one. Oracles: OpenSubdiv Bfr
+// with the same boundary option (Catmull-Clark), and plain subdivision of a
+// tube's tensor-product net by the curve rules along and across it, followed
+// by the curve's limit stencil (nonpoly and Catmull-Clark), written here; the
+// tessellation's rim and Euler characteristic are counted independently.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "bfr_distance.hpp"
+#include "bfr_reference.hpp"
+#include "cli.hpp"
+#include "runtime_api.hpp"
+#include "runtime_checks.hpp"
+#include "stencil_runtime/closest_point.hpp"
+
+using namespace stencil_runtime;
+using namespace test_runtime;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
+
+// An open (columns x rows) grid of quads with uneven heights.
+Mesh open_grid(int columns, int rows) {
+  Mesh m;
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i <= columns; ++i)
+      m.positions.push_back({i + 0.1 * std::sin(3.0 * j), j + 0.07 * i * i / columns, 0.3 * std::sin(1.3 * i + 0.7 * j)});
+  auto at = [&](int i, int j) { return j * (columns + 1) + i; };
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      m.face_sizes.push_back(4);
+      m.face_vertices.insert(m.face_vertices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
+}
+
+// A tube of `around` x `rows` quads, open at both ends: every boundary vertex in two faces.
+Mesh tube(int around, int rows) {
+  Mesh m;
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double a = 2 * M_PI * i / around, r = 1 + 0.15 * std::cos(2.0 * j + i);
+      m.positions.push_back({r * std::cos(a), r * std::sin(a), 0.6 * j + 0.05 * (i % 3)});
+    }
+  auto at = [&](int i, int j) { return j * around + (i % around); };
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < around; ++i) {
+      m.face_sizes.push_back(4);
+      m.face_vertices.insert(m.face_vertices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
+}
+
+// A bundled closed mesh without its first face (for the cube: a box open at
+// the top, its rim vertices in two faces, extraordinary vertices next to them).
+Mesh without_first_face(const std::string& name) {
+  Mesh m = read_obj((kMeshes / (name + ".obj")).string());
+  const int k = m.face_sizes.front();
+  m.face_sizes.erase(m.face_sizes.begin());
+  m.face_vertices.erase(m.face_vertices.begin(), m.face_vertices.begin() + k);
+  return m;
+}
+
+// An open box with a pyramid roof of triangles: the polygon step at a boundary.
+Mesh open_house() {
+  Mesh m = read_obj((kMeshes / "cube.obj").string());
+  const std::vector<int> top(m.face_vertices.begin(), m.face_vertices.begin() + 4);
+  Point centre{0, 0, 0};
+  for (int v : top)
+    for (std::size_t k = 0; k < 3; ++k) centre[k] += m.positions[static_cast<std::size_t>(v)][k] / 4;
+  const int apex = static_cast<int>(m.positions.size());
+  m.positions.push_back({1.5 * centre[0], 1.5 * centre[1], 1.5 * centre[2]});
+  // Drop the top (replaced by the roof) and the next face (the opening).
+  const int k0 = m.face_sizes[0], k1 = m.face_sizes[1];
+  std::vector<int> sizes(m.face_sizes.begin() + 2, m.face_sizes.end());
+  std::vector<int> vertices(m.face_vertices.begin() + k0 + k1, m.face_vertices.end());
+  for (int c = 0; c < 4; ++c) {
+    sizes.push_back(3);
+    vertices.insert(vertices.end(), {top[static_cast<std::size_t>(c)], top[static_cast<std::size_t>((c + 1) % 4)], apex});
+  }
+  m.face_sizes = sizes;
+  m.face_vertices = vertices;
+  return m;
+}
+
+Surface boundary_surface(const std::shared_ptr<const Tables>& tables, const Mesh& m, bool corners,
+                         const std::vector<int>& holes = {}) {
+  MeshFeatures features;
+  features.boundary = corners ? BoundaryInterpolation::EdgeAndCorner : BoundaryInterpolation::EdgeOnly;
+  return Surface(SurfaceTopology::create(tables, m.vertex_count(), m.face_sizes, m.face_vertices, holes, features), m.positions);
+}
+
+std::shared_ptr<const Tables> tables_for(const char* scheme) {
+  return Tables::load(generated_table(scheme, "--valence 3-8 --n 1-8", "sgs").string());
+}
+
+// Plain subdivision of a curve's control polygon by the rules (vertex a, 1-2a,
+// a; edge 1/2, 1/2), periodic or with both ends held (the boundary rule).
+std::vector<Point> curve_step(const std::vector<Point>& p, double a, bool periodic) {
+  const std::size_t n = p.size();
+  std::vector<Point> out;
+  auto mix = [](const std::vector<std::pair<const Point*, double>>& terms) {
+    Point r{0, 0, 0};
+    for (const auto& [q, w] : terms)
+      for (std::size_t k = 0; k < 3; ++k) r[k] += w * (*q)[k];
+    return r;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool end = !periodic && (i == 0 || i + 1 == n);
+    if (end) out.push_back(p[i]);
+    else out.push_back(mix({{&p[(i + n - 1) % n], a}, {&p[i], 1 - 2 * a}, {&p[(i + 1) % n], a}}));
+    if (periodic || i + 1 < n) out.push_back(mix({{&p[i], 0.5}, {&p[(i + 1) % n], 0.5}}));
+  }
+  return out;
+}
+
+// The same curve's limit at vertex i (interior: the stencil (b, 1-2b, b); a held end: itself).
+Point curve_limit(const std::vector<Point>& p, std::size_t i, double b, bool periodic) {
+  const std::size_t n = p.size();
+  if (!periodic && (i == 0 || i + 1 == n)) return p[i];
+  Point r{0, 0, 0};
+  for (std::size_t k = 0; k < 3; ++k) r[k] = b * p[(i + n - 1) % n][k] + (1 - 2 * b) * p[i][k] + b * p[(i + 1) % n][k];
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("boundaries: every node of every face at rates 1..8 equals OpenSubdiv Bfr with the same boundary option",
+          "[runtime][boundaries][opensubdiv]") {
+  const auto tables = tables_for("catmull-clark");
+  struct Case {
+    const char* name;
+    Mesh mesh;
+    bool corners;
+  };
+  for (const Case& c : {Case{"open grid 5x4, edge-and-corner", open_grid(5, 4), true},
+                        Case{"open grid 1x1, edge-and-corner", open_grid(1, 1), true},
+                        Case{"tube 8x3, edge-only", tube(8, 3), false},
+                        Case{"tube 3x1, edge-and-corner", tube(3, 1), true},
+                        Case{"box open at the top, edge-only", without_first_face("cube"), false},
+                        Case{"open house (triangles), edge-only", open_house(), false}}) {
+    INFO(c.name);
+    const Surface surface = boundary_surface(tables, c.mesh, c.corners);
+    bfr_reference::Creasing options;
+    options.boundary_corners = c.corners;
+    bfr_reference::BfrLimit reference(c.mesh.positions, c.mesh.face_sizes, c.mesh.face_vertices,
+                                      bfr_reference::osd::Sdc::SCHEME_CATMARK, {}, options);
+    const double size = extent(c.mesh);
+    double worst = 0, worst_derivative = 0;
+    for (std::size_t f = 0; f < c.mesh.face_count(); ++f) {
+      if (c.mesh.face_sizes[f] != 4) continue;  // Bfr's parameterisation of other polygons is its own
+      REQUIRE(reference.has_surface(static_cast<int>(f)));
+      for (long n = 1; n <= 8; ++n)
+        for (long j = 0; j <= n; ++j)
+          for (long i = 0; i <= n; ++i) {
+            const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n;
+            worst = std::max(worst, distance(surface.evaluate(f, grid(i, j, n)), reference.evaluate(static_cast<int>(f), u, v)) / size);
+          }
+      for (const auto& [u, v] : {std::pair{0.3, 0.7}, {0.5, 0.125}, {0.9, 0.05}}) {
+        const Derivatives ours = surface.derivatives(f, u, v);
+        const auto ref = reference.derivatives(static_cast<int>(f), u, v);
+        worst_derivative = std::max({worst_derivative, distance(ours.du, ref[1]) / size, distance(ours.dv, ref[2]) / size});
+      }
+    }
+    CHECK(worst < 1e-10);
+    CHECK(worst_derivative < 1e-10);
+    WARN(c.name << ": largest difference to Bfr over the mesh size " << worst << " (positions), " << worst_derivative
+                << " (derivatives)");
+  }
+}
+
+TEST_CASE("boundaries: on a tube, nonpoly and Catmull-Clark equal plain subdivision by the curve rules along and "
+          "across, and the boundary is the curve of the boundary polygon",
+          "[runtime][boundaries]") {
+  struct Scheme {
+    const char* name;
+    double vertex, limit;  // the curve's vertex weight a and limit weight b
+  };
+  const int around = 6, rows = 3;
+  const Mesh m = tube(around, rows);
+  for (const Scheme& s : {Scheme{"nonpoly", 1.0 / 6, 1.0 / 5}, Scheme{"catmull-clark", 1.0 / 8, 1.0 / 6}}) {
+    const Surface surface = boundary_surface(tables_for(s.name), m, false);
+    for (int levels = 1; levels <= 3; ++levels) {
+      // The net P[j][i], refined by tensor steps: along i periodic, across j with both ends held.
+      std::vector<std::vector<Point>> net(rows + 1);
+      for (int j = 0; j <= rows; ++j)
+        for (int i = 0; i < around; ++i) net[static_cast<std::size_t>(j)].push_back(m.positions[static_cast<std::size_t>(j * around + i)]);
+      for (int l = 0; l < levels; ++l) {
+        for (auto& row : net) row = curve_step(row, s.vertex, true);
+        std::vector<std::vector<Point>> next;
+        for (std::size_t i = 0; i < net[0].size(); ++i) {
+          std::vector<Point> column;
+          for (const auto& row : net) column.push_back(row[i]);
+          column = curve_step(column, s.vertex, false);
+          next.resize(column.size());
+          for (std::size_t j = 0; j < column.size(); ++j) next[j].push_back(column[j]);
+        }
+        net = next;
+      }
+      // Limit: the tensor of the limit stencils (held ends: themselves across).
+      std::vector<std::vector<Point>> along(net.size());
+      for (std::size_t j = 0; j < net.size(); ++j)
+        for (std::size_t i = 0; i < net[j].size(); ++i) along[j].push_back(curve_limit(net[j], i, s.limit, true));
+      const long n = 1L << levels;
+      double worst = 0, worst_boundary = 0;
+      for (int fj = 0; fj < rows; ++fj)
+        for (int fi = 0; fi < around; ++fi)
+          for (long b = 0; b <= n; ++b)
+            for (long a = 0; a <= n; ++a) {
+              const std::size_t I = static_cast<std::size_t>((fi * n + a) % (around * n)), J = static_cast<std::size_t>(fj * n + b);
+              std::vector<Point> column;
+              for (const auto& row : along) column.push_back(row[I]);
+              const Point expected = curve_limit(column, J, s.limit, false);
+              const double d = distance(surface.evaluate(static_cast<std::size_t>(fj * around + fi), grid(a, b, n)), expected);
+              worst = std::max(worst, d);
+              if (J == 0 || J + 1 == column.size()) worst_boundary = std::max(worst_boundary, d);
+            }
+      INFO(s.name << ", rate " << n);
+      CHECK(worst < 1e-12);
+      CHECK(worst_boundary < 1e-12);
+    }
+  }
+}
+
+TEST_CASE("boundaries: tessellations are closed except along the mesh's boundaries and holes, with the right Euler "
+          "characteristic", "[runtime][boundaries][tessellation]") {
+  std::mt19937 rng(20261125u);
+  struct Case {
+    const char* name;
+    Mesh mesh;
+    bool corners;
+    std::vector<int> holes;
+    std::size_t loops;
+  };
+  for (const char* scheme : {"nonpoly", "catmull-clark"}) {
+    const auto tables = tables_for(scheme);
+    for (const Case& c : {Case{"open grid", open_grid(4, 3), true, {}, 1},
+                          Case{"tube", tube(7, 2), false, {}, 2},
+                          Case{"open box", without_first_face("cube"), false, {}, 1},
+                          Case{"open box with a hole in its floor", without_first_face("cube"), false, {0}, 2},
+                          Case{"open house", open_house(), false, {}, 1}}) {
+      const Surface surface = boundary_surface(tables, c.mesh, c.corners, c.holes);
+      for (int trial = 0; trial < 4; ++trial) {
+        std::vector<int> rates(c.mesh.face_count());
+        for (int& r : rates) r = std::uniform_int_distribution<int>(1, 8)(rng);
+        INFO(scheme << ", " << c.name << ", trial " << trial);
+        check_rimmed_manifold(tessellate(surface, rates), c.loops, 0);
+      }
+    }
+  }
+}
+
+TEST_CASE("boundaries the runtime has no patches for yet are refused, naming the vertex", "[runtime][boundaries]") {
+  const auto tables = tables_for("catmull-clark");
+  // A grid's corner is in one face: a patch only with edge-and-corner.
+  CHECK_THROWS_WITH(boundary_surface(tables, open_grid(3, 3), false),
+                    Catch::Contains("vertex 0 is on the boundary in 1 face") && Catch::Contains("edge-and-corner"));
+  // An L of three quads: its inner corner is on the boundary in three faces.
+  Mesh l_shape = open_grid(2, 2);
+  l_shape.face_sizes.pop_back();
+  l_shape.face_vertices.resize(l_shape.face_vertices.size() - 4);
+  l_shape.positions.pop_back();  // the far corner is in no face now
+  CHECK_THROWS_WITH(boundary_surface(tables, l_shape, true), Catch::Contains("vertex 4 is on the boundary in 3 faces"));
+  MeshFeatures none;
+  none.boundary = BoundaryInterpolation::None;
+  const Mesh t = tube(5, 2);
+  CHECK_THROWS_WITH(SurfaceTopology::create(tables, t.vertex_count(), t.face_sizes, t.face_vertices, {}, none),
+                    Catch::Contains("`none`"));
+  MeshFeatures creased;
+  creased.edges.push_back({0, 1, 2.0});
+  CHECK_THROWS_WITH(SurfaceTopology::create(tables, t.vertex_count(), t.face_sizes, t.face_vertices, {}, creased),
+                    Catch::Contains("creases or corners") && Catch::Contains("boundary"));
+  // Triangle schemes: still closed meshes only.
+  const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 1-4", "sgt").string());
+  const std::vector<int> sizes{3, 3}, vertices{0, 1, 2, 0, 2, 3};
+  CHECK_THROWS_WITH(SurfaceTopology::create(loop, 4, sizes, vertices), Catch::Contains("boundary"));
+}
+
+TEST_CASE("boundaries from the OBJ tag and the tools' --boundary option", "[runtime][boundaries][tags]") {
+  const fs::path dir = scratch_dir("boundary-cli");
+  const Mesh grid_mesh = open_grid(3, 2);
+  const fs::path plain = dir / "grid.obj", tagged = dir / "grid-tagged.obj";
+  {
+    std::ofstream a(plain), b(tagged);
+    for (const auto& p : grid_mesh.positions) a << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    std::size_t k = 0;
+    for (int size : grid_mesh.face_sizes) {
+      a << 'f';
+      for (int c = 0; c < size; ++c) a << ' ' << grid_mesh.face_vertices[k++] + 1;
+      a << '\n';
+    }
+    a.flush();
+    std::ifstream in(plain);
+    b << in.rdbuf() << "t interpolateboundary 1/0/0 1\n";
+  }
+  const std::string tables = generated_table("catmull-clark", "--valence 3-8 --n 1-8", "sgs").string();
+  // The corner (0, 0) is interpolated exactly with edge-and-corner, from the tag or the option.
+  const CliResult from_tag = run_stencileval("--tables " + tables + " --mesh " + tagged.string() + " --face 0 --uv 0,0");
+  REQUIRE(from_tag.status == 0);
+  const CliResult from_option =
+      run_stencileval("--tables " + tables + " --mesh " + plain.string() + " --boundary edge-and-corner --face 0 --uv 0,0");
+  REQUIRE(from_option.status == 0);
+  CHECK(from_tag.output == from_option.output);
+  const CliResult refused = run_stencileval("--tables " + tables + " --mesh " + plain.string() + " --face 0 --uv 0,0");
+  CHECK(refused.status == 1);
+  CHECK_THAT(refused.output, Catch::Contains("on the boundary in 1 face"));
+  // The option overrides the tag.
+  const CliResult overridden =
+      run_stencileval("--tables " + tables + " --mesh " + tagged.string() + " --boundary edge-only --face 0 --uv 0,0");
+  CHECK(overridden.status == 1);
+  const CliResult tess = run_stenciltess("--tables " + tables + " --mesh " + tagged.string() + " --rate 4 --out " +
+                                         (dir / "t.obj").string());
+  CHECK(tess.status == 0);
+  CHECK(fs::exists(dir / "t.obj"));
+  const CliResult bad = run_stenciltess("--tables " + tables + " --mesh " + plain.string() + " --boundary sideways --rate 4 --out " +
+                                        (dir / "u.obj").string());
+  CHECK(bad.status == 1);
+  CHECK(!fs::exists(dir / "u.obj"));
+}
+
+TEST_CASE("boundaries: closest points equal a Bfr brute force, also where the nearest point is on the boundary curve",
+          "[runtime][boundaries][distance][opensubdiv]") {
+  std::mt19937 rng(11);
+  const auto tables = tables_for("catmull-clark");
+  for (const Mesh& mesh : {tube(8, 3), without_first_face("cube")}) {
+    const Surface surface = boundary_surface(tables, mesh, false);
+    const ClosestPointQuery query(surface);
+    const bfr_reference::BfrOracle oracle(mesh);
+    const double size = extent(mesh);
+    std::uniform_real_distribution<double> coordinate(-2.0, 2.5);
+    for (int k = 0; k < 40; ++k) {
+      const Point q{coordinate(rng), coordinate(rng), coordinate(rng)};
+      INFO(mesh.face_count() << "-face mesh, query " << k << ": " << q[0] << " " << q[1] << " " << q[2]);
+      const ClosestPoint ours = query.find(q);
+      REQUIRE(ours.found);
+      CHECK(std::abs(ours.distance - oracle.distance_to(q)) < 1e-8 * size);
+      CHECK(distance(surface.evaluate(ours.face, ours.u, ours.v, 1e-12).point, ours.point) < 1e-9 * size);
+    }
+  }
+}
