@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iomanip>
 #include <fstream>
+#include <sstream>
 #include <random>
 
 #include "bfr_distance.hpp"
@@ -443,5 +444,30 @@ TEST_CASE("stencildist answers as the library does and refuses bad points files 
   refused(write("empty.xyz", "# nothing\n\n"), "no points");
   refused(write("trunc.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\nend_header\nabc"),
           "truncated");
+  {
+    const CliResult bad = dist(good, "--out " + good);
+    CHECK(bad.status == 1);
+    CHECK(bad.output.find("is an input and the output") != std::string::npos);
+  }
+  refused(good + " --tolerance 1e-300", "at least 1e-14");
+  // Files from Windows: a byte-order mark and CRLF line ends, in .xyz and in a PLY header, read as the plain file.
+  const std::string crlf_ply = write("w.ply", "ply\r\nformat ascii 1.0\r\nelement vertex 3\r\nproperty float x\r\nproperty float y\r\n"
+                                               "property float z\r\nend_header\r\n0.1 0.2 0.9\r\n3 -1 0.5\r\n0 0 0\r\n");
+  const std::string bom_xyz = write("b.xyz", "\xEF\xBB\xBF" "0.1 0.2 0.9\r\n3 -1 0.5\r\n0 0 0\r\n");
+  auto result = [&](const std::string& points) {
+    const std::string path = (dir / "result.txt").string();
+    const CliResult run = dist(points, "--out " + path);
+    INFO(run.output);
+    CHECK(run.status == 0);
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::filesystem::remove(path);
+    return text.str();
+  };
+  const std::string expected = result(good);
+  CHECK(!expected.empty());
+  CHECK(result(crlf_ply) == expected);
+  CHECK(result(bom_xyz) == expected);
   std::filesystem::remove_all(dir);
 }

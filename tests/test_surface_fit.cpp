@@ -386,6 +386,9 @@ TEST_CASE("stencilfit refuses bad inputs with one line naming the fault, and wri
       {"points.xyz", "--max-control-points 100", tables, "needs --max-error"},
       {"points.xyz", "--max-control-points 10 --max-error 0.001", tables, "below the control mesh's 26"},
       {"points.xyz", "--max-control-points 100 --max-error 1e-6", tables, "splits triangles"},
+      {"points.xyz", "--max-control-points -3 --max-error 0.001", tables, "at least 4, got -3"},
+      {"points.xyz", "--tolerance 1e-300", tables, "at least 1e-14"},
+      {"points.xyz", "--report " + out, tables, "three different files"},
   };
   for (const auto& [points, extra, table, message] : cases) {
     INFO(points << " " << extra);
@@ -397,6 +400,13 @@ TEST_CASE("stencilfit refuses bad inputs with one line naming the fault, and wri
     CHECK(!std::filesystem::exists(out));
     CHECK(!std::filesystem::exists(out + ".partial"));
   }
+  // A negative size is named before any reconstruction work (it once wrapped round to 2^64 - 5).
+  const CliResult negative = run_stencilfit("--tables " + tables + " --points " + (dir / "points.xyz").string() +
+                                            " --control-points -5 --out " + out);
+  CHECK(negative.status == 1);
+  CHECK_THAT(negative.output, Catch::Contains("--control-points must be at least 4, got -5"));
+  CHECK_THAT(negative.output, !Catch::Contains("initial mesh"));
+  CHECK(!std::filesystem::exists(out));
 }
 
 namespace {

@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
       ->required();
   app.add_option("--points", points_path, "the points: .xyz/.txt (`x y z` lines), .ply (vertices) or .off (vertices)")
       ->required();
-  std::size_t control_points = 0;
+  long long control_points = 0;  // signed, so that a negative count is named rather than wrapped
   auto* control = app.add_option("--control", control_path, "the initial control mesh (.obj): a closed mesh near the points");
   auto* made = app.add_option("--control-points", control_points,
                               "make the initial control mesh from the points, with this many vertices (at least 4)");
@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
   app.add_option("--max-error", options.max_error,
                  "stop once the largest distance is at most this fraction of the diagonal (default 0: run all "
                  "iterations)");
-  std::size_t max_control_points = 0;
+  long long max_control_points = 0;
   app.add_option("--max-control-points", max_control_points,
                  "adaptive refinement: while the max error is above --max-error, split the triangles with points "
                  "farther than half of it (red-green, the worst first) and fit again (--iterations per round), up to "
@@ -103,9 +103,27 @@ int main(int argc, char** argv) {
     if (options.threads < 0 || options.threads > 256) throw std::runtime_error("--threads must be 1..256 (or 0 for all cores)");
     if (std::filesystem::path(out_path).extension() != ".obj") throw std::runtime_error(out_path + ": --out must end in .obj");
 
+    if (options.tolerance < 1e-14)
+      throw std::runtime_error("--tolerance must be at least 1e-14 (a fraction of the diagonal; doubles resolve about "
+                               "1e-16 of it)");
+    if (app.count("--control-points") && control_points < 4)
+      throw std::runtime_error("--control-points must be at least 4, got " + std::to_string(control_points));
+    if (app.count("--max-control-points") && max_control_points < 4)
+      throw std::runtime_error("--max-control-points must be at least 4, got " + std::to_string(max_control_points));
+    {  // three outputs, three files: one must not overwrite another
+      namespace fs = std::filesystem;
+      auto same = [](const std::string& a, const std::string& b) {
+        return !a.empty() && !b.empty() && fs::weakly_canonical(a) == fs::weakly_canonical(b);
+      };
+      if (same(out_path, report_path) || same(out_path, plot_path) || same(report_path, plot_path))
+        throw std::runtime_error("--out, --report and --plot must name three different files");
+      for (const std::string& input : {points_path, control_path})
+        if (same(input, out_path) || same(input, report_path) || same(input, plot_path))
+          throw std::runtime_error(input + " is an input and an output; give the output another name");
+    }
     if (max_control_points > 0 && !(options.max_error > 0))
       throw std::runtime_error("--max-control-points needs --max-error (the split threshold)");
-    if (control_path.empty() && control_points == 0)
+    if (control_path.empty() && !app.count("--control-points"))
       throw std::runtime_error("give the initial control mesh (--control) or its size (--control-points)");
     const auto tables = Tables::load(tables_spec);
     const std::vector<Point> points = stencil_tools::read_points(points_path);
@@ -115,7 +133,7 @@ int main(int argc, char** argv) {
       for (const std::string& warning : mesh.warnings) std::cerr << warning << '\n';
     } else {
       stencil_reconstruction::InitialMeshOptions initial;
-      initial.control_points = control_points;
+      initial.control_points = static_cast<std::size_t>(control_points);
       initial.progress = [](const std::string& stage) { std::fprintf(stderr, "initial mesh: %s\n", stage.c_str()); };
       stencil_reconstruction::InitialMeshReport made_report;
       mesh = stencil_reconstruction::initial_control_mesh(points, initial, &made_report);
@@ -139,7 +157,7 @@ int main(int argc, char** argv) {
     };
     FitResult fit;
     if (max_control_points > 0) {
-      AdaptiveFit adaptive = fit_adaptively(tables, mesh, points, options, max_control_points);
+      AdaptiveFit adaptive = fit_adaptively(tables, mesh, points, options, static_cast<std::size_t>(max_control_points));
       std::fprintf(stderr, "%d refinement rounds: %zu control points\n", adaptive.rounds, adaptive.mesh.vertex_count());
       mesh = std::move(adaptive.mesh);
       fit = std::move(adaptive.fit);

@@ -1,5 +1,6 @@
 #include "points_file.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -122,10 +123,15 @@ std::vector<Point> read_off(const std::string& path, const std::string& text) {
 }
 
 std::vector<Point> read_ply(const std::string& path, const std::string& data) {
-  const std::size_t header_end = data.find("end_header\n");
-  if (data.compare(0, 4, "ply\n") != 0 || header_end == std::string::npos)
+  // Header lines end in LF or (files written on Windows) CRLF, consistently.
+  const bool crlf = data.compare(0, 5, "ply\r\n") == 0;
+  const std::string eol = crlf ? "\r\n" : "\n";
+  const std::size_t header_end = data.find("end_header" + eol);
+  if (data.compare(0, 3 + eol.size(), "ply" + eol) != 0 || header_end == std::string::npos)
     throw std::runtime_error(path + ": not a PLY file (no 'ply' line or no 'end_header')");
-  std::istringstream header(data.substr(0, header_end));
+  std::string header_text = data.substr(0, header_end);
+  if (crlf) header_text.erase(std::remove(header_text.begin(), header_text.end(), '\r'), header_text.end());
+  std::istringstream header(header_text);
   std::string line, format;
   std::size_t line_number = 0, count = 0;
   bool in_vertex = false, seen_vertex = false;
@@ -183,7 +189,7 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
       }
   if (slot[0] < 0 || slot[1] < 0 || slot[2] < 0) throw std::runtime_error(path + ": the vertices have no x, y and z properties");
 
-  const std::size_t body = header_end + std::strlen("end_header\n");
+  const std::size_t body = header_end + std::strlen("end_header") + eol.size();
   // A count the file cannot hold is refused before anything is allocated: a
   // binary vertex takes its properties' bytes, an ASCII one at least two
   // bytes per value ("0 ").
