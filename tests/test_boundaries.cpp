@@ -16,6 +16,7 @@
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
 #include "stencil_runtime/closest_point.hpp"
+#include "stencil_runtime/subdivide.hpp"
 
 using namespace stencil_runtime;
 using namespace test_runtime;
@@ -341,6 +342,27 @@ TEST_CASE("boundaries: closest points equal a Bfr brute force, also where the ne
       REQUIRE(ours.found);
       CHECK(std::abs(ours.distance - oracle.distance_to(q)) < 1e-8 * size);
       CHECK(distance(surface.evaluate(ours.face, ours.u, ours.v, 1e-12).point, ours.point) < 1e-9 * size);
+    }
+  }
+}
+
+TEST_CASE("boundaries: subdivide() on an open mesh keeps its limit surface", "[runtime][boundaries]") {
+  for (const char* scheme : {"catmull-clark", "nonpoly"}) {
+    const auto tables = tables_for(scheme);
+    for (bool corners : {false, true}) {
+      Mesh mesh = corners ? open_grid(4, 3) : without_first_face("cube");
+      mesh.tags.boundary = corners ? BoundaryInterpolation::EdgeAndCorner : BoundaryInterpolation::EdgeOnly;
+      const Mesh refined = subdivide(*tables, mesh);
+      REQUIRE(refined.face_count() == 4 * mesh.face_count());
+      const Surface before = boundary_surface(tables, mesh, corners), after = boundary_surface(tables, refined, corners);
+      double worst = 0;
+      // Child 0 of face f is face 4f, the quadrant at f's corner 0 with the same axes.
+      for (std::size_t f = 0; f < mesh.face_count(); ++f)
+        for (long j = 0; j <= 4; ++j)
+          for (long i = 0; i <= 4; ++i)
+            worst = std::max(worst, distance(after.evaluate(4 * f, grid(i, j, 4)), before.evaluate(f, grid(i, j, 8))));
+      INFO(scheme << (corners ? ", open grid with corners" : ", open box"));
+      CHECK(worst < 1e-13 * extent(mesh));
     }
   }
 }

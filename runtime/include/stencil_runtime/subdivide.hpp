@@ -3,6 +3,8 @@
 // store: a quad scheme's polygon step when the mesh has other polygons (every
 // face becomes quads), else its quad step (1 to 4); a triangle scheme's Loop
 // step (1 to 4) or double sqrt(3) step (1 to 9). The limit surface does not change.
+// A quad mesh may have boundaries: OpenSubdiv's boundary rules, with the
+// mesh's `interpolateboundary` tag (edge-only unless it says edge-and-corner).
 #include "mesh.hpp"
 #include "tables.hpp"
 

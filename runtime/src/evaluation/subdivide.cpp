@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "quad/quad_creases.hpp"
 #include "quad/quad_refinement.hpp"
 #include "triangle/triangle_steps.hpp"
 
@@ -13,7 +14,15 @@ Mesh subdivide(const Tables& tables, const Mesh& mesh) {
   std::vector<RefinementStep> steps;
   if (tables.family() == SchemeFamily::Quad) {
     const bool quads = std::all_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k == 4; });
-    QuadStep step = quads ? subdivide_quads(QuadTopology(c), tables.quad()) : subdivide_polygons(c, link_polygons(c), tables.quad());
+    const PolygonLinks links = link_polygons(c, true);
+    BoundaryRules boundary;  // OpenSubdiv's, with the mesh's interpolation tag
+    if (links.has_boundary) {
+      const CurveCreaseRule crease = quad_crease_rule(tables.quad(), tables.scheme());
+      boundary = {crease.centre, crease.neighbour, mesh.tags.boundary == BoundaryInterpolation::EdgeAndCorner};
+    }
+    const BoundaryRules* rules = links.has_boundary ? &boundary : nullptr;
+    QuadStep step = quads ? subdivide_quads(QuadTopology(c, links), tables.quad(), rules)
+                          : subdivide_polygons(c, links, tables.quad(), false, rules);
     next = std::move(step.mesh);
     steps.push_back(std::move(step.step));
   } else {

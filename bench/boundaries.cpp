@@ -1,0 +1,138 @@
+// Benchmark: the cost of boundaries (issue 17's target: tessellation
+// throughput on a mesh with boundaries within 1.25x of a closed mesh of the
+// same size). Two pairs of meshes: an open tube
+// against the closed torus of the same grid (256 x 224 quads, all regular,
+// equal face counts),
+// and the cube refined to 49,152 faces against the cube without its top face
+// refined alike (40,960 faces, a boundary loop with extraordinary vertices
+// next to it; throughput, not time, is compared). Uniform rates 8
+// and 16 and a random mix 1..24, 1 and 2 threads: a whole static
+// tessellation (plan and points, as bench_tessellation) in triangles per
+// second, and the per-frame update of the prepared points (set_positions).
+// OpenSubdiv 3.5's Bfr tessellates the same meshes in the same run.
+// Usage: bench_boundaries [CATMULL-CLARK.sgs]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "osd_tessellation.hpp"
+#include "stencil_runtime/mesh_io.hpp"
+#include "stencil_runtime/subdivide.hpp"
+#include "stencil_runtime/tessellation.hpp"
+
+using namespace stencil_runtime;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+template <class F>
+double median3(F f) {
+  double t[3] = {f(), f(), f()};
+  std::sort(t, t + 3);
+  return t[1];
+}
+
+// A grid of around x rows quads on a torus (closed) or a tube (open at both ends).
+Mesh ring_grid(int around, int rows, bool closed) {
+  Mesh m;
+  const int rings = closed ? rows : rows + 1;
+  for (int j = 0; j < rings; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double a = 2 * M_PI * i / around, b = 2 * M_PI * j / rows;
+      m.positions.push_back(closed ? Point{(3 + std::cos(b)) * std::cos(a), (3 + std::cos(b)) * std::sin(a), std::sin(b)}
+                                   : Point{std::cos(a), std::sin(a), 4.0 * j / rows});
+    }
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < around; ++i) {
+      auto at = [&](int x, int y) { return (y % rings) * around + (x % around); };
+      m.face_sizes.push_back(4);
+      m.face_vertices.insert(m.face_vertices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
+}
+
+struct Row {
+  double ours = 0, osd = 0;
+};
+
+}  // namespace
+
+int run(int argc, char** argv) {
+  const std::string cc_path = argc > 1 ? argv[1] : "tables/catmull-clark/catmull-clark.sgs";
+  const auto tables = Tables::load(cc_path);
+  Mesh cube = read_obj(std::string(STENCIL_SOURCE_DIR) + "/meshes/cube.obj");
+  Mesh open_box = cube;
+  open_box.face_sizes.erase(open_box.face_sizes.begin());
+  open_box.face_vertices.erase(open_box.face_vertices.begin(), open_box.face_vertices.begin() + 4);
+  while (cube.face_count() < 40000) cube = subdivide(*tables, cube);
+  while (open_box.face_count() < 40000) open_box = subdivide(*tables, open_box);
+  struct Pair {
+    const char* name;
+    Mesh closed, open;
+  };
+  const Pair pairs[] = {{"torus / tube 256x224", ring_grid(256, 224, true), ring_grid(256, 224, false)},
+                        {"cube / open box", cube, open_box}};
+  std::printf("| meshes | mesh | faces | rate | threads | triangles | ours (M tri/s) | ours / closed | Bfr (M tri/s) | Bfr / closed | positions update (ms) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const Pair& pair : pairs) {
+    std::vector<Row> closed_rows;
+    for (int open = 0; open < 2; ++open) {
+      const Mesh& mesh = open ? pair.open : pair.closed;
+      const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
+      Surface surface(topology, mesh.positions);
+      const double update_ms = 1e3 * median3([&] {
+        const auto s = Clock::now();
+        surface.set_positions(mesh.positions);
+        return std::chrono::duration<double>(Clock::now() - s).count();
+      });
+      osd_bench::Input input{&mesh.positions, &mesh.face_sizes, &mesh.face_vertices, false};
+      osd_bench::BfrTessellator osd(input);
+      std::size_t row = 0;
+      for (int rate : {8, 16, 0}) {
+        std::mt19937 rng(7);
+        std::vector<int> rates(mesh.face_count(), rate);
+        if (rate == 0)
+          for (int& r : rates) r = std::uniform_int_distribution<int>(1, 24)(rng);
+        for (int threads : {1, 2}) {
+          std::size_t triangles = 0, osd_triangles = 0;
+          const double ours = median3([&] {
+            const auto s = Clock::now();
+            const TessellationPlan plan(surface.shared_topology(), rates, {threads});
+            PolygonSoup soup = plan.make_soup();
+            plan.evaluate(surface, soup.positions.data());
+            triangles = soup.triangle_count();
+            return std::chrono::duration<double>(Clock::now() - s).count();
+          });
+          const double theirs = median3([&] {
+            const osd_bench::Result r = osd.run(rates, threads);
+            osd_triangles = r.triangles;
+            return r.seconds;
+          });
+          const Row now{triangles / ours / 1e6, osd_triangles / theirs / 1e6};
+          if (!open) closed_rows.push_back(now);
+          const Row& base = closed_rows[row++];
+          std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | %.2f | %.1f | %.2f | %.2f |\n", pair.name,
+                      open ? "open" : "closed", mesh.face_count(), rate ? std::to_string(rate).c_str() : "mix 1..24",
+                      threads, triangles, now.ours, now.ours / base.ours, now.osd, now.osd / base.osd, update_ms);
+          std::fflush(stdout);
+        }
+      }
+    }
+  }
+  return 0;
+}
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_boundaries: error: %s\n", e.what());
+    return 1;
+  }
+}
