@@ -272,7 +272,7 @@ TEST_CASE("boundaries the runtime has no patches for yet are refused, naming the
   none.boundary = BoundaryInterpolation::None;
   const Mesh t = tube(5, 2);
   CHECK_THROWS_WITH(SurfaceTopology::create(tables, t.vertex_count(), t.face_sizes, t.face_vertices, {}, none),
-                    Catch::Contains("`none`"));
+                    Catch::Contains("every face has a vertex on the boundary"));
   MeshFeatures creased;
   creased.edges.push_back({0, 1, 2.0});
   CHECK_THROWS_WITH(SurfaceTopology::create(tables, t.vertex_count(), t.face_sizes, t.face_vertices, {}, creased),
@@ -364,5 +364,66 @@ TEST_CASE("boundaries: subdivide() on an open mesh keeps its limit surface", "[r
       INFO(scheme << (corners ? ", open grid with corners" : ", open box"));
       CHECK(worst < 1e-13 * extent(mesh));
     }
+  }
+}
+
+TEST_CASE("boundaries, `none`: faces at boundary vertices have no surface, the others equal Bfr's with VTX_BOUNDARY_NONE",
+          "[runtime][boundaries][opensubdiv]") {
+  const auto tables = tables_for("catmull-clark");
+  Mesh l_shape = open_grid(4, 4);  // an L: boundary vertices in 1, 2 and 3 faces, all allowed with `none`
+  for (int k = 0; k < 2; ++k) {  // the last two faces of the top row
+    l_shape.face_sizes.pop_back();
+    l_shape.face_vertices.resize(l_shape.face_vertices.size() - 4);
+  }
+  l_shape.positions.resize(l_shape.positions.size() - 2);  // their two top-right vertices are in no face now
+  for (const Mesh& mesh : {open_grid(5, 4), tube(6, 4), l_shape}) {
+    MeshFeatures features;
+    features.boundary = BoundaryInterpolation::None;
+    const Surface surface(SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, {}, features),
+                          mesh.positions);
+    using Osd = OpenSubdiv::Far::TopologyDescriptor;
+    Osd desc;
+    desc.numVertices = static_cast<int>(mesh.vertex_count());
+    desc.numFaces = static_cast<int>(mesh.face_count());
+    desc.numVertsPerFace = mesh.face_sizes.data();
+    desc.vertIndicesPerFace = mesh.face_vertices.data();
+    OpenSubdiv::Sdc::Options sdc;
+    sdc.SetVtxBoundaryInterpolation(OpenSubdiv::Sdc::Options::VTX_BOUNDARY_NONE);
+    using Factory = OpenSubdiv::Far::TopologyRefinerFactory<Osd>;
+    std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> refiner(
+        Factory::Create(desc, Factory::Options(OpenSubdiv::Sdc::SCHEME_CATMARK, sdc)));
+    REQUIRE(refiner);
+    OpenSubdiv::Bfr::RefinerSurfaceFactory<> factory(*refiner);
+    std::vector<double> flat;
+    for (const Point& p : mesh.positions) flat.insert(flat.end(), p.begin(), p.end());
+    const double size = extent(mesh);
+    double worst = 0;
+    std::size_t with_surface = 0;
+    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+      INFO(mesh.face_count() << "-face mesh, face " << f);
+      const bool has = factory.FaceHasLimitSurface(static_cast<int>(f));
+      REQUIRE(surface.topology().is_hole(f) == !has);
+      if (!has) {
+        CHECK_THROWS_WITH(surface.evaluate(f, grid(1, 1, 2)), Catch::Contains("is a hole"));
+        continue;
+      }
+      ++with_surface;
+      OpenSubdiv::Bfr::Surface<double> bfr;
+      REQUIRE(factory.InitVertexSurface(static_cast<int>(f), &bfr));
+      std::vector<double> patch(static_cast<std::size_t>(bfr.GetNumPatchPoints()) * 3);
+      bfr.PreparePatchPoints(flat.data(), 3, patch.data(), 3);
+      for (long j = 0; j <= 6; ++j)
+        for (long i = 0; i <= 6; ++i) {
+          const double uv[2] = {i / 6.0, j / 6.0};
+          Point ref{};
+          bfr.Evaluate(uv, patch.data(), 3, ref.data());
+          worst = std::max(worst, distance(surface.evaluate(f, grid(i, j, 6)), ref) / size);
+        }
+    }
+    CHECK(with_surface > 0);
+    CHECK(worst < 1e-10);
+    std::vector<int> rates(mesh.face_count(), 3);
+    const PolygonSoup soup = tessellate(surface, rates);
+    CHECK(!soup.positions.empty());
   }
 }

@@ -156,9 +156,9 @@ void check_output_is_not_input(const std::string& output, const std::vector<std:
 
 void BoundaryOption::add(CLI::App& app) {
   app.add_option("--boundary", text,
-                 "meshes with boundaries: edge-only (default, as OpenSubdiv's tools) or edge-and-corner (a boundary "
-                 "vertex in one face is a corner); overrides the mesh's `t interpolateboundary` tag ('none' is not "
-                 "supported yet)")
+                 "meshes with boundaries, as OpenSubdiv: edge-only (default, as its tools), edge-and-corner (a boundary "
+                 "vertex in one face is a corner) or none (faces at boundary vertices have no surface, like holes); "
+                 "overrides the mesh's `t interpolateboundary` tag")
       ->check(CLI::IsMember({"none", "edge-only", "edge-and-corner"}));
 }
 

@@ -68,6 +68,20 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   } catch (const MeshError& e) {
     throw MeshError(std::string(e.what()) + kNumbering);
   }
+  if (features.boundary == BoundaryInterpolation::None && t->family_->has_boundary()) {
+    // OpenSubdiv's `none`: the faces at boundary vertices keep their part in
+    // the subdivision but have no surface, as holes (the steps keep the
+    // original vertices' numbers, so the prepared topology answers for them).
+    if (t->holes_.empty()) t->holes_.assign(t->face_sizes_.size(), 0);
+    std::size_t offset = 0;
+    for (std::size_t f = 0; f < t->face_sizes_.size(); ++f) {
+      for (int c = 0; c < t->face_sizes_[f]; ++c)
+        if (t->family_->on_boundary(t->face_vertices_[offset + static_cast<std::size_t>(c)])) t->holes_[f] = 1;
+      offset += static_cast<std::size_t>(t->face_sizes_[f]);
+    }
+    if (std::find(t->holes_.begin(), t->holes_.end(), 0) == t->holes_.end())
+      throw MeshError("every face has a vertex on the boundary: with the boundary interpolation `none` the mesh has no surface");
+  }
   return t;
 }
 

@@ -106,6 +106,8 @@ class Family {
   virtual int refinement_steps() const = 0;
   // Whether the mesh has boundary edges (a quad family's meshes may).
   virtual bool has_boundary() const { return false; }
+  // Whether vertex v (of the control mesh: the steps keep its number) is on the boundary.
+  virtual bool on_boundary(int /*vertex*/) const { return false; }
   // What (u, v) means on original face `face`.
   virtual FaceDomain domain(std::size_t face) const = 0;
 

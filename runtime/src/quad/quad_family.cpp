@@ -20,6 +20,7 @@ struct QuadFamily::Prepared {
   int steps = 0;
   Connectivity mesh;  // the prepared mesh
   bool boundary = false, corners = false;
+  bool no_boundary_surface = false;  // `none`: faces at boundary vertices have no surface (holes), hence no patch
   std::vector<QuadPatch> boundary_patches;  // by face, valid where the face is on the boundary
 };
 
@@ -32,11 +33,12 @@ bool touches_boundary(const QuadTopology& topo, std::size_t f) {
 }
 
 // Whether every face has a patch: at most one extraordinary corner, and a
-// face touching the boundary one of the regular boundary patches.
-bool isolated(const QuadTopology& topo, bool corners) {
+// face touching the boundary one of the regular boundary patches (or, with
+// `none`, no patch: it has no surface).
+bool isolated(const QuadTopology& topo, bool corners, bool no_boundary_surface) {
   for (std::size_t f = 0; f < topo.faces(); ++f) {
     if (topo.has_boundary() && touches_boundary(topo, f)) {
-      if (!boundary_patch_ready(topo, f, corners)) return false;
+      if (!no_boundary_surface && !boundary_patch_ready(topo, f, corners)) return false;
       continue;
     }
     int extraordinary = 0;
@@ -50,9 +52,9 @@ bool isolated(const QuadTopology& topo, bool corners) {
 // with edge-and-corner (steps keep a vertex's number of faces, so this is
 // checked once). Throws MeshError naming the first other one.
 void check_boundary_vertices(const PolygonLinks& links, const MeshFeatures& features) {
-  if (features.boundary == BoundaryInterpolation::None)
-    throw MeshError("the boundary interpolation `none` (faces at boundary vertices without a surface) is not supported "
-                    "yet; use edge-only or edge-and-corner");
+  if (!features.edges.empty() || !features.vertices.empty())
+    throw MeshError("creases or corners tagged on a mesh with a boundary are not supported yet");
+  if (features.boundary == BoundaryInterpolation::None) return;  // no surface at boundary vertices: any will do
   const bool corners = features.boundary == BoundaryInterpolation::EdgeAndCorner;
   for (std::size_t v = 0; v < links.boundary.size(); ++v) {
     if (!links.boundary[v]) continue;
@@ -65,8 +67,6 @@ void check_boundary_vertices(const PolygonLinks& links, const MeshFeatures& feat
                               "--boundary edge-and-corner)"
                             : ""));
   }
-  if (!features.edges.empty() || !features.vertices.empty())
-    throw MeshError("creases or corners tagged on a mesh with a boundary are not supported yet");
 }
 
 // Child c of a face split into quadrants (subdivide_quads) and the parameter
@@ -110,6 +110,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     boundary = {crease.centre, crease.neighbour, features.boundary == BoundaryInterpolation::EdgeAndCorner};
     out.boundary = true;
     out.corners = boundary.corners;
+    out.no_boundary_surface = features.boundary == BoundaryInterpolation::None;
   }
   const BoundaryRules* rules = links.has_boundary ? &boundary : nullptr;
   ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 4);
@@ -169,7 +170,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     topo = QuadTopology(out.mesh, out.boundary);
   }
   const int before_isolation = out.steps;
-  while (!isolated(topo, out.corners)) {
+  while (!isolated(topo, out.corners, out.no_boundary_surface)) {
     if (out.steps - before_isolation + (out.polygon_step ? 1 : 0) == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices still share faces after " + std::to_string(limits::kMaxRefinementSteps) +
                       " subdivision steps");
@@ -186,7 +187,10 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     std::vector<std::vector<std::pair<int, double>>> phantoms;
     out.boundary_patches.resize(topo.faces());
     for (std::size_t f = 0; f < topo.faces(); ++f)
-      if (touches_boundary(topo, f)) out.boundary_patches[f] = gather_boundary_patch(topo, f, out.mesh.vertex_count, phantoms);
+      if (touches_boundary(topo, f)) {
+        if (out.no_boundary_surface) out.boundary_patches[f].points.assign(16, 0);  // a hole: never evaluated
+        else out.boundary_patches[f] = gather_boundary_patch(topo, f, out.mesh.vertex_count, phantoms);
+      }
     RefinementStep step;
     step.input_vertices = out.mesh.vertex_count;
     SparseEntries row;

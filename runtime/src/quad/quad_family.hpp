@@ -30,6 +30,7 @@ class QuadFamily final : public Family {
   std::string preparation() const override;
   int refinement_steps() const override { return steps_ + (polygon_step_ ? 1 : 0); }
   bool has_boundary() const override { return topology_.has_boundary(); }
+  bool on_boundary(int vertex) const override { return topology_.on_boundary(vertex); }
   FaceDomain domain(std::size_t face) const override;
   bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const override;
   using Family::stencil;  // and at a real parameter
