@@ -199,3 +199,36 @@ TEST_CASE("semi-sharp crease and corner tags give the surface of the same featur
     }
   }
 }
+
+TEST_CASE("write_obj keeps the tags, so that a written control mesh (stencilfit's output) is the same surface",
+          "[runtime][tags]") {
+  const fs::path dir = scratch_dir("obj-tags-round-trip");
+  for (const std::string tags : {"t crease 3/2/0 0 1 3 2.5 0.1\nt corner 1/1/0 7 0.3\nt hole 2/0/0 1 5\n"
+                                 "t interpolateboundary 1/0/0 1\nt creasemethod 0/0/1 chaikin\nt smoothtriangles 0/0/1 smooth\n",
+                                 "t interpolateboundary 1/0/0 0\n", "t interpolateboundary 1/0/0 2\n", ""}) {
+    INFO(tags);
+    const Mesh m = read_obj(tagged_cube(dir, "in", tags).string());
+    write_obj(m, (dir / "out.obj").string());
+    const Mesh back = read_obj((dir / "out.obj").string());
+    REQUIRE(back.tags.creases.size() == m.tags.creases.size());
+    for (std::size_t k = 0; k < m.tags.creases.size(); ++k) {
+      CHECK(back.tags.creases[k].a == m.tags.creases[k].a);
+      CHECK(back.tags.creases[k].b == m.tags.creases[k].b);
+      CHECK(back.tags.creases[k].sharpness == m.tags.creases[k].sharpness);
+    }
+    REQUIRE(back.tags.corners.size() == m.tags.corners.size());
+    for (std::size_t k = 0; k < m.tags.corners.size(); ++k) {
+      CHECK(back.tags.corners[k].vertex == m.tags.corners[k].vertex);
+      CHECK(back.tags.corners[k].sharpness == m.tags.corners[k].sharpness);
+    }
+    REQUIRE(back.tags.holes.size() == m.tags.holes.size());
+    for (std::size_t k = 0; k < m.tags.holes.size(); ++k) CHECK(back.tags.holes[k].face == m.tags.holes[k].face);
+    CHECK(back.tags.boundary == m.tags.boundary);
+    CHECK(back.tags.chaikin_creases == m.tags.chaikin_creases);
+    CHECK(back.tags.smooth_triangles == m.tags.smooth_triangles);
+    CHECK(back.positions == m.positions);
+    CHECK(back.face_vertices == m.face_vertices);
+    CHECK(back.warnings.empty());
+  }
+  fs::remove_all(dir);
+}

@@ -29,8 +29,10 @@ Mesh read_obj(const std::string& path);
 void write_polygons(const PolygonSoup& soup, const std::string& path);
 
 // A control mesh as OBJ (`v` lines with every digit of the doubles, then `f`
-// lines, 1-based), in the mesh's vertex and face order; written like
-// write_polygons, so a failure leaves nothing behind.
+// lines, 1-based, then its OpenSubdiv tag lines: creases, corners, holes, the
+// boundary interpolation, the crease method, smooth triangles), in the mesh's
+// vertex and face order, so that read_obj gives back the same surface; written
+// like write_polygons, so a failure leaves nothing behind.
 void write_obj(const Mesh& mesh, const std::string& path);
 
 }  // namespace stencil_runtime

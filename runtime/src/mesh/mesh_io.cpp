@@ -197,6 +197,15 @@ void write_obj(const Mesh& mesh, const std::string& path) {
       std::fputc('\n', f);
       offset += static_cast<std::size_t>(size);
     }
+    // The tags, so that the file describes the same surface (OpenSubdiv's format, as read_obj reads it).
+    const MeshTags& t = mesh.tags;
+    for (const auto& c : t.creases) std::fprintf(f, "t crease 2/1/0 %d %d %.17g\n", c.a, c.b, c.sharpness);
+    for (const auto& c : t.corners) std::fprintf(f, "t corner 1/1/0 %d %.17g\n", c.vertex, c.sharpness);
+    for (const auto& h : t.holes) std::fprintf(f, "t hole 1/0/0 %d\n", h.face);
+    if (t.boundary != BoundaryInterpolation::EdgeOnly)
+      std::fprintf(f, "t interpolateboundary 1/0/0 %d\n", t.boundary == BoundaryInterpolation::None ? 0 : 1);
+    if (t.chaikin_creases) std::fprintf(f, "t creasemethod 0/0/1 chaikin\n");
+    if (t.smooth_triangles) std::fprintf(f, "t smoothtriangles 0/0/1 smooth\n");
   });
 }
 
