@@ -14,63 +14,21 @@
 #include "bfr_reference.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
+#include "open_meshes.hpp"
 #include "runtime_checks.hpp"
 #include "stencil_runtime/closest_point.hpp"
 #include "stencil_runtime/subdivide.hpp"
 
 using namespace stencil_runtime;
 using namespace test_runtime;
+using namespace test_meshes;
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
-
-// An open (columns x rows) grid of quads with uneven heights.
-Mesh open_grid(int columns, int rows) {
-  Mesh m;
-  for (int j = 0; j <= rows; ++j)
-    for (int i = 0; i <= columns; ++i)
-      m.positions.push_back({i + 0.1 * std::sin(3.0 * j), j + 0.07 * i * i / columns, 0.3 * std::sin(1.3 * i + 0.7 * j)});
-  auto at = [&](int i, int j) { return j * (columns + 1) + i; };
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < columns; ++i) {
-      m.face_sizes.push_back(4);
-      m.face_vertices.insert(m.face_vertices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return m;
-}
-
-// A tube of `around` x `rows` quads, open at both ends: every boundary vertex in two faces.
-Mesh tube(int around, int rows) {
-  Mesh m;
-  for (int j = 0; j <= rows; ++j)
-    for (int i = 0; i < around; ++i) {
-      const double a = 2 * M_PI * i / around, r = 1 + 0.15 * std::cos(2.0 * j + i);
-      m.positions.push_back({r * std::cos(a), r * std::sin(a), 0.6 * j + 0.05 * (i % 3)});
-    }
-  auto at = [&](int i, int j) { return j * around + (i % around); };
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < around; ++i) {
-      m.face_sizes.push_back(4);
-      m.face_vertices.insert(m.face_vertices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return m;
-}
-
-// A bundled closed mesh without its first face (for the cube: a box open at
-// the top, its rim vertices in two faces, extraordinary vertices next to them).
-Mesh without_first_face(const std::string& name) {
-  Mesh m = read_obj((kMeshes / (name + ".obj")).string());
-  const int k = m.face_sizes.front();
-  m.face_sizes.erase(m.face_sizes.begin());
-  m.face_vertices.erase(m.face_vertices.begin(), m.face_vertices.begin() + k);
-  return m;
-}
-
 // An open box with a pyramid roof of triangles: the polygon step at a boundary.
 Mesh open_house() {
-  Mesh m = read_obj((kMeshes / "cube.obj").string());
+  Mesh m = read_obj((test_meshes::kMeshes / "cube.obj").string());
   const std::vector<int> top(m.face_vertices.begin(), m.face_vertices.begin() + 4);
   Point centre{0, 0, 0};
   for (int v : top)
@@ -273,10 +231,6 @@ TEST_CASE("boundaries the runtime has no patches for yet are refused, naming the
   const Mesh t = tube(5, 2);
   CHECK_THROWS_WITH(SurfaceTopology::create(tables, t.vertex_count(), t.face_sizes, t.face_vertices, {}, none),
                     Catch::Contains("every face has a vertex on the boundary"));
-  MeshFeatures creased;
-  creased.edges.push_back({0, 1, 2.0});
-  CHECK_THROWS_WITH(SurfaceTopology::create(tables, t.vertex_count(), t.face_sizes, t.face_vertices, {}, creased),
-                    Catch::Contains("creases or corners") && Catch::Contains("boundary"));
   // Triangle schemes: still closed meshes only.
   const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 1-4", "sgt").string());
   const std::vector<int> sizes{3, 3}, vertices{0, 1, 2, 0, 2, 3};

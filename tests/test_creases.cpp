@@ -21,6 +21,7 @@
 #include "bfr_reference.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
+#include "open_meshes.hpp"
 #include "runtime_checks.hpp"
 #include "quad/quad_creases.hpp"
 #include "tables/triangle_tables.hpp"
@@ -441,4 +442,29 @@ TEST_CASE("OpenSubdiv's smooth triangle rule on Catmull-Clark meshes with triang
   f.smooth_triangles();
   const auto nonpoly = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 8", "sgs").string());
   CHECK_THROWS_WITH(surface_with(nonpoly, house(), f), Catch::Contains("smooth triangle rule") && Catch::Contains("nonpoly"));
+}
+
+TEST_CASE("semi-sharp creases and corners on meshes with boundaries equal OpenSubdiv's (edge-only, edge-and-corner)",
+          "[runtime][creases][boundaries][opensubdiv]") {
+  const auto tables = catmull_clark();
+  std::mt19937 rng(20261125u);
+  struct Case {
+    const char* name;
+    Mesh mesh;
+    bool corners;
+  };
+  for (const Case& c : {Case{"box open at the top", test_meshes::without_first_face("cube"), false},
+                        Case{"open grid", test_meshes::open_grid(4, 3), true},
+                        Case{"tube", test_meshes::tube(6, 3), false}}) {
+    for (bool chaikin : {false, true}) {
+      Features f = random_features(c.mesh, chaikin, 2, rng);
+      f.ours.boundary = c.corners ? BoundaryInterpolation::EdgeAndCorner : BoundaryInterpolation::EdgeOnly;
+      f.osd.boundary_corners = c.corners;
+      INFO(c.name << ", " << f.ours.edges.size() << " creases, " << (chaikin ? "Chaikin" : "uniform"));
+      const double far = far_difference(tables, c.mesh, f, 3);
+      CHECK(far < 1e-10);
+      WARN(c.name << (chaikin ? ", Chaikin" : ", uniform") << ": largest difference to Far over the mesh size " << far);
+      if (!chaikin) CHECK(bfr_difference(tables, c.mesh, f) < 1e-10);
+    }
+  }
 }

@@ -73,12 +73,13 @@ void check_crease_steps(std::size_t faces, std::size_t first, float sharpest) {
 }
 
 LevelSharpness sharpen_step(const Connectivity& parent, const LevelSharpness& sharpness, const CurveCreaseRule& curve,
-                            const std::vector<int>& new_edge_points, RefinementStep& step) {
+                            const std::vector<int>& new_edge_points, RefinementStep& step, bool boundary_corners) {
   const bool chaikin = sharpness.chaikin();
   // Each vertex's neighbours (one per outgoing half-edge, so one per incident
   // edge on a closed mesh) and the edge point of each of those edges.
   std::vector<std::vector<int>> neighbours(parent.vertex_count);
   std::vector<std::vector<int>> edge_points(parent.vertex_count);
+  std::vector<int> faces(parent.vertex_count, 0);
   std::size_t corner = 0;
   for (std::size_t f = 0; f < parent.face_count(); ++f) {
     const std::size_t k = static_cast<std::size_t>(parent.face_sizes[f]);
@@ -86,9 +87,27 @@ LevelSharpness sharpen_step(const Connectivity& parent, const LevelSharpness& sh
       const int a = parent.face_vertices[corner + c], b = parent.face_vertices[corner + (c + 1) % k];
       neighbours[static_cast<std::size_t>(a)].push_back(b);
       edge_points[static_cast<std::size_t>(a)].push_back(new_edge_points[corner + c]);
+      ++faces[static_cast<std::size_t>(a)];
     }
     corner += k;
   }
+  // A boundary edge (a half-edge a -> b without b -> a) is infinitely sharp,
+  // as OpenSubdiv makes it: b gets it as one more incident edge. Its rows are
+  // the step's own boundary rules, and its children are boundary edges again,
+  // so it is not kept in the sharpness of the next level.
+  std::vector<std::vector<char>> on_boundary(parent.vertex_count);
+  for (std::size_t a = 0; a < parent.vertex_count; ++a) on_boundary[a].assign(neighbours[a].size(), 0);
+  for (std::size_t a = 0; a < parent.vertex_count; ++a)
+    for (std::size_t i = 0; i < static_cast<std::size_t>(faces[a]); ++i) {
+      const auto b = static_cast<std::size_t>(neighbours[a][i]);
+      bool twin = false;
+      for (std::size_t j = 0; j < static_cast<std::size_t>(faces[b]) && !twin; ++j) twin = neighbours[b][j] == static_cast<int>(a);
+      if (twin) continue;
+      on_boundary[a][i] = 1;
+      neighbours[b].push_back(static_cast<int>(a));
+      edge_points[b].push_back(edge_points[a][i]);
+      on_boundary[b].push_back(1);
+    }
   LevelSharpness next = sharpness.empty_like();
   std::map<std::size_t, SparseEntries> rows;
   std::vector<float> ps, cs;
@@ -98,16 +117,26 @@ LevelSharpness sharpen_step(const Connectivity& parent, const LevelSharpness& sh
     const std::size_t n = nb.size();
     ps.resize(n);
     cs.resize(n);
-    bool any = false;
-    for (std::size_t i = 0; i < n; ++i) any |= (ps[i] = sharpness.edge(vi, nb[i])) > 0;
-    const float pv = sharpness.vertex(vi);
-    if (!any && pv <= 0) continue;
+    bool any = false;  // a semi-sharp feature here (a boundary alone keeps the step's own rows)
+    bool boundary = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (on_boundary[v][i]) {
+        ps[i] = kInfiniteSharpness;
+        boundary = true;
+      } else {
+        any |= (ps[i] = sharpness.edge(vi, nb[i])) > 0;
+      }
+    }
+    const float tagged = sharpness.vertex(vi);
+    if (!any && tagged <= 0) continue;
+    // OpenSubdiv's edge-and-corner: a boundary vertex in one face is infinitely sharp.
+    const float pv = boundary && boundary_corners && faces[v] == 1 ? kInfiniteSharpness : tagged;
     for (std::size_t i = 0; i < n; ++i) {
       cs[i] = child_edge_sharpness(i, ps.data(), n, chaikin);
-      next.set_edge(vi, edge_points[v][i], cs[i]);
+      if (!on_boundary[v][i]) next.set_edge(vi, edge_points[v][i], cs[i]);
     }
     const float cv = decayed_sharpness(pv);
-    next.set_vertex(vi, cv);
+    if (pv < kInfiniteSharpness) next.set_vertex(vi, cv);
     const CreaseRule p_rule = crease_rule(pv, ps.data(), n), c_rule = crease_rule(cv, cs.data(), n);
     if (p_rule == CreaseRule::Smooth || p_rule == CreaseRule::Dart) continue;
     const auto u = static_cast<std::uint32_t>(v);
@@ -124,7 +153,7 @@ LevelSharpness sharpen_step(const Connectivity& parent, const LevelSharpness& sh
   for (std::size_t v = 0; v < parent.vertex_count; ++v)
     for (std::size_t i = 0; i < neighbours[v].size(); ++i) {
       const int a = static_cast<int>(v), b = neighbours[v][i], e = edge_points[v][i];
-      if (a > b) continue;
+      if (a > b || on_boundary[v][i]) continue;
       const float s = sharpness.edge(a, b);
       if (s <= 0) continue;
       const SparseEntries mid{{static_cast<std::uint32_t>(a), 0.5}, {static_cast<std::uint32_t>(b), 0.5}};

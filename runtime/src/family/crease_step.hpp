@@ -30,7 +30,10 @@ struct CurveCreaseRule {
 // the first step, each later step multiplying them by 4. Throws MeshError.
 void check_crease_steps(std::size_t faces, std::size_t first, float sharpest);
 
+// A mesh with boundaries: its boundary edges are infinitely sharp (and, with
+// `boundary_corners`, its boundary vertices in one face), as in OpenSubdiv; the
+// step must already hold the boundary rules (they are not sharpness here).
 LevelSharpness sharpen_step(const Connectivity& parent, const LevelSharpness& sharpness, const CurveCreaseRule& rule,
-                            const std::vector<int>& edge_points, RefinementStep& step);
+                            const std::vector<int>& edge_points, RefinementStep& step, bool boundary_corners = false);
 
 }  // namespace stencil_runtime

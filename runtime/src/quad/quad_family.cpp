@@ -52,8 +52,6 @@ bool isolated(const QuadTopology& topo, bool corners, bool no_boundary_surface) 
 // with edge-and-corner (steps keep a vertex's number of faces, so this is
 // checked once). Throws MeshError naming the first other one.
 void check_boundary_vertices(const PolygonLinks& links, const MeshFeatures& features) {
-  if (!features.edges.empty() || !features.vertices.empty())
-    throw MeshError("creases or corners tagged on a mesh with a boundary are not supported yet");
   if (features.boundary == BoundaryInterpolation::None) return;  // no surface at boundary vertices: any will do
   const bool corners = features.boundary == BoundaryInterpolation::EdgeAndCorner;
   for (std::size_t v = 0; v < links.boundary.size(); ++v) {
@@ -146,7 +144,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     if (features.smooth_triangles && triangles) t.check_smooth_triangles();
     QuadStep step = subdivide_polygons(mesh, links, t, features.smooth_triangles, rules);
     if (!sharpness.smooth()) {
-      sharpness = sharpen_step(mesh, sharpness, crease, quad_step_edge_points(mesh, step.mesh), step.step);
+      sharpness = sharpen_step(mesh, sharpness, crease, quad_step_edge_points(mesh, step.mesh), step.step, out.corners);
       ++out.crease_steps;
     }
     std::vector<std::size_t> offsets(mesh.face_count() + 1, 0);
@@ -161,7 +159,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   // left, after which every patch is stationary (smooth) again.
   while (!sharpness.smooth()) {
     QuadStep step = subdivide_quads(topo, t, rules);
-    sharpness = sharpen_step(out.mesh, sharpness, crease, quad_step_edge_points(out.mesh, step.mesh), step.step);
+    sharpness = sharpen_step(out.mesh, sharpness, crease, quad_step_edge_points(out.mesh, step.mesh), step.step, out.corners);
     out.hierarchy.add_uniform(4, 2);
     out.refinement.add(std::move(step.step));
     out.mesh = std::move(step.mesh);
