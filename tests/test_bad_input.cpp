@@ -36,6 +36,8 @@ TEST_CASE("malformed scheme files are rejected with the file and field named") {
   const fs::path dir = scratch_dir("malformed");
   const fs::path out = dir / "out";
   expect_failure("--scheme " + write_scheme(dir, "json", "{ not json").string() + " --n 3", "not valid JSON", out);
+  expect_failure("--scheme loop --valence 3 --n 2 --binary-layout stored", "--binary-layout applies to quad schemes", out);
+  expect_failure("--scheme fourpoint --n 2 --binary-layout stored", "--binary-layout applies to quad schemes", out);
   expect_failure("--scheme " + write_scheme(dir, "float", uniform("-1", "0.5, 1, 0.5")).string() + " --n 3",
                  "mask.coefficients[0]", out);
   expect_failure("--scheme " + write_scheme(dir, "nofirst", R"({"format": "stencilgen-scheme", "version": 1, "name": "x", "type": "curve-uniform", "arity": 2, "mask": {"coefficients": ["1"]}})").string() + " --n 3",
@@ -91,6 +93,10 @@ TEST_CASE("a successful run writes JSON and binary tables for every rate, and ve
   INFO(v.output);
   CHECK(v.status == 0);
   CHECK(v.output.find("OK") != std::string::npos);
+  // The binary table beside it is named as such, not as broken JSON.
+  const CliResult binary = run_stencilgen("verify " + (dir / "t" / "fourpoint" / "n3.sgc").string());
+  CHECK(binary.status != 0);
+  CHECK(binary.output.find("a binary file; verify checks exact JSON tables") != std::string::npos);
 
   // A tampered table fails verification with a nonzero exit code.
   const fs::path table = dir / "t" / "fourpoint" / "n3.json";

@@ -469,5 +469,8 @@ TEST_CASE("stencildist answers as the library does and refuses bad points files 
   CHECK(!expected.empty());
   CHECK(result(crlf_ply) == expected);
   CHECK(result(bom_xyz) == expected);
+  const std::string with_normals = write("n.xyz", "0.1 0.2 0.9 0 0 1\n3 -1 0.5 1 0 0\n0 0 0 0 1 0\n");
+  CHECK(result(with_normals) == expected);  // scanners' `x y z nx ny nz`: the normals are not used
+  refused(write("badnormal.xyz", "0 0 0 0 0 1\n1 2 3 0 nan 1\n"), "badnormal.xyz:2");
   std::filesystem::remove_all(dir);
 }

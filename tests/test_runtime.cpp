@@ -127,6 +127,12 @@ TEST_CASE("tessellation vertices equal stencileval at their parameters", "[runti
     INFO("vertex " << k);
     REQUIRE(distance(p, {q[0], q[1], q[2]}) < 1e-6);
   }
+  // A batch file with no query is an error, not a silent success.
+  std::ofstream(dir / "empty.txt") << "# nothing to ask\n\n";
+  const CliResult empty = run_stencileval("--tables " + table.string() + " --mesh " + (kMeshes / "torus-3-5.obj").string() +
+                                          " --batch " + (dir / "empty.txt").string());
+  CHECK(empty.status == 1);
+  CHECK(empty.output.find("no queries") != std::string::npos);
   fs::remove_all(dir);
 }
 

@@ -331,6 +331,9 @@ TEST_CASE("tool options and parameters outside their limits are refused, not wra
   expect_error(tess("--camera 0,0,5,0,0,0 --pixels 0"), "--pixels must be a positive number");
   expect_error(tess("--camera 0,0,5,0,0 --pixels 4"), "--camera expects");
   expect_error(tess("--rate nope"), "--rate");
+  expect_error(tess("--camera 1e308,0,6,0,0,0 --pixels 8"), "too large");
+  expect_error(tess("--rate 4 --pixels 8"), "--pixels applies to --camera rates only");
+  expect_error(tess("--rate 4 --fov 90"), "--fov applies to --camera rates only");
   CHECK_FALSE(fs::exists(dir / "t.ply"));
   // Tiny tolerances and pixel sizes ask for the largest rate, with a warning, instead of wrapping to rate 1.
   for (const std::string& mode : {std::string("--tolerance 1e-300"), std::string("--camera 0,0,5,0,0,0 --pixels 1e-300")}) {

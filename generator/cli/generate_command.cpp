@@ -98,6 +98,8 @@ int generate(const GenerateOptions& o) {
   const std::string type = scheme_type(o.scheme);
   const std::string valences = o.valences.empty() ? "3-8" : o.valences;
   if (type == "quad") return generate_quad(o, valences);
+  if (o.layout != "generated")
+    throw Error("--binary-layout applies to quad schemes; '" + o.scheme + "' is a " + type + " scheme");
   if (type == "triangle") return generate_triangle(o, valences);
   if (!o.valences.empty()) throw Error("--valence applies to surface schemes; '" + o.scheme + "' is a curve scheme");
   return generate_curve(o);

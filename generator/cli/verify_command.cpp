@@ -25,6 +25,8 @@ namespace {
 // Prints the file's verdict; returns whether it passed.
 bool verify_file(const std::string& file, const std::string& scheme_spec, const std::vector<std::string>& params) {
   const std::string text = read_file(file, limits::kMaxTableFileBytes, "table");
+  if (text.find('\0') != std::string::npos)
+    throw Error(file + ": a binary file; verify checks exact JSON tables (the .json files and descent.json beside it)");
   const TableDocument table = parse_table_document(text, file);
   // The scheme and parameters the table records, unless given on the command line.
   const std::string& spec = scheme_spec.empty() ? table.scheme : scheme_spec;

@@ -34,9 +34,12 @@ fs::path create_folders(const fs::path& dir) {
   }
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) {
-    if (!created.empty()) fs::remove_all(created, ec);
-    throw Error("cannot create output folder " + dir.string() + ": " + ec.message());
+  if (ec || !fs::is_directory(dir)) {
+    // libstdc++ may report a refused folder with an error code of 0 ("Success").
+    const std::string why = ec && ec.value() != 0 ? ec.message() : "not created (is its parent a folder you may write to?)";
+    std::error_code ignored;
+    if (!created.empty()) fs::remove_all(created, ignored);
+    throw Error("cannot create output folder " + dir.string() + ": " + why);
   }
   return created;
 }

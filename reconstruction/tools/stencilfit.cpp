@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
   FitOptions options;
   app.add_option("--tables", tables_spec, "a .sgs (quad scheme) or .sgt (triangle scheme) table file, or the directory stencilgen wrote it to")
       ->required();
-  app.add_option("--points", points_path, "the points: .xyz/.txt (`x y z` lines), .ply (vertices) or .off (vertices)")
+  app.add_option("--points", points_path, "the points: .xyz/.txt (`x y z` or `x y z nx ny nz` lines), .ply (vertices) or .off (vertices)")
       ->required();
   long long control_points = 0;  // signed, so that a negative count is named rather than wrapped
   auto* control = app.add_option("--control", control_path, "the initial control mesh (.obj): a closed mesh near the points");

@@ -71,8 +71,11 @@ std::vector<Point> read_xyz(const std::string& path, const std::string& text) {
   std::vector<Point> points;
   for_each_line(text, [&](std::size_t line, const std::vector<std::string_view>& words) {
     const std::string where = path + ":" + std::to_string(line);
-    if (words.size() != 3)
-      throw std::runtime_error(where + ": expected three numbers `x y z`, got " + std::to_string(words.size()) + " columns");
+    // `x y z`, or `x y z nx ny nz` as scanners write it (the normal is not used, but checked).
+    if (words.size() != 3 && words.size() != 6)
+      throw std::runtime_error(where + ": expected three numbers `x y z` (or six, with a normal), got " +
+                               std::to_string(words.size()) + " columns");
+    if (words.size() == 6) parse_point({words.begin() + 3, words.end()}, where);
     points.push_back(parse_point(words, where));
     return true;
   });

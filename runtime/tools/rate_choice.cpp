@@ -112,7 +112,9 @@ std::vector<int> rates_for_view(const Mesh& mesh, const Camera& cam, double targ
   if (cam.width_pixels < 1 || cam.width_pixels > 1000000) throw std::runtime_error("--width must be 1..1000000 pixels");
   const V forward0 = sub(cam.target, cam.eye);
   const double fl = norm(forward0);
-  if (!(fl > 0) || !std::isfinite(fl)) throw std::runtime_error("--camera: eye and target coincide");
+  if (!std::isfinite(fl))
+    throw std::runtime_error("--camera: the coordinates are too large (the distance from eye to target overflows)");
+  if (!(fl > 0)) throw std::runtime_error("--camera: eye and target coincide");
   const V fwd{forward0[0] / fl, forward0[1] / fl, forward0[2] / fl};
   const double focal = 0.5 * cam.width_pixels / std::tan(0.5 * cam.fov_degrees * M_PI / 180);
   // Pixel length of a short segment at distance depth: focal * length / depth

@@ -153,7 +153,7 @@ int main(int argc, char** argv) {
   boundary.add(app);
   Columns columns;
   app.add_flag("--derivatives", columns.derivatives, "also d/du and d/dv (quad schemes)");
-  app.add_flag("--second-derivatives", columns.second, "also d2/du2, d2/dudv, d2/dv2 (Catmull-Clark)");
+  app.add_flag("--second-derivatives", columns.second, "also d2/du2, d2/dudv, d2/dv2 (Catmull-Clark, Loop)");
   app.add_flag("--normal", columns.normal, "also the unit normal (quad schemes and Loop; sqrt(3) at extraordinary vertices only)");
   return stencil_tools::run_tool(app, argc, argv, [&] {
     if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive number");
@@ -192,6 +192,7 @@ int main(int argc, char** argv) {
           throw std::runtime_error(batch + ":" + std::to_string(number) + ": " + e.what());
         }
       }
+      if (out.empty()) throw std::runtime_error(batch + ": no queries (expected lines `F U V`)");
       std::fputs(out.c_str(), stdout);  // all or nothing
       return 0;
     }
