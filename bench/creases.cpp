@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_timing.hpp"
 #include "osd_tessellation.hpp"
 #include "stencil_runtime/mesh_io.hpp"
 #include "stencil_runtime/subdivide.hpp"
@@ -26,13 +27,6 @@ using namespace stencil_runtime;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-template <class F>
-double median3(F f) {
-  double t[3] = {f(), f(), f()};
-  std::sort(t, t + 3);
-  return t[1];
-}
 
 // Every 10th edge (in the order the faces first name them), with sharpness s.
 MeshFeatures creases(const Mesh& mesh, double s) {
@@ -84,15 +78,8 @@ int run(int argc, char** argv) {
         for (int& r : rates) r = std::uniform_int_distribution<int>(1, 24)(rng);
       for (int threads : {1, 2}) {
         std::size_t triangles = 0, osd_triangles = 0;
-        const double ours = median3([&] {
-          const auto s = Clock::now();
-          const TessellationPlan plan(surface.shared_topology(), rates, {threads});
-          PolygonSoup soup = plan.make_soup();
-          plan.evaluate(surface, soup.positions.data());
-          triangles = soup.triangle_count();
-          return std::chrono::duration<double>(Clock::now() - s).count();
-        });
-        const double theirs = median3([&] {
+        const double ours = bench_timing::median3([&] { return bench_timing::tessellation_seconds(surface, rates, threads, triangles); });
+        const double theirs = bench_timing::median3([&] {
           const osd_bench::Result r = osd.run(rates, threads);
           osd_triangles = r.triangles;
           return r.seconds;

@@ -19,6 +19,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "bench_timing.hpp"
 #include "osd_tessellation.hpp"
 #include "stencil_runtime/mesh_io.hpp"
 #include "stencil_runtime/subdivide.hpp"
@@ -56,13 +57,6 @@ std::vector<int> rate_set(std::size_t faces, int rate, std::mt19937& rng) {
 }
 
 // Median of three runs of `f`, which returns seconds.
-template <class F>
-double median3(F f) {
-  double t[3] = {f(), f(), f()};
-  std::sort(t, t + 3);
-  return t[1];
-}
-
 void run_rows(const char* scheme, const NamedMesh& m, const std::shared_ptr<const Tables>& tables, bool with_osd) {
   const Surface surface(SurfaceTopology::create(tables, m.mesh.vertex_count(), m.mesh.face_sizes, m.mesh.face_vertices),
                         m.mesh.positions);
@@ -76,7 +70,7 @@ void run_rows(const char* scheme, const NamedMesh& m, const std::shared_ptr<cons
     for (int threads : {1, 2}) {
       std::size_t triangles = 0;
       // A whole static tessellation: the plan (rates, connectivity) and the points.
-      const double ours = median3([&] {
+      const double ours = bench_timing::median3([&] {
         const auto s = Clock::now();
         const TessellationPlan plan(surface.shared_topology(), rates, {threads});
         PolygonSoup soup = plan.make_soup();
@@ -88,7 +82,7 @@ void run_rows(const char* scheme, const NamedMesh& m, const std::shared_ptr<cons
       const double ours_rate = triangles / ours / 1e6;
       if (with_osd) {
         std::size_t osd_triangles = 0;
-        const double theirs = median3([&] {
+        const double theirs = bench_timing::median3([&] {
           const osd_bench::Result r = osd->run(rates, threads);
           osd_triangles = r.triangles;
           return r.seconds;

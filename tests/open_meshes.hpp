@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "stencil_runtime/mesh.hpp"
 #include "stencil_runtime/mesh_io.hpp"
@@ -53,6 +54,28 @@ inline Mesh without_first_face(const std::string& name) {
   const int k = m.face_sizes.front();
   m.face_sizes.erase(m.face_sizes.begin());
   m.face_vertices.erase(m.face_vertices.begin(), m.face_vertices.begin() + k);
+  return m;
+}
+
+// The cube with a pyramid roof of four triangles over its first face (the
+// polygon step); `open`: without its second face too, a mesh with a boundary.
+inline Mesh house(bool open = false) {
+  Mesh m = stencil_runtime::read_obj((kMeshes / "cube.obj").string());
+  const std::vector<int> top(m.face_vertices.begin(), m.face_vertices.begin() + 4);
+  stencil_runtime::Point centre{0, 0, 0};
+  for (int v : top)
+    for (std::size_t k = 0; k < 3; ++k) centre[k] += m.positions[static_cast<std::size_t>(v)][k] / 4;
+  const int apex = static_cast<int>(m.positions.size());
+  m.positions.push_back({1.5 * centre[0], 1.5 * centre[1], 1.5 * centre[2]});
+  const std::size_t dropped = open ? 2 : 1, corners = open ? 8 : 4;  // the top (and the next face), quads
+  std::vector<int> sizes(m.face_sizes.begin() + static_cast<long>(dropped), m.face_sizes.end());
+  std::vector<int> vertices(m.face_vertices.begin() + static_cast<long>(corners), m.face_vertices.end());
+  for (int c = 0; c < 4; ++c) {
+    sizes.push_back(3);
+    vertices.insert(vertices.end(), {top[static_cast<std::size_t>(c)], top[static_cast<std::size_t>((c + 1) % 4)], apex});
+  }
+  m.face_sizes = sizes;
+  m.face_vertices = vertices;
   return m;
 }
 

@@ -38,27 +38,6 @@ Mesh load(const std::string& name) { return read_obj((kMeshes / (name + ".obj"))
 
 // The cube with its first face replaced by a pyramid of four triangles: the
 // polygon step then runs with creases on it.
-Mesh house() {
-  Mesh m = load("cube");
-  const std::vector<int> top(m.face_vertices.begin(), m.face_vertices.begin() + 4);
-  Point centre{0, 0, 0};
-  for (int v : top)
-    for (int k = 0; k < 3; ++k) centre[static_cast<std::size_t>(k)] += m.positions[static_cast<std::size_t>(v)][static_cast<std::size_t>(k)] / 4;
-  Point outward{0, 0, 0};
-  for (int k = 0; k < 3; ++k) outward[static_cast<std::size_t>(k)] = 1.5 * centre[static_cast<std::size_t>(k)];
-  const int apex = static_cast<int>(m.positions.size());
-  m.positions.push_back(outward);
-  std::vector<int> sizes(m.face_sizes.begin() + 1, m.face_sizes.end());
-  std::vector<int> vertices(m.face_vertices.begin() + 4, m.face_vertices.end());
-  for (int c = 0; c < 4; ++c) {
-    sizes.push_back(3);
-    vertices.insert(vertices.end(), {top[static_cast<std::size_t>(c)], top[static_cast<std::size_t>((c + 1) % 4)], apex});
-  }
-  m.face_sizes = sizes;
-  m.face_vertices = vertices;
-  return m;
-}
-
 std::vector<std::pair<int, int>> edges_of(const Mesh& m) {
   std::set<std::pair<int, int>> out;
   std::size_t corner = 0;
@@ -280,7 +259,7 @@ TEST_CASE("random creases and corners on the chess piece and on a mesh with tria
           "[runtime][creases][opensubdiv]") {
   const auto tables = catmull_clark();
   std::mt19937 rng(20261125u);
-  for (const Mesh& mesh : {load("chess-piece"), house()}) {
+  for (const Mesh& mesh : {load("chess-piece"), test_meshes::house()}) {
     for (bool chaikin : {false, true}) {
       const Features f = random_features(mesh, chaikin, 3, rng);
       INFO(mesh.face_count() << " faces, " << f.ours.edges.size() << " creases, " << (chaikin ? "Chaikin" : "uniform"));
@@ -418,7 +397,7 @@ TEST_CASE("creases on sqrt(3) meshes and on tables without a crease rule are ref
 TEST_CASE("OpenSubdiv's smooth triangle rule on Catmull-Clark meshes with triangles equals Far's and Bfr's",
           "[runtime][creases][opensubdiv]") {
   const auto tables = catmull_clark();
-  for (const Mesh& mesh : {house(), load("tri-mix")}) {
+  for (const Mesh& mesh : {test_meshes::house(), load("tri-mix")}) {
     for (bool creased : {false, true}) {
       Features f;
       f.smooth_triangles();
@@ -441,7 +420,7 @@ TEST_CASE("OpenSubdiv's smooth triangle rule on Catmull-Clark meshes with triang
   Features f;
   f.smooth_triangles();
   const auto nonpoly = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 8", "sgs").string());
-  CHECK_THROWS_WITH(surface_with(nonpoly, house(), f), Catch::Contains("smooth triangle rule") && Catch::Contains("nonpoly"));
+  CHECK_THROWS_WITH(surface_with(nonpoly, test_meshes::house(), f), Catch::Contains("smooth triangle rule") && Catch::Contains("nonpoly"));
 }
 
 TEST_CASE("semi-sharp creases and corners on meshes with boundaries equal OpenSubdiv's (edge-only, edge-and-corner)",
