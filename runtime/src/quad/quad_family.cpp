@@ -189,19 +189,21 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
         if (out.no_boundary_surface) out.boundary_patches[f].points.assign(16, 0);  // a hole: never evaluated
         else out.boundary_patches[f] = gather_boundary_patch(topo, f, out.mesh.vertex_count, phantoms);
       }
-    RefinementStep step;
-    step.input_vertices = out.mesh.vertex_count;
-    SparseEntries row;
-    for (std::size_t v = 0; v < out.mesh.vertex_count; ++v) {
-      row.assign(1, {static_cast<std::uint32_t>(v), 1.0});
-      step.add_row(row);
+    if (!phantoms.empty()) {  // none with `none`: its boundary faces have no patch
+      RefinementStep step;
+      step.input_vertices = out.mesh.vertex_count;
+      SparseEntries row;
+      for (std::size_t v = 0; v < out.mesh.vertex_count; ++v) {
+        row.assign(1, {static_cast<std::uint32_t>(v), 1.0});
+        step.add_row(row);
+      }
+      for (const auto& p : phantoms) {
+        row.clear();
+        for (const auto& [v, w] : p) row.emplace_back(static_cast<std::uint32_t>(v), w);
+        step.add_row(row);
+      }
+      out.refinement.add(std::move(step));
     }
-    for (const auto& p : phantoms) {
-      row.clear();
-      for (const auto& [v, w] : p) row.emplace_back(static_cast<std::uint32_t>(v), w);
-      step.add_row(row);
-    }
-    out.refinement.add(std::move(step));
   }
   return out;
 }

@@ -95,12 +95,8 @@ std::optional<Cell> across(const std::optional<Cell>& c, int from, int offset) {
 }  // namespace
 
 bool boundary_patch_ready(const QuadTopology& topo, std::size_t face, bool corners) {
-  int boundary_edges = 0, first = -1;
-  for (int c = 0; c < 4; ++c)
-    if (topo.twin(QuadTopology::half_edge(face, c)) == QuadTopology::kNoTwin) {
-      ++boundary_edges;
-      if (first < 0 || c == first + 1) first = c;  // the later of two consecutive boundary edges
-    }
+  int boundary_edges = 0;
+  for (int c = 0; c < 4; ++c) boundary_edges += topo.twin(QuadTopology::half_edge(face, c)) == QuadTopology::kNoTwin;
   if (boundary_edges == 0 || boundary_edges > 2) return false;
   // Two boundary edges must meet at a corner in one face: edges c-1 and c, corner c.
   int corner_at = -1;
