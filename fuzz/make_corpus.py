@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Regenerates the fuzz fixtures (fuzz/fixtures/) and seed corpus (fuzz/corpus/)
-from a built stencilgen, the bundled meshes and schemes, and the hand-written
-seeds below: small valid inputs and slightly broken ones (truncated, a count or
-field changed). Run after a table format changes:
+from a built stencilgen, the bundled meshes and schemes, the hand-written seeds
+below (small valid inputs and slightly broken ones: truncated, a count or field
+changed) and the hand-written files under fuzz/seeds/<target>/. Run after a table format changes:
 
     python3 fuzz/make_corpus.py build/bin/stencilgen
 
@@ -101,7 +101,9 @@ def main():
         descent = (json_dir / "descent.json").read_text()
         seed("quad_json_descent", "descent.json", descent)
         seed("quad_json_descent", "truncated.json", descent[: len(descent) // 2])
-        seed("quad_json_descent", "version-1.json", descent.replace('"version":2', '"version":1', 1))
+        seed("quad_json_descent", "version-1.json", descent.replace('"version":3', '"version":1', 1))
+        seed("quad_json_descent", "version-2.json", descent.replace('"version":3', '"version":2', 1))
+        seed("quad_json_descent", "sector-out-of-range.json", descent.replace('"faces":3,"position":1', '"faces":3,"position":7', 1))
         seed("quad_json_descent", "no-tangents.json", descent.replace('"tangents":{', '"tangents":null,"x":{', 1))
         for name in ("v3/n1.json", "v5/n2.json"):
             seed("surface_table_verify", name.replace("/", "-"), (json_dir / name).read_text())
@@ -124,6 +126,13 @@ def main():
          "t creasemethod 0/0/1 chaikin\nt smoothtriangles 0/0/1 catmark\nt unknown 0/0/0\n")
     seed("obj_mesh", "cube-crease.obj", cube + "t crease 3/2/0 0 1 3 2.5 0.5\nt corner 1/1/0 7 4\nt hole 1/0/0 2\n")
     seed("obj_mesh", "cube-bad-tags.obj", cube + "t crease 2/1/0 0 6 1\nt corner 9/1 1\n")
+
+    # A vertex on the boundary in three faces (a boundary sector's patch), edge only.
+    seed("obj_mesh", "fan-3-edge-only.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0.2\nv 0 1 0\nv -1 1 0.1\nv -1 0 0\nv -1 -1 0.3\nv 0 -1 0\n"
+         "f 1 2 3 4\nf 1 4 5 6\nf 1 6 7 8\n")
+    # Hand-written files.
+    for path in sorted((FUZZ / "seeds").glob("*/*")):
+        seed(path.parent.name, path.name, path.read_bytes())
 
     # Scheme files.
     for path in sorted((ROOT / "schemes").glob("*.json")):

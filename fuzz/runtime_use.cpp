@@ -123,6 +123,7 @@ void check_permutation(const std::uint32_t* reflection, std::size_t points, int 
 void sweep_quad(const rt::QuadTables& tables, Budget& budget) {
   std::vector<int> valences = tables.valences();
   valences.push_back(4);
+  for (const rt::SectorKey& s : tables.sectors()) valences.push_back(rt::sector_kind(s));  // expanded on this first use
   for (int v : valences) {
     std::vector<double> weights(static_cast<std::size_t>(rt::QuadTables::points(v)));
     for (int n : tables.rates()) {
@@ -142,7 +143,7 @@ void sweep_quad(const rt::QuadTables& tables, Budget& budget) {
           std::copy(w, w + weights.size(), weights.begin());
         }
     }
-    if (v != 4) check_permutation(tables.reflection(v), weights.size(), v);
+    if (v != 4 && !rt::is_sector_kind(v)) check_permutation(tables.reflection(v), weights.size(), v);
   }
 }
 

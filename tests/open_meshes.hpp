@@ -2,6 +2,7 @@
 // Meshes with boundaries for the tests: open grids, tubes, bundled meshes
 // without a face.
 #include <cmath>
+#include <functional>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -76,6 +77,44 @@ inline Mesh house(bool open = false) {
   }
   m.face_sizes = sizes;
   m.face_vertices = vertices;
+  return m;
+}
+
+// A vertex on the boundary in k faces: k sectors of K x K quads round it,
+// spanning a half disc (sector s's (0, b) is sector s+1's (b, 0); the first
+// sector's (a, 0) and the last one's (0, b) run along the boundary), with
+// uneven heights. Vertex 0 is the one in k faces.
+inline Mesh boundary_fan(int k, int K) {
+  Mesh m;
+  std::vector<int> id(static_cast<std::size_t>(k * (K + 1) * (K + 1)), -1);
+  std::function<int(int, int, int)> vertex = [&](int s, int a, int b) -> int {
+    if (a == 0 && b == 0) s = 0;
+    else if (a == 0 && s + 1 < k) return vertex(s + 1, b, 0);  // sector s's (0, b) is sector s+1's (b, 0)
+    int& slot = id[static_cast<std::size_t>((s * (K + 1) + a) * (K + 1) + b)];
+    if (slot < 0) {
+      slot = static_cast<int>(m.positions.size());
+      const double r = a + b, angle = M_PI * (s + (r > 0 ? b / r : 0)) / k;
+      m.positions.push_back({r * std::cos(angle) + 0.05 * b, r * std::sin(angle) + 0.03 * a * b,
+                             0.25 * std::sin(0.9 * a + 1.3 * b + s) + 0.05 * r * r});
+    }
+    return slot;
+  };
+  for (int s = 0; s < k; ++s)
+    for (int b = 0; b < K; ++b)
+      for (int a = 0; a < K; ++a) {
+        m.face_sizes.push_back(4);
+        m.face_vertices.insert(m.face_vertices.end(),
+                               {vertex(s, a, b), vertex(s, a + 1, b), vertex(s, a + 1, b + 1), vertex(s, a, b + 1)});
+      }
+  return m;
+}
+
+// An L of three quads of an open 2x2 grid: its inner corner (vertex 4) is on the boundary in three faces.
+inline Mesh l_shape() {
+  Mesh m = open_grid(2, 2);
+  m.face_sizes.pop_back();
+  m.face_vertices.resize(m.face_vertices.size() - 4);
+  m.positions.pop_back();  // the far corner is in no face now
   return m;
 }
 

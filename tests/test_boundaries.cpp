@@ -8,7 +8,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
+#include <sstream>
 
 #include "bfr_distance.hpp"
 #include "bfr_reference.hpp"
@@ -112,6 +114,56 @@ TEST_CASE("boundaries: every node of every face at rates 1..8 equals OpenSubdiv 
   }
 }
 
+TEST_CASE("boundaries: vertices on the boundary in 1..8 faces (boundary sectors): every node of every face at rates 1..8 "
+          "equals OpenSubdiv Bfr, and the derivatives",
+          "[runtime][boundaries][opensubdiv]") {
+  const auto tables = tables_for("catmull-clark");
+  struct Case {
+    std::string name;
+    Mesh mesh;
+    bool corners;
+  };
+  std::vector<Case> cases{{"L of three quads, edge-only", l_shape(), false},
+                          {"L of three quads, edge-and-corner", l_shape(), true},
+                          {"open grid 3x3, edge-only (corners in one face)", open_grid(3, 3), false},
+                          {"box without two adjacent faces, edge-only", without_first_face("cube"), false}};
+  for (int k = 1; k <= 8; ++k)
+    for (bool corners : {false, true}) cases.push_back({"fan of " + std::to_string(k) + " sectors" + (corners ? ", edge-and-corner" : ", edge-only"), boundary_fan(k, 2), corners});
+  {  // the box loses a second face, next to the first: the two vertices of their common edge are in one face each
+    Mesh& box = cases[3].mesh;
+    box.face_sizes.erase(box.face_sizes.begin());
+    box.face_vertices.erase(box.face_vertices.begin(), box.face_vertices.begin() + 4);
+  }
+  for (const Case& c : cases) {
+    INFO(c.name);
+    const Surface surface = boundary_surface(tables, c.mesh, c.corners);
+    bfr_reference::Creasing options;
+    options.boundary_corners = c.corners;
+    bfr_reference::BfrLimit reference(c.mesh.positions, c.mesh.face_sizes, c.mesh.face_vertices,
+                                      bfr_reference::osd::Sdc::SCHEME_CATMARK, {}, options);
+    const double size = extent(c.mesh);
+    double worst = 0, worst_derivative = 0;
+    for (std::size_t f = 0; f < c.mesh.face_count(); ++f) {
+      REQUIRE(reference.has_surface(static_cast<int>(f)));
+      for (long n = 1; n <= 8; ++n)
+        for (long j = 0; j <= n; ++j)
+          for (long i = 0; i <= n; ++i) {
+            const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n;
+            worst = std::max(worst, distance(surface.evaluate(f, grid(i, j, n)), reference.evaluate(static_cast<int>(f), u, v)) / size);
+          }
+      for (const auto& [u, v] : {std::pair{0.3, 0.7}, {0.5, 0.125}, {0.9, 0.05}, {0.02, 0.01}}) {
+        const Derivatives ours = surface.derivatives(f, u, v);
+        const auto ref = reference.derivatives(static_cast<int>(f), u, v);
+        worst_derivative = std::max({worst_derivative, distance(ours.du, ref[1]) / size, distance(ours.dv, ref[2]) / size});
+      }
+    }
+    CHECK(worst < 1e-10);
+    CHECK(worst_derivative < 1e-10);
+    WARN(c.name << ": largest difference to Bfr over the mesh size " << worst << " (positions), " << worst_derivative
+                << " (derivatives)");
+  }
+}
+
 TEST_CASE("boundaries: on a tube, nonpoly and Catmull-Clark equal plain subdivision by the curve rules along and "
           "across, and the boundary is the curve of the boundary polygon",
           "[runtime][boundaries]") {
@@ -165,6 +217,173 @@ TEST_CASE("boundaries: on a tube, nonpoly and Catmull-Clark equal plain subdivis
   }
 }
 
+namespace {
+
+// Plain subdivision of an open quad mesh by a quad scheme's rules, written
+// here independently of the runtime: face points the centroid, edge points
+// (end, wing) inside and the midpoint on the boundary, vertex points the
+// regular rule inside (the meshes here have no other interior valence) and
+// the boundary curve's rule (a, 1-2a, a) over the two boundary neighbours on
+// the boundary, or held with `corners` at a vertex in one face. Children of
+// face f are 4f + c, child c at corner c with u along the parent's edge c ->
+// c+1, as in the runtime's hierarchy.
+struct PlainRules {
+  double edge_end, edge_wing, centre, edge, face;  // face points: the centroid
+  double curve_a, limit_b;  // the curve's vertex weight and limit weight
+};
+
+struct PlainMesh {
+  std::vector<Point> points;
+  std::vector<std::array<int, 4>> faces;
+  // Per vertex: the faces round it, and its boundary neighbours (none inside).
+  std::vector<std::vector<std::pair<int, int>>> corners_of;  // (face, corner)
+  std::vector<std::vector<int>> boundary_neighbours;
+  std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> edges;  // (lo, hi) -> (face, corner of the edge's start)
+
+  explicit PlainMesh(std::vector<Point> p, std::vector<std::array<int, 4>> f) : points(std::move(p)), faces(std::move(f)) {
+    corners_of.resize(points.size());
+    boundary_neighbours.resize(points.size());
+    for (std::size_t fi = 0; fi < faces.size(); ++fi)
+      for (int c = 0; c < 4; ++c) {
+        const int a = faces[fi][static_cast<std::size_t>(c)], b = faces[fi][static_cast<std::size_t>((c + 1) % 4)];
+        corners_of[static_cast<std::size_t>(a)].emplace_back(static_cast<int>(fi), c);
+        edges[{std::min(a, b), std::max(a, b)}].emplace_back(static_cast<int>(fi), c);
+      }
+    for (const auto& [e, users] : edges)
+      if (users.size() == 1) {
+        boundary_neighbours[static_cast<std::size_t>(e.first)].push_back(e.second);
+        boundary_neighbours[static_cast<std::size_t>(e.second)].push_back(e.first);
+      }
+  }
+  static PlainMesh of(const Mesh& m) {
+    std::vector<std::array<int, 4>> f;
+    for (std::size_t k = 0; k < m.face_count(); ++k)
+      f.push_back({m.face_vertices[4 * k], m.face_vertices[4 * k + 1], m.face_vertices[4 * k + 2], m.face_vertices[4 * k + 3]});
+    return PlainMesh(m.positions, f);
+  }
+  int vertex(int f, int c) const { return faces[static_cast<std::size_t>(f)][static_cast<std::size_t>((c + 4) % 4)]; }
+};
+
+Point mix(const std::vector<std::pair<Point, double>>& terms) {
+  Point r{0, 0, 0};
+  for (const auto& [p, w] : terms)
+    for (std::size_t k = 0; k < 3; ++k) r[k] += w * p[k];
+  return r;
+}
+
+PlainMesh plain_step(const PlainMesh& m, const PlainRules& r, bool corners) {
+  const std::size_t nv = m.points.size(), nf = m.faces.size();
+  std::vector<Point> out(nv);
+  auto P = [&](int v) { return m.points[static_cast<std::size_t>(v)]; };
+  for (std::size_t v = 0; v < nv; ++v) {
+    const auto& bn = m.boundary_neighbours[v];
+    if (bn.empty()) {  // inside: valence 4 only here
+      REQUIRE(m.corners_of[v].size() == 4);
+      std::vector<std::pair<Point, double>> t{{P(static_cast<int>(v)), r.centre}};
+      for (const auto& [f, c] : m.corners_of[v]) t.emplace_back(P(m.vertex(f, c + 1)), r.edge), t.emplace_back(P(m.vertex(f, c + 2)), r.face);
+      out[v] = mix(t);
+    } else {
+      REQUIRE(bn.size() == 2);
+      out[v] = corners && m.corners_of[v].size() == 1
+                   ? P(static_cast<int>(v))
+                   : mix({{P(bn[0]), r.curve_a}, {P(static_cast<int>(v)), 1 - 2 * r.curve_a}, {P(bn[1]), r.curve_a}});
+    }
+  }
+  std::vector<int> face_point(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    face_point[f] = static_cast<int>(out.size());
+    out.push_back(mix({{P(m.faces[f][0]), 0.25}, {P(m.faces[f][1]), 0.25}, {P(m.faces[f][2]), 0.25}, {P(m.faces[f][3]), 0.25}}));
+  }
+  std::map<std::pair<int, int>, int> edge_point;
+  for (const auto& [e, users] : m.edges) {
+    edge_point[e] = static_cast<int>(out.size());
+    if (users.size() == 1) {
+      out.push_back(mix({{P(e.first), 0.5}, {P(e.second), 0.5}}));
+    } else {
+      std::vector<std::pair<Point, double>> t{{P(e.first), r.edge_end}, {P(e.second), r.edge_end}};
+      for (const auto& [f, c] : users) t.emplace_back(P(m.vertex(f, c + 2)), r.edge_wing), t.emplace_back(P(m.vertex(f, c + 3)), r.edge_wing);
+      out.push_back(mix(t));
+    }
+  }
+  auto ep = [&](int a, int b) { return edge_point.at({std::min(a, b), std::max(a, b)}); };
+  std::vector<std::array<int, 4>> faces;
+  for (std::size_t f = 0; f < nf; ++f)
+    for (int c = 0; c < 4; ++c) {
+      const int v = m.vertex(static_cast<int>(f), c), next = m.vertex(static_cast<int>(f), c + 1), prev = m.vertex(static_cast<int>(f), c - 1);
+      faces.push_back({v, ep(v, next), face_point[f], ep(prev, v)});
+    }
+  return PlainMesh(out, faces);
+}
+
+// The limit position of a vertex of a plain mesh: the tensor of the curve's
+// limit stencil inside (regular vertices only), the curve's along the boundary.
+Point plain_limit(const PlainMesh& m, int v, const PlainRules& r, bool corners) {
+  const auto& bn = m.boundary_neighbours[static_cast<std::size_t>(v)];
+  const Point p = m.points[static_cast<std::size_t>(v)];
+  const double b = r.limit_b;
+  if (!bn.empty()) {
+    if (corners && m.corners_of[static_cast<std::size_t>(v)].size() == 1) return p;
+    return mix({{m.points[static_cast<std::size_t>(bn[0])], b}, {p, 1 - 2 * b}, {m.points[static_cast<std::size_t>(bn[1])], b}});
+  }
+  std::vector<std::pair<Point, double>> t{{p, (1 - 2 * b) * (1 - 2 * b)}};
+  for (const auto& [f, c] : m.corners_of[static_cast<std::size_t>(v)])
+    t.emplace_back(m.points[static_cast<std::size_t>(m.vertex(f, c + 1))], b * (1 - 2 * b)), t.emplace_back(m.points[static_cast<std::size_t>(m.vertex(f, c + 2))], b * b);
+  return mix(t);
+}
+
+// The vertex of the level-L plain mesh at node (i, j) / 2^L of original face f.
+int plain_node(const PlainMesh& fine, int f, long i, long j, int levels) {
+  for (int l = levels; l > 0; --l) {
+    const long h = 1L << (l - 1);
+    int c = 0;
+    long x = i, y = j;
+    if (i <= h && j <= h) c = 0, x = i, y = j;
+    else if (j <= h) c = 1, x = j, y = 2 * h - i;
+    else if (i >= h) c = 2, x = 2 * h - i, y = 2 * h - j;
+    else c = 3, x = 2 * h - j, y = i;
+    f = 4 * f + c, i = x, j = y;
+  }
+  static constexpr int corner_of[2][2] = {{0, 3}, {1, 2}};  // [i][j]
+  return fine.vertex(f, corner_of[i][j]);
+}
+
+}  // namespace
+
+TEST_CASE("boundaries: vertices on the boundary in 1..8 faces, nonpoly and Catmull-Clark, equal plain subdivision by the "
+          "scheme's rules followed by the limit stencils at every dyadic node",
+          "[runtime][boundaries]") {
+  struct Scheme {
+    const char* name;
+    PlainRules rules;
+  };
+  for (const Scheme& s : {Scheme{"nonpoly", {1.0 / 3, 1.0 / 12, 4.0 / 9, 1.0 / 9, 1.0 / 36, 1.0 / 6, 1.0 / 5}},
+                          Scheme{"catmull-clark", {3.0 / 8, 1.0 / 16, 9.0 / 16, 3.0 / 32, 1.0 / 64, 1.0 / 8, 1.0 / 6}}}) {
+    const auto tables = tables_for(s.name);
+    std::vector<std::pair<std::string, Mesh>> meshes{{"L of three quads", l_shape()}, {"open grid 2x2", open_grid(2, 2)}};
+    for (int k : {1, 3, 4, 5, 8}) meshes.emplace_back("fan of " + std::to_string(k), boundary_fan(k, 2));
+    for (const auto& [name, mesh] : meshes)
+      for (bool corners : {false, true}) {
+        INFO(s.name << ", " << name << (corners ? ", edge-and-corner" : ", edge-only"));
+        const Surface surface = boundary_surface(tables, mesh, corners);
+        PlainMesh fine = PlainMesh::of(mesh);
+        const double size = extent(mesh);
+        for (int levels = 1; levels <= 3; ++levels) {
+          fine = plain_step(fine, s.rules, corners);
+          const long n = 1L << levels;
+          double worst = 0;
+          for (std::size_t f = 0; f < mesh.face_count(); ++f)
+            for (long j = 0; j <= n; ++j)
+              for (long i = 0; i <= n; ++i) {
+                const int v = plain_node(fine, static_cast<int>(f), i, j, levels);
+                worst = std::max(worst, distance(surface.evaluate(f, grid(i, j, n)), plain_limit(fine, v, s.rules, corners)) / size);
+              }
+          INFO("rate " << n);
+          CHECK(worst < 1e-13);
+        }
+      }
+  }
+}
+
 TEST_CASE("boundaries: tessellations are closed except along the mesh's boundaries and holes, with the right Euler "
           "characteristic", "[runtime][boundaries][tessellation]") {
   std::mt19937 rng(20261125u);
@@ -181,7 +400,13 @@ TEST_CASE("boundaries: tessellations are closed except along the mesh's boundari
                           Case{"tube", tube(7, 2), false, {}, 2},
                           Case{"open box", without_first_face("cube"), false, {}, 1},
                           Case{"open box with a hole in its floor", without_first_face("cube"), false, {0}, 2},
-                          Case{"open house", house(true), false, {}, 1}}) {
+                          Case{"open house", house(true), false, {}, 1},
+                          Case{"open grid, edge-only (corners in one face)", open_grid(3, 3), false, {}, 1},
+                          Case{"L of three quads", l_shape(), false, {}, 1},
+                          Case{"fan of 1 sector", boundary_fan(1, 2), false, {}, 1},
+                          Case{"fan of 3 sectors", boundary_fan(3, 2), false, {}, 1},
+                          Case{"fan of 5 sectors with a hole", boundary_fan(5, 4), false, {37}, 2},
+                          Case{"fan of 8 sectors", boundary_fan(8, 1), true, {}, 1}}) {
       const Surface surface = boundary_surface(tables, c.mesh, c.corners, c.holes);
       for (int trial = 0; trial < 4; ++trial) {
         std::vector<int> rates(c.mesh.face_count());
@@ -193,17 +418,12 @@ TEST_CASE("boundaries: tessellations are closed except along the mesh's boundari
   }
 }
 
-TEST_CASE("boundaries the runtime has no patches for yet are refused, naming the vertex", "[runtime][boundaries]") {
+TEST_CASE("boundaries the tables or the runtime have no patches for are refused, naming the vertex", "[runtime][boundaries]") {
   const auto tables = tables_for("catmull-clark");
-  // A grid's corner is in one face: a patch only with edge-and-corner.
-  CHECK_THROWS_WITH(boundary_surface(tables, open_grid(3, 3), false),
-                    Catch::Contains("vertex 0 is on the boundary in 1 face") && Catch::Contains("edge-and-corner"));
-  // An L of three quads: its inner corner is on the boundary in three faces.
-  Mesh l_shape = open_grid(2, 2);
-  l_shape.face_sizes.pop_back();
-  l_shape.face_vertices.resize(l_shape.face_vertices.size() - 4);
-  l_shape.positions.pop_back();  // the far corner is in no face now
-  CHECK_THROWS_WITH(boundary_surface(tables, l_shape, true), Catch::Contains("vertex 4 is on the boundary in 3 faces"));
+  // Tables of valences up to 8 hold the boundary sectors of up to 8 faces: a vertex in 9 asks for more.
+  CHECK_THROWS_WITH(boundary_surface(tables, boundary_fan(9, 1), false),
+                    Catch::Contains("vertex 0 is on the boundary in 9 faces") &&
+                        Catch::Contains("stencilgen --scheme catmull-clark --valence 3,5-9 --n 1-8"));
   MeshFeatures none;
   none.boundary = BoundaryInterpolation::None;
   const Mesh t = tube(5, 2);
@@ -240,13 +460,29 @@ TEST_CASE("boundaries from the OBJ tag and the tools' --boundary option", "[runt
       run_stencileval("--tables " + tables + " --mesh " + plain.string() + " --boundary edge-and-corner --face 0 --uv 0,0");
   REQUIRE(from_option.status == 0);
   CHECK(from_tag.output == from_option.output);
-  const CliResult refused = run_stencileval("--tables " + tables + " --mesh " + plain.string() + " --face 0 --uv 0,0");
-  CHECK(refused.status == 1);
-  CHECK_THAT(refused.output, Catch::Contains("on the boundary in 1 face"));
+  // Without it (edge only, OpenSubdiv's default) the corner follows the boundary curve: its limit is
+  // 1/6, 2/3, 1/6 of its boundary neighbours (vertices 1 and 4) and itself.
+  const CliResult edge_only = run_stencileval("--tables " + tables + " --mesh " + plain.string() + " --face 0 --uv 0,0");
+  REQUIRE(edge_only.status == 0);
+  auto last_point = [](const std::string& out) {
+    std::istringstream lines(out);
+    std::string line, last;
+    while (std::getline(lines, line))
+      if (!line.empty()) last = line;
+    Point p{};
+    std::istringstream(last) >> p[0] >> p[1] >> p[2];
+    return p;
+  };
+  const auto& P = grid_mesh.positions;
+  Point curve{};
+  for (std::size_t k = 0; k < 3; ++k) curve[k] = P[1][k] / 6 + 2 * P[0][k] / 3 + P[4][k] / 6;
+  CHECK(distance(last_point(edge_only.output), curve) < 1e-6);
+  CHECK(distance(last_point(from_tag.output), P[0]) < 1e-6);
   // The option overrides the tag.
   const CliResult overridden =
       run_stencileval("--tables " + tables + " --mesh " + tagged.string() + " --boundary edge-only --face 0 --uv 0,0");
-  CHECK(overridden.status == 1);
+  REQUIRE(overridden.status == 0);
+  CHECK(overridden.output == edge_only.output);
   const CliResult tess = run_stenciltess("--tables " + tables + " --mesh " + tagged.string() + " --rate 4 --out " +
                                          (dir / "t.obj").string());
   CHECK(tess.status == 0);

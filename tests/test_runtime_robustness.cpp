@@ -71,6 +71,7 @@ TEST_CASE("binary tables with zero rates, or rates, valences and indices out of 
   put<std::uint32_t>(sgs, 0);
   put<std::uint32_t>(sgs, 0);  // no rates
   put<std::uint32_t>(sgs, 0);  // no valences
+  put<std::uint32_t>(sgs, 0);  // no boundary sectors
   write_file(dir / "zero.sgs", with_checksum(sgs));
   CHECK_THROWS_WITH(Tables::load((dir / "zero.sgs").string()), Catch::Contains("zero.sgs: holds no rates"));
   const CliResult r = run_stenciltess("--tables " + (dir / "zero.sgs").string() + " --mesh " + (kMeshes / "cube.obj").string() +
@@ -157,9 +158,19 @@ TEST_CASE("a small .sgs of generated layout may not ask for an expansion beyond 
   std::string dense = sgs_prefix(format::SurfaceLayout::Generated, rates);
   put<std::uint32_t>(dense, 1);
   put_generated_valence(dense, 64, true);
+  put<std::uint32_t>(dense, 0);  // no boundary sectors
   write_file(dir / "dense.sgs", with_checksum(dense));
   CHECK_THROWS_WITH(Tables::load((dir / "dense.sgs").string()),
                     Catch::Contains("valence 64: too much work to expand at load time"));
+  // A boundary sector (expanded on first use) is refused at load when one rate's grid would exceed the limit.
+  std::string sector = sgs_prefix(format::SurfaceLayout::Generated, {4096});
+  put<std::uint32_t>(sector, 0);  // no valences
+  put<std::uint32_t>(sector, 1);
+  put<std::uint8_t>(sector, 0);
+  for (std::uint32_t x : {3u, 1u, 15u}) put<std::uint32_t>(sector, x);  // 3 faces, face 1: 2*3 + 2 + 7 points
+  write_file(dir / "sector.sgs", with_checksum(sector));
+  CHECK_THROWS_WITH(Tables::load((dir / "sector.sgs").string()),
+                    Catch::Contains("sector.sgs") && Catch::Contains("boundary vertex in 3 faces, face 1, rate 4096: too large to expand"));
   fs::remove_all(dir);
 }
 

@@ -27,13 +27,17 @@ bool orthonormalise(Matrix& x) {
   return true;
 }
 
-// The invariant subspace of `b` for the double eigenvalue near `estimate`, by
-// inverse subspace iteration from `start` (m x 2): returns the orthonormal
-// basis and sets `lambda` to the Rayleigh quotient's mean eigenvalue.
+// The invariant subspace of `b` for the eigenvalue near `estimate` (double when
+// `start` is m x 2, simple when m x 1), by inverse subspace iteration from
+// `start`: returns the orthonormal basis and sets `lambda` to the Rayleigh
+// quotient's mean eigenvalue.
 Matrix eigenspace(const Matrix& b, Matrix start, double estimate, Real& lambda) {
   const Eigen::Index m = b.rows();
   if (!orthonormalise(start)) {  // a deterministic fallback start
-    for (Eigen::Index i = 0; i < m; ++i) start(i, 0) = Real(1 + i % 3), start(i, 1) = Real(1 + (i * 7) % 5);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      start(i, 0) = Real(1 + i % 3);
+      if (start.cols() > 1) start(i, 1) = Real(1 + (i * 7) % 5);
+    }
     orthonormalise(start);
   }
   Matrix x = start;
@@ -46,7 +50,7 @@ Matrix eigenspace(const Matrix& b, Matrix start, double estimate, Real& lambda) 
     x = shifted.fullPivLu().solve(x);
     if (!orthonormalise(x)) throw Error("internal: inverse iteration lost rank");
     const Matrix rq = x.transpose() * b * x;
-    lambda = (rq(0, 0) + rq(1, 1)) / 2;
+    lambda = rq.trace() / Real(x.cols());
   }
   return x;
 }
@@ -107,6 +111,7 @@ std::optional<TangentStencils> tangent_stencils(const std::vector<std::vector<Re
   const Matrix lr = l.transpose() * r;
   r = r * lr.inverse();
   out.eigenvalue = lambda_left;
+  out.second_eigenvalue = lambda_left;
 
   // The characteristic map at the ends of the patch's two edges from the vertex.
   auto characteristic = [&](const std::vector<Real>& w) {
@@ -137,6 +142,135 @@ std::optional<TangentStencils> tangent_stencils(const std::vector<std::vector<Re
       for (Eigen::Index h = 0; h < m; ++h) s += (*t)[static_cast<std::size_t>(h)] * a(h, c);
       residual = std::max(residual, magnitude(s));
     }
+  out.residual = residual;
+  return out;
+}
+
+namespace {
+
+Matrix square(const std::vector<std::vector<Real>>& a0, std::size_t columns_of_ends) {
+  const auto m = static_cast<Eigen::Index>(a0.size());
+  if (m < 3 || columns_of_ends != a0.size()) throw Error("internal: tangent_stencils: sizes differ");
+  Matrix a(m, m);
+  for (Eigen::Index r = 0; r < m; ++r) {
+    if (a0[static_cast<std::size_t>(r)].size() != a0.size()) throw Error("internal: tangent_stencils: A0 is not square");
+    for (Eigen::Index c = 0; c < m; ++c) a(r, c) = a0[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
+  }
+  return a;
+}
+
+std::string describe(const std::complex<double>& z) {
+  return std::to_string(z.real()) + (std::abs(z.imag()) > 1e-9 ? (z.imag() > 0 ? "+" : "") + std::to_string(z.imag()) + "i" : "");
+}
+
+// Real start vectors for the eigenvalue `estimate` from a double eigen-decomposition (`dim` of them).
+Matrix start_near(const Eigen::EigenSolver<Eigen::MatrixXd>& solver, double estimate, int dim) {
+  const Eigen::Index m = solver.eigenvectors().rows();
+  std::vector<Eigen::Index> near(static_cast<std::size_t>(m));
+  for (Eigen::Index i = 0; i < m; ++i) near[static_cast<std::size_t>(i)] = i;
+  std::stable_sort(near.begin(), near.end(), [&](Eigen::Index p, Eigen::Index q) {
+    return std::abs(solver.eigenvalues()(p) - estimate) < std::abs(solver.eigenvalues()(q) - estimate);
+  });
+  Matrix x(m, dim);
+  for (Eigen::Index i = 0; i < m; ++i)
+    for (int k = 0; k < dim; ++k) x(i, k) = Real(solver.eigenvectors()(i, near[static_cast<std::size_t>(k)]).real());
+  return x;
+}
+
+}  // namespace
+
+std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::vector<Real>>& a0,
+                                                         const std::vector<Real>& end_u, const std::vector<Real>& end_v,
+                                                         const std::vector<Real>& boundary_tangent, std::string& why) {
+  if (end_u.size() != end_v.size() || boundary_tangent.size() != end_u.size())
+    throw Error("internal: boundary_tangent_stencils: sizes differ");
+  const Matrix a = square(a0, end_u.size());
+  const Eigen::Index m = a.rows();
+  Eigen::MatrixXd ad(m, m);
+  for (Eigen::Index r = 0; r < m; ++r)
+    for (Eigen::Index c = 0; c < m; ++c) ad(r, c) = to_double(a(r, c));
+  const Eigen::EigenSolver<Eigen::MatrixXd> left(ad.transpose(), true), right(ad, true);
+  std::vector<std::complex<double>> ev(left.eigenvalues().data(), left.eigenvalues().data() + m);
+  std::stable_sort(ev.begin(), ev.end(), [](const auto& p, const auto& q) { return std::abs(p) > std::abs(q); });
+  const double scale = 1e-9;
+  const std::complex<double> one = ev[0], s1 = ev[1], s2 = ev[2], next = ev[3];
+  if (std::abs(one - 1.0) > scale || std::abs(s1.imag()) > scale || std::abs(s2.imag()) > scale || s2.real() <= 0 ||
+      std::abs(next) >= std::abs(s2) - scale) {
+    why = "the two largest eigenvalues of A0 below 1 are not real with a gap below them (" + describe(s1) + ", " +
+          describe(s2) + ", then " + describe(next) + ")";
+    return std::nullopt;
+  }
+  const bool double_one = std::abs(s1.real() - s2.real()) <= scale * std::max(1.0, std::abs(s1.real()));
+  Matrix l(m, 2), r(m, 2);
+  Real lambda[2];
+  if (double_one) {
+    Real lr_lambda;
+    l = eigenspace(a.transpose(), start_near(left, s1.real(), 2), s1.real(), lambda[0]);
+    r = eigenspace(a, start_near(right, s1.real(), 2), s1.real(), lr_lambda);
+    lambda[1] = lambda[0];
+  } else {
+    for (int k = 0; k < 2; ++k) {
+      const double estimate = (k == 0 ? s1 : s2).real();
+      Real unused;
+      l.col(k) = eigenspace(a.transpose(), start_near(left, estimate, 1), estimate, lambda[k]).col(0);
+      r.col(k) = eigenspace(a, start_near(right, estimate, 1), estimate, unused).col(0);
+    }
+  }
+  // Is the boundary curve's tangent in the span of l_1, l_2? (least squares in Real)
+  Eigen::Matrix<Real, Eigen::Dynamic, 1> b(m);
+  for (Eigen::Index h = 0; h < m; ++h) b(h) = boundary_tangent[static_cast<std::size_t>(h)];
+  const Matrix gram = l.transpose() * l;
+  const Eigen::Matrix<Real, Eigen::Dynamic, 1> coeff = gram.inverse() * (l.transpose() * b);
+  const Real off = sqrt((b - l * coeff).squaredNorm()), size = sqrt(b.squaredNorm());
+  if (size == 0) throw Error("internal: boundary_tangent_stencils: no boundary tangent");
+  if (off > size * Real("1e-40")) {
+    why = "the two largest eigenvalues of A0 below 1 (" + describe(s1) + ", " + describe(s2) +
+          ") have eigenvectors that do not contain the boundary curve's tangent: from inside the surface approaches the "
+          "vertex along other directions than along its boundary, so it has no tangent plane there (not C1)";
+    return std::nullopt;
+  }
+  r = r * (l.transpose() * r).inverse();  // biorthogonal: L^T R = I
+  auto characteristic = [&](const std::vector<Real>& w) {
+    Real c0 = 0, c1 = 0;
+    for (Eigen::Index h = 0; h < m; ++h) c0 += w[static_cast<std::size_t>(h)] * r(h, 0), c1 += w[static_cast<std::size_t>(h)] * r(h, 1);
+    return std::pair{c0, c1};
+  };
+  const auto [cu0, cu1] = characteristic(end_u);
+  const auto [cv0, cv1] = characteristic(end_v);
+  TangentStencils out;
+  out.eigenvalue = lambda[0];
+  out.second_eigenvalue = lambda[1];
+  out.u.resize(static_cast<std::size_t>(m));
+  out.v.resize(static_cast<std::size_t>(m));
+  Real largest = 0;
+  for (Eigen::Index h = 0; h < m; ++h) {
+    out.u[static_cast<std::size_t>(h)] = cu0 * l(h, 0) + cu1 * l(h, 1);
+    out.v[static_cast<std::size_t>(h)] = cv0 * l(h, 0) + cv1 * l(h, 1);
+    largest = std::max({largest, magnitude(out.u[static_cast<std::size_t>(h)]), magnitude(out.v[static_cast<std::size_t>(h)])});
+  }
+  if (largest == 0 || cu0 * cv1 - cu1 * cv0 == 0) {
+    why = "the characteristic map does not separate the patch's corners";
+    return std::nullopt;
+  }
+  // Scaled so that the largest weight is 1; weights below 1e-60 are the
+  // iteration's noise on points that take no part (exactly 0).
+  for (Eigen::Index h = 0; h < m; ++h)
+    for (std::vector<Real>* t : {&out.u, &out.v}) {
+      Real& w = (*t)[static_cast<std::size_t>(h)];
+      w /= largest;
+      if (magnitude(w) < Real("1e-60")) w = 0;
+    }
+  // Residual of each eigenvector (largest weight 1).
+  Real residual = 0;
+  for (int k = 0; k < 2; ++k) {
+    Real big = 0;
+    for (Eigen::Index h = 0; h < m; ++h) big = std::max(big, magnitude(l(h, k)));
+    for (Eigen::Index c = 0; c < m; ++c) {
+      Real s = -lambda[k] * l(c, k);
+      for (Eigen::Index h = 0; h < m; ++h) s += l(h, k) * a(h, c);
+      residual = std::max(residual, magnitude(s) / big);
+    }
+  }
   out.residual = residual;
   return out;
 }

@@ -29,8 +29,10 @@ namespace sg {
 
 struct TangentStencils {
   Real eigenvalue;         // lambda, the subdominant eigenvalue of A0
+  Real second_eigenvalue;  // the other one of the pair (equal to lambda for a double eigenvalue)
   std::vector<Real> u, v;  // the two tangent stencils over the patch's points
-  Real residual;           // max over both of |t A0 - lambda t| (the largest weight is 1)
+  Real residual;           // max over both of |t A0 - lambda t| (the largest weight is 1); for two distinct
+                           // eigenvalues, over the two eigenvectors l (|l A0 - lambda_l l|, largest weight 1)
 };
 
 // `a0`: dense, rows = the child's points, columns = the parent's (square).
@@ -38,5 +40,21 @@ struct TangentStencils {
 // one with a gap below it, or the characteristic map vanishes at the ends.
 std::optional<TangentStencils> tangent_stencils(const std::vector<std::vector<Real>>& a0, const std::vector<Real>& end_u,
                                                 const std::vector<Real>& end_v, std::string& why);
+
+// A vertex on a boundary has no rotational symmetry: its two largest
+// eigenvalues below 1 may differ (one of them the boundary curve's, 1/2). The
+// tangent plane is then spanned by the two left eigenvectors l_1, l_2 when both
+// eigenvalues are real with a gap below them and `boundary_tangent` (the
+// boundary curve's tangent stencil at the vertex) lies in their span: then
+// near the vertex f(x) = l0.P + lambda_1^k c_1(x) l_1.P + lambda_2^k c_2(x) l_2.P
+// + o(lambda_2^k) from inside and along the boundary alike. Where it does not
+// lie in their span the surface approaches the vertex along other directions
+// from inside than along its boundary: there is no tangent plane (not C1).
+// end_u, end_v: value stencils at two points of the patch whose images under
+// the characteristic map turn counter-clockwise by less than pi (the far end of
+// the u edge and the opposite corner), so that t_u.P x t_v.P points as du x dv.
+std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::vector<Real>>& a0,
+                                                         const std::vector<Real>& end_u, const std::vector<Real>& end_v,
+                                                         const std::vector<Real>& boundary_tangent, std::string& why);
 
 }  // namespace sg

@@ -57,8 +57,9 @@ bool verify_file(const std::string& file, const std::string& scheme_spec, const 
     const auto failures = verify_quad_descent(table, scheme);
     if (failures.empty())
       std::cout << file << ": OK (" << scheme.name
-                << " patch subdivision: every matrix equals the re-derived one exactly; the tangent stencils are left "
-                   "eigenvectors of A0 to 1e-30 and equal the recomputed ones to 1e-35)\n";
+                << " patch subdivision: every matrix and boundary sector limit stencil equals the re-derived one exactly; "
+                   "the tangent stencils are left eigenvectors of A0 (boundary sectors: span a plane A0 keeps) to 1e-30 "
+                   "and equal the recomputed ones to 1e-35)\n";
     for (const auto& f : failures) std::cout << file << ": FAIL: " << f << "\n";
     return failures.empty();
   }

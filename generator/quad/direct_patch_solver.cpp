@@ -9,7 +9,7 @@ namespace sg {
 PatchGrid solve_ev_patch_directly(const QuadScheme& scheme, int valence, long n) {
   if (n < 1) throw Error("rate must be at least 1, got " + std::to_string(n));
   const PatchSubdivision sub = build_patch_subdivision(scheme, valence);
-  const std::size_t m = sub.layout.size();
+  const std::size_t m = sub.points;
   const long side = n + 1, reg_side = 4 * n - 1;  // regular unknowns: grid indices -2n < k, l < 2n
   const std::size_t patch_unknowns = m * static_cast<std::size_t>(side * side);
   auto B = [&](std::size_t h, long i, long j) { return h * static_cast<std::size_t>(side * side) + static_cast<std::size_t>(j * side + i); };

@@ -15,7 +15,7 @@ PatchDerivativeGrid solve_ev_patch_derivatives(const QuadScheme& scheme, int val
   if (g < 1) throw Error("rate must be at least 1, got " + std::to_string(g));
   if (curve.n != g || curve.types.size() != 1) throw Error("internal: curve solution does not match the grid");
   const PatchSubdivision sub = build_patch_subdivision(scheme, valence);
-  const std::size_t m = sub.layout.size();
+  const std::size_t m = sub.points;
   const ScaledMatrix a0 = scale_rows(sub.extraordinary_child, m);
   std::array<ScaledMatrix, 3> regular;
   for (int c = 0; c < 3; ++c) regular[c] = scale_rows(sub.regular_children[c], m);
@@ -32,7 +32,7 @@ PatchDerivativeGrid solve_ev_patch_derivatives(const QuadScheme& scheme, int val
   const std::size_t side = static_cast<std::size_t>(g + 1);
   std::vector<ScaledVector> du(side * side), dv(side * side);
   auto index = [&](long i, long j) { return static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i); };
-  const std::vector<std::size_t> reflect = sub.layout.reflection();
+  const std::vector<std::size_t>& reflect = sub.reflection;
   auto mirrored = [&](const ScaledVector& w) {
     ScaledVector r;
     r.den = w.den;

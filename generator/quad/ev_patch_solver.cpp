@@ -7,25 +7,20 @@
 
 namespace sg {
 
-namespace {
-
-// Left eigenvector of A0 for eigenvalue 1 with entries summing to 1.
-std::vector<Rational> limit_stencil(const PatchSubdivision& sub, const QuadScheme& scheme) {
+std::vector<Rational> limit_stencil(const PatchSubdivision& sub, const std::string& what) {
   LinearSolution sol = left_fixed_vector(sub.extraordinary_child);
   if (sol.status != LinearSolution::Status::Unique)
-    throw Error(scheme.name + ", valence " + std::to_string(sub.layout.valence()) +
-                ": the limit stencil of the extraordinary vertex (left eigenvector for eigenvalue 1) has " +
+    throw Error(what + ": the limit stencil of the extraordinary vertex (left eigenvector for eigenvalue 1) has " +
                 sol.describe());
   return sol.values;
 }
 
-}  // namespace
-
-PatchGrid solve_ev_patch(const QuadScheme& scheme, int valence, long g, const CurveSolution& curve) {
+PatchGrid solve_patch_recursion(const PatchSubdivision& sub, const std::vector<Rational>& limit, long g,
+                                const CurveSolution& curve) {
   if (g < 1) throw Error("rate must be at least 1, got " + std::to_string(g));
   if (curve.n != g || curve.types.size() != 1) throw Error("internal: curve solution does not match the grid");
-  const PatchSubdivision sub = build_patch_subdivision(scheme, valence);
-  const std::size_t m = sub.layout.size();
+  const std::size_t m = sub.points;
+  if (limit.size() != m) throw Error("internal: the limit stencil does not match the patch");
   const ScaledMatrix a0 = scale_rows(sub.extraordinary_child, m);
   std::array<ScaledMatrix, 3> regular;
   for (int c = 0; c < 3; ++c) regular[c] = scale_rows(sub.regular_children[c], m);
@@ -37,44 +32,50 @@ PatchGrid solve_ev_patch(const QuadScheme& scheme, int valence, long g, const Cu
   };
 
   PatchGrid out;
-  out.valence = valence;
   out.grid = g;
   out.points = m;
   const std::size_t side = static_cast<std::size_t>(g + 1);
   out.scaled.resize(side * side);
   auto index = [&](long i, long j) { return static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i); };
-  const std::vector<std::size_t> reflect = sub.layout.reflection();
+  const std::vector<std::size_t>& reflect = sub.reflection;
+  const bool symmetric = !reflect.empty();
 
-  // Decreasing max(i,j): W(2i,2j) is known before W(i,j). Only i <= j is
-  // computed; the reflection gives the rest.
+  auto solve_point = [&](long i, long j) {
+    ScaledVector w;
+    if (2 * i <= g && 2 * j <= g) {
+      w = left_multiply(out.scaled[index(2 * i, 2 * j)], a0);
+    } else {
+      const int c = 2 * i > g ? (2 * j > g ? 2 : 0) : 1;  // child (1,1), (1,0) or (0,1)
+      const long X = 2 * i - PatchSubdivision::kOffsets[c][0] * g, Y = 2 * j - PatchSubdivision::kOffsets[c][1] * g;
+      ScaledVector r;
+      r.num.resize(16);
+      r.den = phi.den * phi.den;
+      for (int b = -1; b <= 2; ++b)
+        for (int a = -1; a <= 2; ++a) r.num[regular_index(a, b)] = phi_num(X - a * g) * phi_num(Y - b * g);
+      w = left_multiply(r, regular[c]);
+    }
+    w.reduce();
+    return w;
+  };
+  // Decreasing max(i,j): W(2i,2j) is known before W(i,j). With a reflection
+  // only i <= j is computed; it gives the rest.
   for (long s = g; s >= 1; --s) {
     for (long i = 0; i <= s; ++i) {
       const long j = s;
-      ScaledVector w;
-      if (2 * i <= g && 2 * j <= g) {
-        w = left_multiply(out.scaled[index(2 * i, 2 * j)], a0);
-      } else {
-        const int c = (2 * i > g) ? 2 : 1;  // i <= j, so 2j > g: child (0,1) or (1,1)
-        const long X = 2 * i - PatchSubdivision::kOffsets[c][0] * g, Y = 2 * j - PatchSubdivision::kOffsets[c][1] * g;
-        ScaledVector r;
-        r.num.resize(16);
-        r.den = phi.den * phi.den;
-        for (int b = -1; b <= 2; ++b)
-          for (int a = -1; a <= 2; ++a) r.num[regular_index(a, b)] = phi_num(X - a * g) * phi_num(Y - b * g);
-        w = left_multiply(r, regular[c]);
-      }
-      w.reduce();
-      out.scaled[index(i, j)] = w;
-      if (i != j) {
+      ScaledVector w = solve_point(i, j);
+      if (symmetric && i != j) {
         ScaledVector mirrored;
         mirrored.den = w.den;
         mirrored.num.resize(m);
         for (std::size_t h = 0; h < m; ++h) mirrored.num[reflect[h]] = w.num[h];
         out.scaled[index(j, i)] = std::move(mirrored);
+      } else if (!symmetric && i != j) {
+        out.scaled[index(j, i)] = solve_point(j, i);
       }
+      out.scaled[index(i, j)] = std::move(w);
     }
   }
-  ScaledVector at_zero = scaled_from_rationals(limit_stencil(sub, scheme));
+  ScaledVector at_zero = scaled_from_rationals(limit);
   at_zero.reduce();
   out.scaled[index(0, 0)] = at_zero;
 
@@ -83,8 +84,26 @@ PatchGrid solve_ev_patch(const QuadScheme& scheme, int valence, long g, const Cu
   return out;
 }
 
+PatchGrid solve_ev_patch(const QuadScheme& scheme, int valence, long g, const CurveSolution& curve) {
+  const PatchSubdivision sub = build_patch_subdivision(scheme, valence);
+  PatchGrid out = solve_patch_recursion(sub, limit_stencil(sub, scheme.name + ", valence " + std::to_string(valence)), g, curve);
+  out.valence = valence;
+  return out;
+}
+
 PatchGrid solve_ev_patch(const QuadScheme& scheme, int valence, long g) {
   return solve_ev_patch(scheme, valence, g, solve_by_residues(scheme.curve, g));
+}
+
+PatchGrid solve_sector_patch(const QuadScheme& scheme, const BoundarySector& sector, long g, const CurveSolution& curve) {
+  const PatchSubdivision sub = build_sector_subdivision(scheme, sector);
+  PatchGrid out = solve_patch_recursion(sub, limit_stencil(sub, scheme.name + ", " + sector.name()), g, curve);
+  out.valence = 0;
+  return out;
+}
+
+PatchGrid solve_sector_patch(const QuadScheme& scheme, const BoundarySector& sector, long g) {
+  return solve_sector_patch(scheme, sector, g, solve_by_residues(scheme.curve, g));
 }
 
 }  // namespace sg

@@ -1,5 +1,6 @@
 #include "quad/ev_tangents.hpp"
 
+#include "curve/residue_solver.hpp"
 #include "quad/ev_patch_solver.hpp"
 
 namespace sg {
@@ -18,6 +19,39 @@ std::optional<EvTangents> ev_tangents(const QuadScheme& scheme, int valence, con
     return w;
   };
   return tangent_stencils(a0, end(1, 0), end(0, 1), why);
+}
+
+namespace {
+
+std::vector<std::vector<Real>> real_matrix(const PatchSubdivision& subdivision) {
+  const std::size_t m = subdivision.extraordinary_child.size();
+  std::vector<std::vector<Real>> a0(m, std::vector<Real>(m, Real(0)));
+  for (std::size_t r = 0; r < m; ++r)
+    for (const auto& [c, w] : subdivision.extraordinary_child[r]) a0[r][c] += to_real(w);
+  return a0;
+}
+
+}  // namespace
+
+std::optional<EvTangents> sector_tangents(const QuadScheme& scheme, const BoundarySector& sector,
+                                          const PatchSubdivision& subdivision, const std::vector<Rational>& limit,
+                                          std::string& why) {
+  if (sector.corner) {
+    why = "a corner has no tangent plane";
+    return std::nullopt;
+  }
+  const PatchGrid values = solve_patch_recursion(subdivision, limit, 1, solve_by_residues(scheme.curve, 1));
+  auto at = [&](long i, long j) {
+    std::vector<Real> w;
+    for (const Rational& x : values.at(i, j)) w.push_back(to_real(x));
+    return w;
+  };
+  // The boundary curve's tangent at the vertex: e_k - e_0 (its left eigenvector for 1/2).
+  const SectorLayout layout(sector);
+  std::vector<Real> boundary(subdivision.points, Real(0));
+  boundary[layout.edge(sector.faces)] = 1;
+  boundary[layout.edge(0)] = -1;
+  return boundary_tangent_stencils(real_matrix(subdivision), at(1, 0), at(1, 1), boundary, why);
 }
 
 }  // namespace sg

@@ -13,12 +13,37 @@
 #include "curve/curve_table_json.hpp"
 #include "curve/difference_scheme.hpp"
 #include "curve/residue_solver.hpp"
+#include "quad/boundary_sector.hpp"
 #include "quad/ev_patch_solver.hpp"
 #include "quad/quad_descent.hpp"
 #include "quad/quad_descent_json.hpp"
 #include "quad/quad_table_json.hpp"
+#include "stencil_runtime/binary_format.hpp"
 
 namespace sg {
+
+namespace {
+
+// The boundary sectors of vertices in up to as many faces as the largest
+// valence asked for, as far as the runtime can expand their stencils at the
+// largest rate (binary_format.hpp); `progress` is told of any left out.
+std::vector<BoundarySector> sectors_for(const std::vector<int>& valences, const std::vector<long>& rates,
+                                        const std::function<void(const std::string&)>& progress) {
+  namespace fmt = stencil_runtime::format;
+  const int largest = *std::max_element(valences.begin(), valences.end());
+  const long rate = *std::max_element(rates.begin(), rates.end());
+  int faces = largest;
+  while (faces >= 1 &&
+         fmt::expansion_grid_entries(static_cast<std::uint64_t>(rate),
+                                     SectorLayout({false, faces, faces > 1 ? 1 : 0}).size()) > fmt::kMaxExpansionGridEntries)
+    --faces;
+  if (faces < largest && progress)
+    progress("note: boundary vertices in more than " + std::to_string(faces) + " faces get no patches at rate " +
+             std::to_string(rate) + " (their stencils would exceed the runtime's expansion limit)");
+  return boundary_sectors(faces);
+}
+
+}  // namespace
 
 QuadTableSet generate_quad_tables(const QuadScheme& scheme, const std::vector<int>& valences,
                                         const std::vector<long>& rates,
@@ -27,7 +52,7 @@ QuadTableSet generate_quad_tables(const QuadScheme& scheme, const std::vector<in
   for (int v : valences) scheme.vertex_rule(v);  // range check with the scheme's own message
   check_rates(rates, limits::kMaxSurfaceRate, "the largest rate for surface schemes");
   QuadTableSet set;
-  set.descent = std::make_shared<const QuadDescent>(quad_descent(scheme, valences));
+  set.descent = std::make_shared<const QuadDescent>(quad_descent(scheme, valences, sectors_for(valences, rates, progress)));
   set.rates = rates;
   set.valences = valences;
   set.regular.resize(rates.size());

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 
+#include <tbb/parallel_for.h>
+
 #include "base/error.hpp"
+#include "quad/ev_patch_solver.hpp"
 
 namespace sg {
 
@@ -14,9 +17,15 @@ bool nonnegative(const std::vector<SparseRow>& rows) {
   });
 }
 
+bool nonnegative(const PatchSubdivision& s) {
+  return nonnegative(s.extraordinary_child) &&
+         std::all_of(s.regular_children.begin(), s.regular_children.end(), [](const auto& rows) { return nonnegative(rows); });
+}
+
 }  // namespace
 
-QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valences) {
+QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valences,
+                         const std::vector<BoundarySector>& sectors) {
   const CurveScheme& curve = scheme.curve;
   if (!curve.is_uniform() || curve.arity != 2) throw Error("internal: a quad scheme's regular curve must be uniform and binary");
   QuadDescent out;
@@ -40,11 +49,22 @@ QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valen
     if (v == 4) continue;
     QuadDescent::Valence d{v, build_patch_subdivision(scheme, v), false, std::nullopt, ""};
     d.tangents = ev_tangents(scheme, v, d.subdivision, d.no_tangents);
-    d.nonnegative = nonnegative(d.subdivision.extraordinary_child) &&
-                    std::all_of(d.subdivision.regular_children.begin(), d.subdivision.regular_children.end(),
-                                [](const auto& rows) { return nonnegative(rows); });
+    d.nonnegative = nonnegative(d.subdivision);
     out.valences.push_back(std::move(d));
   }
+  out.sectors.resize(sectors.size());
+  tbb::parallel_for(std::size_t(0), sectors.size(), [&](std::size_t k) {
+    QuadDescent::Sector& d = out.sectors[k];
+    d.sector = sectors[k];
+    d.subdivision = build_sector_subdivision(scheme, d.sector);
+    d.limit = limit_stencil(d.subdivision, scheme.name + ", " + d.sector.name());
+    // The children's phantom rows (2 p - q) are extrapolations, but the limit
+    // over such a child is the regular patch of its points, inside their hull
+    // when the mask is non-negative: what must be non-negative for the hull
+    // property is A0 (the rules themselves) and the mask.
+    d.nonnegative = nonnegative(d.subdivision.extraordinary_child) && out.mask_nonnegative;
+    d.tangents = sector_tangents(scheme, d.sector, d.subdivision, d.limit, d.no_tangents);
+  });
   return out;
 }
 

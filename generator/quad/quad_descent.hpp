@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "curve/polynomial_pieces.hpp"
+#include "quad/boundary_sector.hpp"
 #include "quad/ev_tangents.hpp"
 #include "quad/patch_subdivision.hpp"
 #include "quad/quad_scheme.hpp"
@@ -33,8 +34,21 @@ struct QuadDescent {
     std::string no_tangents;             // why there are none
   };
   std::vector<Valence> valences;  // the extraordinary ones (valence 4 is the regular patch)
+  // Faces at a vertex on a boundary (boundary_sector.hpp): their patch has no
+  // stored stencils, only what generates them (the runtime expands them).
+  struct Sector {
+    BoundarySector sector;
+    PatchSubdivision subdivision;
+    std::vector<Rational> limit;  // W(0): the vertex's limit stencil, exact
+    bool nonnegative = false;  // A0 and the mask: the limit lies in the hull of the points (quad_descent.cpp)
+    std::optional<EvTangents> tangents;  // the tangent plane at the vertex, where the surface has one
+    std::string no_tangents;             // why there is none
+  };
+  std::vector<Sector> sectors;
 };
 
-QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valences);
+// `sectors`: the boundary sectors to describe (boundary_sectors(), or none).
+QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valences,
+                         const std::vector<BoundarySector>& sectors = {});
 
 }  // namespace sg

@@ -22,6 +22,21 @@ ojson rows_json(const std::vector<SparseRow>& rows) {
   return out;
 }
 
+// The tangent stencils, or null; `both`: with the second eigenvalue (boundary sectors).
+ojson tangents_json(const std::optional<EvTangents>& tangents, bool both) {
+  if (!tangents) return nullptr;
+  ojson t;
+  t["eigenvalue"] = to_string(tangents->eigenvalue, 40);
+  if (both) t["second_eigenvalue"] = to_string(tangents->second_eigenvalue, 40);
+  t["residual"] = to_string(tangents->residual, 3);
+  for (const char* which : {"u", "v"}) {
+    ojson w = ojson::array();
+    for (const Real& x : (which[0] == 'u' ? tangents->u : tangents->v)) w.push_back(to_string(x, 40));
+    t[which] = w;
+  }
+  return t;
+}
+
 }  // namespace
 
 std::string quad_descent_to_json(const QuadScheme& scheme, const QuadDescent& d) {
@@ -38,7 +53,11 @@ std::string quad_descent_to_json(const QuadScheme& scheme, const QuadDescent& d)
       "offsets (1,0), (0,1), (1,1) (16 rows each), rows as [column, weight] pairs over the patch's 2v+8 points; tangents: "
       "two stencils over the same points whose combinations of the control points span the tangent plane at the "
       "extraordinary vertex (left eigenvectors of A0 for its subdominant eigenvalue, along the patch's u and v edges; "
-      "not parametric derivatives), 40 digits, with the residual max |t A0 - eigenvalue t| (null: none, no_tangents says why).";
+      "not parametric derivatives), 40 digits, with the residual max |t A0 - eigenvalue t| (null: none, no_tangents says why); "
+      "sectors: the patches of the faces at a vertex on a boundary (kind crease: the vertex follows the boundary curve; "
+      "corner: it stays put), k faces, the face at position p, over the sector's points (docs/table-format.md), with the "
+      "vertex's exact limit stencil; their tangents: u along the patch's u edge, v towards its corner (1,1), eigenvalues "
+      "of the two eigenvectors that span the plane.";
   ojson mask;
   mask["first"] = d.mask_first;
   ojson coefficients = ojson::array();
@@ -74,23 +93,32 @@ std::string quad_descent_to_json(const QuadScheme& scheme, const QuadDescent& d)
     entry["regular_children"] = children;
     // Version 2: the tangent stencils at the vertex, in 40 significant digits
     // (lambda is irrational in general), with the residual max |t A0 - lambda t|.
-    if (v.tangents) {
-      ojson t;
-      t["eigenvalue"] = to_string(v.tangents->eigenvalue, 40);
-      t["residual"] = to_string(v.tangents->residual, 3);
-      for (const char* which : {"u", "v"}) {
-        ojson w = ojson::array();
-        for (const Real& x : (which[0] == 'u' ? v.tangents->u : v.tangents->v)) w.push_back(to_string(x, 40));
-        t[which] = w;
-      }
-      entry["tangents"] = t;
-    } else {
-      entry["tangents"] = nullptr;
-      entry["no_tangents"] = v.no_tangents;
-    }
+    entry["tangents"] = tangents_json(v.tangents, false);
+    if (!v.tangents) entry["no_tangents"] = v.no_tangents;
     valences.push_back(entry);
   }
   doc["valences"] = valences;
+  // Version 3: the boundary sectors.
+  ojson sectors = ojson::array();
+  for (const QuadDescent::Sector& sec : d.sectors) {
+    ojson entry;
+    entry["kind"] = sec.sector.corner ? "corner" : "crease";
+    entry["faces"] = sec.sector.faces;
+    entry["position"] = sec.sector.position;
+    entry["points"] = sec.subdivision.points;
+    entry["nonnegative"] = sec.nonnegative;
+    ojson limit = ojson::array();
+    for (const Rational& x : sec.limit) limit.push_back(to_string(x));
+    entry["limit"] = limit;
+    entry["ev_child"] = rows_json(sec.subdivision.extraordinary_child);
+    ojson children = ojson::array();
+    for (const auto& child : sec.subdivision.regular_children) children.push_back(rows_json(child));
+    entry["regular_children"] = children;
+    entry["tangents"] = tangents_json(sec.tangents, true);
+    if (!sec.tangents) entry["no_tangents"] = sec.no_tangents;
+    sectors.push_back(entry);
+  }
+  doc["sectors"] = sectors;
   return doc.dump() + "\n";
 }
 

@@ -45,6 +45,90 @@ Real decimal(const DocumentReader<ojson>& r, const ojson& j, const std::string& 
   }
 }
 
+// The boundary sectors (version 3): rows and the limit stencil re-derived and
+// compared exactly, the limit checked as a fixed point of the file's own A0, the
+// tangent stencils compared with a fresh solve and checked to span a plane
+// that the file's A0 maps into itself (their combinations are left eigenvectors).
+void verify_sectors(const DocumentReader<ojson>& r, const ojson& sectors, const QuadScheme& scheme,
+                    std::vector<std::string>& failures) {
+  for (std::size_t k = 0; k < sectors.size(); ++k) {
+    const std::string field = field_path("sectors", k);
+    const ojson& e = sectors[k];
+    const std::string& kind = r.string(r.require(e, "kind", field), field_path(field, "kind"));
+    if (kind != "crease" && kind != "corner") r.fail(field_path(field, "kind"), "expected \"crease\" or \"corner\"");
+    BoundarySector sector;
+    sector.corner = kind == "corner";
+    sector.faces = static_cast<int>(r.integer(r.require(e, "faces", field), field_path(field, "faces"), 1, scheme.max_valence));
+    sector.position = static_cast<int>(r.integer(r.require(e, "position", field), field_path(field, "position"), 0, sector.faces - 1));
+    const QuadDescent fresh = quad_descent(scheme, {}, {sector});
+    const QuadDescent::Sector& d = fresh.sectors.front();
+    const std::size_t points = d.subdivision.points;
+    const std::string where = sector.name();
+    if (r.integer(r.require(e, "points", field), field_path(field, "points"), 1, 1 << 20) != static_cast<long>(points))
+      failures.push_back(where + ": " + std::to_string(points) + " points expected");
+    const auto a0 = rows_from(r, r.require(e, "ev_child", field), field_path(field, "ev_child"), points);
+    if (a0 != d.subdivision.extraordinary_child) failures.push_back(where + ": A0 differs from the re-derived one");
+    const ojson& children = r.array(r.require(e, "regular_children", field), field_path(field, "regular_children"));
+    if (children.size() != 3) r.fail(field_path(field, "regular_children"), "expected three children");
+    for (std::size_t c = 0; c < 3; ++c)
+      if (rows_from(r, children[c], field_path(field_path(field, "regular_children"), c), points) != d.subdivision.regular_children[c])
+        failures.push_back(where + ": regular child " + std::to_string(c) + " differs from the re-derived one");
+    const ojson& limit_json = r.array(r.require(e, "limit", field), field_path(field, "limit"));
+    if (limit_json.size() != points) r.fail(field_path(field, "limit"), "expected " + std::to_string(points) + " weights");
+    std::vector<Rational> limit;
+    for (std::size_t h = 0; h < points; ++h) limit.push_back(r.rational_literal(limit_json[h], field_path(field_path(field, "limit"), h)));
+    if (limit != d.limit) failures.push_back(where + ": the limit stencil differs from the re-derived one");
+    std::vector<Rational> image(points, Rational(0));
+    Rational sum = 0;
+    for (std::size_t row = 0; row < points && row < a0.size(); ++row) {
+      sum += limit[row];
+      for (const auto& [column, weight] : a0[row]) image[column] += limit[row] * weight;
+    }
+    if (image != limit || sum != 1) failures.push_back(where + ": the limit stencil is not A0's fixed point summing to 1");
+    const ojson& t = r.require(e, "tangents", field);
+    if (t.is_null() != !d.tangents) {
+      failures.push_back(where + (t.is_null() ? ": no tangent stencils, but the scheme has them" : ": tangent stencils, but the scheme has none"));
+      continue;
+    }
+    if (t.is_null()) continue;
+    const std::string tf = field_path(field, "tangents");
+    for (const char* name : {"eigenvalue", "second_eigenvalue"}) {
+      const Real lambda = decimal(r, r.require(t, name, tf), field_path(tf, name));
+      if (magnitude(lambda - (name[0] == 'e' ? d.tangents->eigenvalue : d.tangents->second_eigenvalue)) > Real("1e-35"))
+        failures.push_back(where + ": the " + std::string(name) + " differs from the recomputed one");
+    }
+    std::vector<Real> stored[2];
+    for (int w = 0; w < 2; ++w) {
+      const char* which = w == 0 ? "u" : "v";
+      const std::string wf = field_path(tf, which);
+      const ojson& arr = r.array(r.require(t, which, tf), wf);
+      if (arr.size() != points) r.fail(wf, "expected " + std::to_string(points) + " weights");
+      for (std::size_t h = 0; h < points; ++h) stored[w].push_back(decimal(r, arr[h], field_path(wf, h)));
+      const std::vector<Real>& recomputed = w == 0 ? d.tangents->u : d.tangents->v;
+      Real difference = 0;
+      for (std::size_t h = 0; h < points; ++h) difference = std::max(difference, magnitude(stored[w][h] - recomputed[h]));
+      if (difference > Real("1e-35"))
+        failures.push_back(where + ": tangent stencil " + which + " differs from the recomputed one by " + to_string(difference, 3));
+    }
+    // t A0 for each stored t, projected on span(t_u, t_v) by least squares: the rest must vanish.
+    Real uu = 0, uv = 0, vv = 0;
+    for (std::size_t h = 0; h < points; ++h) uu += stored[0][h] * stored[0][h], uv += stored[0][h] * stored[1][h], vv += stored[1][h] * stored[1][h];
+    const Real det = uu * vv - uv * uv;
+    for (int w = 0; w < 2; ++w) {
+      std::vector<Real> product(points, Real(0));
+      for (std::size_t row = 0; row < points && row < a0.size(); ++row)
+        for (const auto& [column, weight] : a0[row]) product[column] += stored[w][row] * to_real(weight);
+      Real pu = 0, pv = 0;
+      for (std::size_t h = 0; h < points; ++h) pu += product[h] * stored[0][h], pv += product[h] * stored[1][h];
+      const Real a = det == 0 ? Real(0) : (pu * vv - pv * uv) / det, b = det == 0 ? Real(0) : (pv * uu - pu * uv) / det;
+      Real residual = 0;
+      for (std::size_t h = 0; h < points; ++h) residual = std::max(residual, magnitude(product[h] - a * stored[0][h] - b * stored[1][h]));
+      if (det == 0 || residual > Real("1e-30"))
+        failures.push_back(where + ": the tangent stencils do not span a plane that A0 keeps (residual " + to_string(residual, 3) + ")");
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> verify_quad_descent(const TableDocument& table, const QuadScheme& scheme) {
@@ -108,6 +192,7 @@ std::vector<std::string> verify_quad_descent(const TableDocument& table, const Q
                            to_string(residual, 3) + ")");
     }
   }
+  if (version >= 3) verify_sectors(r, r.array(r.require(doc, "sectors", ""), "sectors"), scheme, failures);
   return failures;
 }
 

@@ -188,6 +188,26 @@ std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& 
       for (const Real& w : descent.tangents->v) put<double>(out, to_double(w));
     }
   }
+  // Version 8: the boundary sectors (always generated: the reader expands each on first use).
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(set.descent->sectors.size()));
+  for (const QuadDescent::Sector& sec : set.descent->sectors) {
+    put<std::uint8_t>(out, sec.sector.corner ? 1 : 0);
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(sec.sector.faces));
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(sec.sector.position));
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(sec.subdivision.points));
+    for (const Rational& x : sec.limit) put_scalar(out, to_double(x), precision);
+    put<std::uint8_t>(out, sec.nonnegative ? 1 : 0);
+    put_rows(out, sec.subdivision.extraordinary_child);
+    for (const auto& child : sec.subdivision.regular_children) put_rows(out, child);
+    put<std::uint8_t>(out, sec.tangents ? 1 : 0);
+    if (sec.tangents) {
+      put<double>(out, to_double(sec.tangents->eigenvalue));
+      put<double>(out, to_double(sec.tangents->second_eigenvalue));
+      put<double>(out, to_double(sec.tangents->residual));
+      for (const Real& w : sec.tangents->u) put<double>(out, to_double(w));
+      for (const Real& w : sec.tangents->v) put<double>(out, to_double(w));
+    }
+  }
   put<std::uint64_t>(out, fmt::fnv1a64(reinterpret_cast<const unsigned char*>(out.data()), out.size()));
   return out;
 }

@@ -6,9 +6,13 @@
 
 namespace stencil_runtime::limits {
 
-// Largest vertex valence: the tessellation's polygon round a vertex and the
-// stencil buffers hold 2 * 64 + 8 points.
+// Largest vertex valence (and number of faces of a vertex on a boundary): the
+// tessellation's polygon round a vertex and the stencil buffers hold up to
+// kMaxPatchPoints points.
 inline constexpr int kMaxValence = 64;
+// Most control points of one patch: 2v + 8 round an interior vertex, 2k + 9
+// for a face in the middle of a boundary vertex's k faces.
+inline constexpr int kMaxPatchPoints = 2 * kMaxValence + 9;
 // Largest face size of a polygon mesh: its centre becomes a vertex of that valence.
 inline constexpr int kMaxFaceSize = kMaxValence;
 // Largest tessellation or table rate.

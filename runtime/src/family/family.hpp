@@ -27,7 +27,7 @@ struct PatchStencil {
   const int* points = nullptr;      // its patch's prepared vertices
   std::size_t size = 0;
   const double* weights = nullptr;  // `size` weights: into the tables, `storage` or `computed`
-  std::array<double, 2 * limits::kMaxValence + 8> storage{};
+  std::array<double, limits::kMaxPatchPoints> storage{};
   std::vector<double> computed;     // weights found by the patch descent (weights_by_linearity)
 
   PatchStencil() = default;
@@ -244,6 +244,9 @@ class ValenceCheck {
   void add_lazy(int valence, const Who& who) {
     if (valence < 3 || valence > limits::kMaxValence || !covered(valence)) add(valence, who());
   }
+  // A vertex on the boundary in `faces` faces whose sector the tables lack:
+  // tables with valences up to max(faces, 3) cover it. `who` describes it whole.
+  void add_boundary(int faces, const std::string& who);
   // Throws MeshError when some valence is missing.
   void finish() const;
 

@@ -35,6 +35,12 @@ void ValenceCheck::add(int valence, const std::string& who) {
   if (std::find(missing_.begin(), missing_.end(), valence) == missing_.end()) missing_.push_back(valence);
 }
 
+void ValenceCheck::add_boundary(int faces, const std::string& who) {
+  const int valence = std::max(faces, 3);
+  if (missing_.empty()) first_missing_ = who;
+  if (std::find(missing_.begin(), missing_.end(), valence) == missing_.end()) missing_.push_back(valence);
+}
+
 void ValenceCheck::finish() const {
   if (missing_.empty()) return;
   std::vector<int> missing = missing_;

@@ -155,7 +155,7 @@ Approximation QuadPatchDescent::evaluate(int valence, std::vector<Point>& q, P x
     int n = 0;
     std::int64_t a = 0, b = 0;
     if (held(tables_, x, y, n, a, b)) {  // exact from the tables
-      std::array<double, 2 * limits::kMaxValence + 8> w{};
+      std::array<double, limits::kMaxPatchPoints> w{};
       if ((a & 1) == 0) tables_.node_stencil(valence, n, static_cast<int>(a / 2), static_cast<int>(b / 2), w.data());
       else tables_.centre_stencil(valence, n, static_cast<int>(a / 2), static_cast<int>(b / 2), w.data());
       return {combine(w.data(), q), 0.0, true};
@@ -176,7 +176,7 @@ Approximation QuadPatchDescent::evaluate(int valence, std::vector<Point>& q, P x
       if (!sub.nonnegative)
         throw EvaluationError("valence " + std::to_string(valence) + " has negative subdivision weights, so evaluation this close "
                               "to the extraordinary vertex has no bound");
-      std::array<double, 2 * limits::kMaxValence + 8> w{};
+      std::array<double, limits::kMaxPatchPoints> w{};
       tables_.node_stencil(valence, tables_.rates().front(), 0, 0, w.data());
       Approximation approx{combine(w.data(), q), 0.0, false};
       for (const Point& p : q) approx.bound = std::max(approx.bound, norm(p, approx.point));
@@ -334,6 +334,8 @@ bool QuadPatchDescent::nonnegative() const {
   if (!d_.mask_nonnegative) return false;
   for (int v : tables_.valences())
     if (!tables_.descent(v).nonnegative) return false;
+  for (const SectorKey& s : tables_.sectors())
+    if (!tables_.descent(sector_kind(s)).nonnegative) return false;
   return true;
 }
 

@@ -32,13 +32,23 @@ bool touches_boundary(const QuadTopology& topo, std::size_t f) {
   return false;
 }
 
-// Whether every face has a patch: at most one extraordinary corner, and a
-// face touching the boundary one of the regular boundary patches (or, with
-// `none`, no patch: it has no surface).
+// The corner of face f at a boundary vertex with a sector patch (sector_vertex), or -1.
+int sector_corner(const QuadTopology& topo, std::size_t f, bool corners) {
+  for (int c = 0; c < 4; ++c)
+    if (sector_vertex(topo, topo.vertex(f, c), corners)) return c;
+  return -1;
+}
+
+// Whether every face has a patch: at most one extraordinary corner; a face at
+// a boundary vertex in other than two faces its sector's patch; any other
+// face touching the boundary one of the regular boundary patches (with
+// `none`, faces touching the boundary have no surface, hence no patch).
 bool isolated(const QuadTopology& topo, bool corners, bool no_boundary_surface) {
   for (std::size_t f = 0; f < topo.faces(); ++f) {
     if (topo.has_boundary() && touches_boundary(topo, f)) {
-      if (!no_boundary_surface && !boundary_patch_ready(topo, f, corners)) return false;
+      if (no_boundary_surface) continue;
+      const int c = sector_corner(topo, f, corners);
+      if (c >= 0 ? !sector_patch_ready(topo, f, c) : !boundary_patch_ready(topo, f, corners)) return false;
       continue;
     }
     int extraordinary = 0;
@@ -48,22 +58,25 @@ bool isolated(const QuadTopology& topo, bool corners, bool no_boundary_surface) 
   return true;
 }
 
-// The boundary vertices the runtime has patches for: in two faces, or in one
-// with edge-and-corner (steps keep a vertex's number of faces, so this is
-// checked once). Throws MeshError naming the first other one.
-void check_boundary_vertices(const PolygonLinks& links, const MeshFeatures& features) {
+// Boundary vertices in other than two faces (and not a corner in one) need
+// their sector's patches in the tables (steps keep a vertex's number of faces,
+// so this is checked once on the input). Their number of faces goes into the
+// valence check: stencilgen writes sectors for up to as many faces as the
+// largest valence it is given.
+void check_boundary_vertices(const PolygonLinks& links, const MeshFeatures& features, const QuadTables& tables,
+                             ValenceCheck& valences) {
   if (features.boundary == BoundaryInterpolation::None) return;  // no surface at boundary vertices: any will do
   const bool corners = features.boundary == BoundaryInterpolation::EdgeAndCorner;
   for (std::size_t v = 0; v < links.boundary.size(); ++v) {
     if (!links.boundary[v]) continue;
     const int k = links.valence[v];
     if (k == 2 || (k == 1 && corners)) continue;
-    throw MeshError("vertex " + std::to_string(v) + " is on the boundary in " + std::to_string(k) + " face" + (k == 1 ? "" : "s") +
-                    "; patches at boundary vertices are made for vertices in two faces (and in one face with "
-                    "edge-and-corner interpolation, a corner) only so far" +
-                    (k == 1 ? " (as a corner it is: `t interpolateboundary 1/0/0 1` in the OBJ file, or the tools' "
-                              "--boundary edge-and-corner)"
-                            : ""));
+    if (k > limits::kMaxValence)
+      throw MeshError("vertex " + std::to_string(v) + " is on the boundary in " + std::to_string(k) +
+                      " faces; the runtime supports up to " + std::to_string(limits::kMaxValence));
+    if (!tables.has_sector({false, k, 0}))
+      valences.add_boundary(k, "vertex " + std::to_string(v) + " is on the boundary in " + std::to_string(k) + " face" +
+                                   (k == 1 ? "" : "s") + " (tables cover boundary vertices in up to as many faces as their largest valence)");
   }
 }
 
@@ -102,8 +115,9 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   out.original_sizes = mesh.face_sizes;
   const PolygonLinks links = link_polygons(mesh, true);  // a manifold (names the face, edge or vertex)
   BoundaryRules boundary;
+  ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 4);
   if (links.has_boundary) {
-    check_boundary_vertices(links, features);
+    check_boundary_vertices(links, features, t, valences);
     const CurveCreaseRule crease = quad_crease_rule(t, tables.scheme());
     boundary = {crease.centre, crease.neighbour, features.boundary == BoundaryInterpolation::EdgeAndCorner};
     out.boundary = true;
@@ -111,7 +125,6 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     out.no_boundary_surface = features.boundary == BoundaryInterpolation::None;
   }
   const BoundaryRules* rules = links.has_boundary ? &boundary : nullptr;
-  ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 4);
   for (std::size_t v = 0; v < mesh.vertex_count; ++v)
     if (!links.has_boundary || !links.boundary[v])
       valences.add_lazy(links.valence[v], [&] { return "vertex " + std::to_string(v); });
@@ -186,7 +199,9 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     out.boundary_patches.resize(topo.faces());
     for (std::size_t f = 0; f < topo.faces(); ++f)
       if (touches_boundary(topo, f)) {
+        const int c = sector_corner(topo, f, out.corners);
         if (out.no_boundary_surface) out.boundary_patches[f].points.assign(16, 0);  // a hole: never evaluated
+        else if (c >= 0) out.boundary_patches[f] = gather_sector_patch(topo, f, c);
         else out.boundary_patches[f] = gather_boundary_patch(topo, f, out.mesh.vertex_count, phantoms);
       }
     if (!phantoms.empty()) {  // none with `none`: its boundary faces have no patch
@@ -559,6 +574,13 @@ Point QuadFamily::normal_any(std::size_t face, P u, P v, const Point* prepared) 
   // map from the face to the patch keeps the orientation: doublings, quarter
   // turns, the patch's rotation).
   const QuadDescent::Valence& d = tables_.descent(valence);
+  if (d.tangent_u.size() != points.size() && is_sector_kind(valence)) {
+    const SectorKey s = sector_of(valence);
+    throw EvaluationError(s.corner ? "a corner has no tangent plane, so there is no normal at it"
+                                   : "the limit surface has no tangent plane at a boundary vertex in " + std::to_string(s.faces) + " face" +
+                                         (s.faces == 1 ? "" : "s") + " under this scheme's boundary rules (not C1 there: `stencilgen "
+                                         "analyze` shows the spectrum), so there is no normal at it");
+  }
   if (d.tangent_u.size() != points.size())
     throw EvaluationError("the tables hold no tangent stencils at valence " + std::to_string(valence) +
                           ", so there is no normal at the extraordinary vertex (exact JSON tables from before descent "
@@ -697,9 +719,10 @@ void QuadFamily::points(const TessellationLayout& layout, std::size_t begin, std
     // The control points, contiguous, and in reflected order for mirrored stencils.
     local.resize(m);
     reflected.resize(m);
-    const std::uint32_t* reflect = tables_.reflection(p.valence);
+    const std::uint32_t* reflect = tables_.reflection(p.valence);  // null for a boundary sector (never mirrored)
     for (std::size_t h = 0; h < m; ++h) local[h] = pos[p.points[h]];
-    for (std::size_t h = 0; h < m; ++h) reflected[h] = local[reflect[h]];
+    if (reflect)
+      for (std::size_t h = 0; h < m; ++h) reflected[h] = local[reflect[h]];
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         long pa = 0, pb = 0;

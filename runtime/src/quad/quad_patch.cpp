@@ -176,4 +176,71 @@ QuadPatch gather_boundary_patch(const QuadTopology& topo, std::size_t face, std:
   return p;
 }
 
+bool sector_vertex(const QuadTopology& topo, int v, bool corners) {
+  if (!topo.on_boundary(v)) return false;
+  const int k = topo.valence(v);
+  return k != 2 && !(k == 1 && corners);
+}
+
+bool sector_patch_ready(const QuadTopology& topo, std::size_t face, int corner) {
+  auto boundary_edge = [&](int c) { return topo.twin(QuadTopology::half_edge(face, c)) == QuadTopology::kNoTwin; };
+  for (int d = 1; d <= 3; ++d) {
+    const int v = topo.vertex(face, corner + d);
+    if (!topo.on_boundary(v)) {
+      if (topo.valence(v) != 4) return false;
+    } else {
+      // e_p (d = 1) on the edge corner -> corner+1, e_{p+1} (d = 3) on corner+3 -> corner; f_p never.
+      const bool on_edge = (d == 1 && boundary_edge(corner)) || (d == 3 && boundary_edge(corner + 3));
+      if (!on_edge || topo.valence(v) != 2) return false;
+    }
+  }
+  return true;
+}
+
+QuadPatch gather_sector_patch(const QuadTopology& topo, std::size_t face, int corner) {
+  const int b = topo.vertex(face, corner);
+  // Clockwise to the sector's first face (the one on the boundary edge B-e_0): its position is p.
+  Cell first{&topo, face, corner};
+  int p = 0;
+  for (;;) {
+    const std::uint32_t t = topo.twin(QuadTopology::half_edge(first.face, first.k));
+    if (t == QuadTopology::kNoTwin) break;
+    first = {&topo, QuadTopology::face_of(t), QuadTopology::corner_of(t) + 1};
+    if (++p > topo.valence(b)) throw MeshError("internal: vertex " + std::to_string(b) + " has no boundary edge");
+  }
+  const int k = topo.valence(b);
+  const SectorKey key{false, k, p};
+  QuadPatch out;
+  out.valence = sector_kind(key);
+  out.rotation = corner;
+  out.points.assign(static_cast<std::size_t>(key.points()), -1);
+  out.points[0] = b;
+  // Counter-clockwise: face s is (B, e_s, f_s, e_{s+1}).
+  Cell sector = first;
+  for (int s = 0; s < k; ++s) {
+    out.points[static_cast<std::size_t>(1 + s)] = sector.lr();
+    out.points[static_cast<std::size_t>(k + 2 + s)] = sector.ur();
+    if (s + 1 == k) {
+      out.points[static_cast<std::size_t>(1 + k)] = sector.ul();
+      break;
+    }
+    const std::uint32_t t = topo.twin(QuadTopology::half_edge(sector.face, sector.k + 3));
+    if (t == QuadTopology::kNoTwin) throw MeshError("internal: vertex " + std::to_string(b) + " has fewer faces than its valence");
+    sector = {&topo, QuadTopology::face_of(t), QuadTopology::corner_of(t)};
+  }
+  // The outer points of the face's chart that exist (boundary_sector.hpp's order).
+  const Cell c0{&topo, face, corner};
+  const Cell r = c0.right(), ru = r.up(), u = c0.up();
+  std::size_t o = static_cast<std::size_t>(2 * k + 2);
+  if (p > 0) out.points[o++] = r.down().lr();  // (2,-1)
+  out.points[o++] = r.lr();                    // (2,0)
+  out.points[o++] = r.ur();                    // (2,1)
+  out.points[o++] = ru.ur();                   // (2,2)
+  out.points[o++] = ru.ul();                   // (1,2)
+  out.points[o++] = u.ul();                    // (0,2)
+  if (p + 1 < k) out.points[o++] = u.left().ul();  // (-1,2)
+  if (o != out.points.size()) throw MeshError("internal: boundary sector patch of face " + std::to_string(face) + " is incomplete");
+  return out;
+}
+
 }  // namespace stencil_runtime

@@ -7,12 +7,14 @@
 #include <vector>
 
 #include "mesh/uniform_topology.hpp"
+#include "tables/patch_kind.hpp"
 #include "stencil_runtime/exact_parameter.hpp"
 
 namespace stencil_runtime {
 
 struct QuadPatch {
-  int valence = 4;    // 4: regular patch (16 points); otherwise 2v+8 points
+  int valence = 4;    // the patch kind (tables/patch_kind.hpp): 4 regular (16 points), 3..64 round an interior
+                      // extraordinary vertex (2v+8 points), or a boundary sector's face (its own count)
   int rotation = 0;   // face corner at patch (0,0)
   std::vector<int> points;
 
@@ -58,5 +60,20 @@ bool boundary_patch_ready(const QuadTopology& topology, std::size_t face, bool c
 // position in `phantoms`.
 QuadPatch gather_boundary_patch(const QuadTopology& topology, std::size_t face, std::size_t first_phantom,
                                 std::vector<std::vector<std::pair<int, double>>>& phantoms);
+
+// Vertices on the boundary whose faces get a boundary sector's patch
+// (tables/patch_kind.hpp): those in other than two faces, except a corner in
+// one face (with `corners`, edge-and-corner interpolation), whose patch is a
+// regular one with phantom points.
+bool sector_vertex(const QuadTopology& topology, int vertex, bool corners);
+
+// Whether the face at such a vertex (its corner `corner`) has its sector's
+// patch: its other corners are regular (inside the mesh in four faces, or on
+// the boundary in two and on one of the face's boundary edges).
+bool sector_patch_ready(const QuadTopology& topology, std::size_t face, int corner);
+
+// That patch: the vertex at patch (0,0) (rotation = `corner`), the points in
+// the sector's canonical order (docs/table-format.md, "Boundary sectors").
+QuadPatch gather_sector_patch(const QuadTopology& topology, std::size_t face, int corner);
 
 }  // namespace stencil_runtime

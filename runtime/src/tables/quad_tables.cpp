@@ -46,6 +46,23 @@ bool finite(const std::vector<double>& xs) {
   return std::all_of(xs.begin(), xs.end(), [](double x) { return std::isfinite(x); });
 }
 
+// The tangent stencils at the vertex (version 6), with the second eigenvalue for a boundary sector (version 8).
+void read_tangents(detail::BinaryReader& r, QuadDescent::Valence& d, std::size_t points, bool second, const std::string& where,
+                   std::size_t available) {
+  const auto tangents = r.get<std::uint8_t>();
+  if (tangents > 1) r.fail(where + ": invalid tangent flag");
+  if (tangents == 0) return;
+  d.tangent_eigenvalue = r.get<double>();
+  d.tangent_second_eigenvalue = second ? r.get<double>() : d.tangent_eigenvalue;
+  d.tangent_residual = r.get<double>();
+  d.tangent_u = read_scalars(r, points, 8, available);
+  d.tangent_v = read_scalars(r, points, 8, available);
+  auto eigenvalue = [](double x) { return std::isfinite(x) && x > 0 && x < 1; };
+  if (!eigenvalue(d.tangent_eigenvalue) || !eigenvalue(d.tangent_second_eigenvalue) || !std::isfinite(d.tangent_residual) ||
+      !finite(d.tangent_u) || !finite(d.tangent_v))
+    r.fail(where + ": invalid tangent stencils");
+}
+
 }  // namespace
 
 QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expected_hash) {
@@ -180,19 +197,34 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
     const std::string where = "valence " + std::to_string(valence) + " patch subdivision";
     d.ev_child = read_rows(r, points, points, where);
     for (auto& child : d.regular_children) child = read_rows(r, 16, points, where);
-    const auto tangents = r.get<std::uint8_t>();  // version 6
-    if (tangents > 1) r.fail("valence " + std::to_string(valence) + ": invalid tangent flag");
-    if (tangents == 1) {
-      d.tangent_eigenvalue = r.get<double>();
-      d.tangent_residual = r.get<double>();
-      d.tangent_u = read_scalars(r, points, 8, left());
-      d.tangent_v = read_scalars(r, points, 8, left());
-      if (!std::isfinite(d.tangent_eigenvalue) || !(d.tangent_eigenvalue > 0 && d.tangent_eigenvalue < 1) ||
-          !std::isfinite(d.tangent_residual) || !finite(d.tangent_u) || !finite(d.tangent_v))
-        r.fail("valence " + std::to_string(valence) + ": invalid tangent stencils");
-    }
+    read_tangents(r, d, points, false, "valence " + std::to_string(valence), left());  // version 6
     t.descent_valences_.push_back(std::move(d));
     t.valences_.push_back(std::move(v));
+  }
+  const auto sector_count = r.get<std::uint32_t>();  // version 8: boundary sectors
+  if (sector_count > left() / 14) r.fail("truncated sector list");
+  for (std::uint32_t k = 0; k < sector_count; ++k) {
+    Sector sec;
+    const auto corner = r.get<std::uint8_t>();
+    const auto faces = r.get<std::uint32_t>(), position = r.get<std::uint32_t>(), points = r.get<std::uint32_t>();
+    if (corner > 1 || faces < 1 || faces > static_cast<std::uint32_t>(limits::kMaxValence) || position >= faces)
+      r.fail("boundary sector " + std::to_string(k) + ": invalid kind, face count (1.." + std::to_string(limits::kMaxValence) +
+             ") or position");
+    sec.key = {corner == 1, static_cast<int>(faces), static_cast<int>(position)};
+    const std::string where = sec.key.name();
+    if (points != static_cast<std::uint32_t>(sec.key.points())) r.fail(where + ": invalid point count");
+    for (int n : t.rates_)  // expanded on first use: refused now if it could not be
+      if (format::expansion_grid_entries(static_cast<std::uint64_t>(n), points) > format::kMaxExpansionGridEntries)
+        r.fail(where + ", rate " + std::to_string(n) + ": too large to expand (the runtime's limit is " +
+               std::to_string(format::kMaxExpansionGridEntries) + " grid entries per rate)");
+    sec.limit = read_scalars(r, points, scalar, left());
+    const auto flag = r.get<std::uint8_t>();
+    if (flag > 1) r.fail(where + ": invalid sign flag");
+    sec.descent.nonnegative = flag == 1;
+    sec.descent.ev_child = read_rows(r, points, points, where + " patch subdivision");
+    for (auto& child : sec.descent.regular_children) child = read_rows(r, 16, points, where + " patch subdivision");
+    read_tangents(r, sec.descent, points, true, where, left());
+    t.sectors_.push_back(std::move(sec));
   }
   if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
   // Generated stencils: the patch recursion from what the file holds (quad_expansion.hpp);
@@ -302,6 +334,23 @@ void QuadTables::validate(const std::string& origin) {
           if (x >= stencils) fail(where + ": stencil index out of range");
     }
   }
+  for (std::size_t k = 0; k < sectors_.size(); ++k) {
+    const Sector& sec = sectors_[k];
+    const std::string where = sec.key.valid() ? sec.key.name() : "boundary sector " + std::to_string(k);
+    if (!sec.key.valid()) fail(where + ": invalid face count or position");
+    for (std::size_t j = 0; j < k; ++j)
+      if (sectors_[j].key == sec.key) fail(where + " is stored twice");
+    const std::size_t n = static_cast<std::size_t>(sec.key.points());
+    const QuadDescent::Valence& d = sec.descent;
+    if (sec.limit.size() != n || d.ev_child.rows() != n || d.ev_child.columns_count != n)
+      fail(where + ": the limit stencil or A0 does not match the point count");
+    for (const auto& child : d.regular_children)
+      if (child.rows() != 16 || child.columns_count != n) fail(where + ": a regular child does not have 16 rows over the points");
+    double sum = 0, size = 0;
+    for (double w : sec.limit) sum += w, size += std::fabs(w);
+    if (!finite(sec.limit) || !(std::fabs(sum - 1) <= 1e-5 * std::max(1.0, size))) fail(where + ": the limit stencil does not sum to 1");
+    if (!d.tangent_u.empty() && (d.tangent_u.size() != n || d.tangent_v.size() != n)) fail(where + ": tangent stencils of the wrong length");
+  }
   if (has_descent_) {
     for (double a : descent_.mask)
       if (!std::isfinite(a)) fail("a regular mask weight is not finite");
@@ -313,7 +362,37 @@ void QuadTables::validate(const std::string& origin) {
   for (std::size_t k = 0; k < rates_.size(); ++k) slot_of_rate_[static_cast<std::size_t>(rates_[k])] = static_cast<int>(k);
 }
 
+const QuadTables::Sector* QuadTables::find_sector(const SectorKey& s) const {
+  for (const Sector& x : sectors_)
+    if (x.key == s) return &x;
+  return nullptr;
+}
+
+std::vector<SectorKey> QuadTables::sectors() const {
+  std::vector<SectorKey> out;
+  for (const Sector& x : sectors_) out.push_back(x.key);
+  return out;
+}
+
+const QuadTables::Valence& QuadTables::expanded(const Sector& s) const {
+  std::call_once(*s.once, [&] {
+    ExpandedPatch e = expand_patch(sector_kind(s.key), s.descent, s.limit, rates_, regular_, regular_first_, false);
+    auto v = std::make_unique<Valence>();
+    v->valence = sector_kind(s.key);
+    v->points = s.key.points();
+    v->weights = std::move(e.weights);
+    v->nodes = std::move(e.nodes);
+    v->centres = std::move(e.centres);
+    s.expanded = std::move(v);
+  });
+  return *s.expanded;
+}
+
 const QuadDescent::Valence& QuadTables::descent(int valence) const {
+  if (is_sector_kind(valence)) {
+    if (const Sector* s = find_sector(sector_of(valence))) return s->descent;
+    throw EvaluationError(kind_name(valence) + " is not in the tables");
+  }
   for (std::size_t k = 0; k < valences_.size(); ++k)
     if (valences_[k].valence == valence && has_descent_) return descent_valences_[k];
   throw EvaluationError("valence " + std::to_string(valence) + " has no patch subdivision in the tables");
@@ -346,6 +425,7 @@ std::vector<int> QuadTables::valences() const {
 
 bool QuadTables::has_valence(int v) const {
   if (v == 4) return true;
+  if (is_sector_kind(v)) return has_sector(sector_of(v));
   for (const auto& x : valences_)
     if (x.valence == v) return true;
   return false;
@@ -359,8 +439,9 @@ int QuadTables::checked_slot(int n) const {
 
 const double* QuadTables::stored_weights(const Valence& v, int slot, long i, long j, bool centre) const {
   const auto& index = centre ? v.centres[static_cast<std::size_t>(slot)] : v.nodes[static_cast<std::size_t>(slot)];
-  return v.weights.data() +
-         static_cast<std::size_t>(index[static_cast<std::size_t>(j * (j + 1) / 2 + i)]) * static_cast<std::size_t>(v.points);
+  const long side = rates_[static_cast<std::size_t>(slot)] + (centre ? 0 : 1);
+  const long at = v.reflection.empty() ? j * side + i : j * (j + 1) / 2 + i;  // every point, or i <= j
+  return v.weights.data() + static_cast<std::size_t>(index[static_cast<std::size_t>(at)]) * static_cast<std::size_t>(v.points);
 }
 
 int QuadTables::rate_slot(int n) const {
@@ -368,6 +449,11 @@ int QuadTables::rate_slot(int n) const {
 }
 
 const QuadTables::Valence& QuadTables::valence_data(int v) const {
+  if (is_sector_kind(v)) {
+    if (const Sector* s = find_sector(sector_of(v))) return expanded(*s);
+    throw EvaluationError(kind_name(v) + " is not in the tables: regenerate them with this stencilgen and --valence up to " +
+                          std::to_string(sector_of(v).faces) + " at least");
+  }
   for (const auto& x : valences_)
     if (x.valence == v) return x;
   throw EvaluationError("valence " + std::to_string(v) + " is not in the tables");
@@ -388,8 +474,9 @@ void QuadTables::centre_stencil(int valence, int n, int i, int j, double* weight
 const double* QuadTables::centre_weights(int valence, int n, int i, int j, bool& mirrored) const {
   const int slot = checked_slot(n);
   if (i < 0 || j < 0 || i >= n || j >= n) throw EvaluationError("cell index outside 0..n-1");
-  mirrored = i > j;
-  return stored_weights(valence_data(valence), slot, mirrored ? j : i, mirrored ? i : j, true);
+  const Valence& v = valence_data(valence);
+  mirrored = i > j && !v.reflection.empty();
+  return stored_weights(v, slot, mirrored ? j : i, mirrored ? i : j, true);
 }
 
 void QuadTables::regular_weights_at(int slot, long a, double* w4) const {
@@ -429,7 +516,7 @@ void QuadTables::stencil(int valence, int slot, long a, long b, bool centre, dou
     return;
   }
   const Valence& v = valence_data(valence);
-  const bool mirrored = a > b;
+  const bool mirrored = a > b && !v.reflection.empty();
   const long lo = mirrored ? b : a, hi = mirrored ? a : b;
   const double* w = centre ? stored_weights(v, slot, (lo - 1) / 2, (hi - 1) / 2, true) : stored_weights(v, slot, lo / 2, hi / 2, false);
   for (int h = 0; h < v.points; ++h) weights[mirrored ? v.reflection[static_cast<std::size_t>(h)] : h] = w[h];

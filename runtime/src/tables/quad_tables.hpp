@@ -6,9 +6,12 @@
 // subdivision rules. Control point order: docs/table-format.md (regular: 16
 // points row by row; extraordinary: 2v+8 points, EV first). Doubles only.
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
+#include "patch_kind.hpp"
 #include "sparse_rows.hpp"
 #include "stencil_runtime/error.hpp"
 
@@ -35,6 +38,9 @@ struct QuadDescent {
     // derivatives; empty when the tables hold none).
     std::vector<double> tangent_u, tangent_v;
     double tangent_eigenvalue = 0, tangent_residual = 0;
+    // The other eigenvalue of the pair (boundary sectors, where the two may
+    // differ: docs/table-format.md; equal to tangent_eigenvalue otherwise).
+    double tangent_second_eigenvalue = 0;
   };
 };
 
@@ -77,7 +83,10 @@ class QuadTables {
   std::vector<int> valences() const;  // extraordinary valences stored (4 is the regular patch)
   bool has_rate(int n) const { return rate_slot(n) >= 0; }
   bool has_valence(int v) const;
-  static int points(int valence) { return valence == 4 ? 16 : 2 * valence + 8; }
+  static int points(int kind) { return patch_points(kind); }  // any patch kind (patch_kind.hpp)
+  // The boundary sectors the tables hold (version 8 binary, descent.json version 3).
+  bool has_sector(const SectorKey& s) const { return find_sector(s) != nullptr; }
+  std::vector<SectorKey> sectors() const;
 
   // The patch subdivision (binary tables of version 4; nullptr for exact JSON
   // tables without descent.json).
@@ -93,18 +102,24 @@ class QuadTables {
   const QuadDescent::Valence& descent(int valence) const;
 
   // Weights over the patch's control points (16 for the regular patch or
-  // valence 4, 2v+8 otherwise) at node (i/n, j/n), 0 <= i,j <= n, or at the
-  // centre of cell (i,j), 0 <= i,j < n. Throws EvaluationError for a rate,
-  // valence or index that is not in the table.
+  // valence 4, 2v+8 otherwise, a sector's own count for a sector kind) at node
+  // (i/n, j/n), 0 <= i,j <= n, or at the centre of cell (i,j), 0 <= i,j < n.
+  // Throws EvaluationError for a rate, kind or index that is not in the table.
+  // The first use of a boundary sector expands its stencils (every rate).
   void node_stencil(int valence, int n, int i, int j, double* weights) const;
   void centre_stencil(int valence, int n, int i, int j, double* weights) const;
 
-  // Direct access for extraordinary patches (valence != 4): the stored weights
-  // at cell centre (i, j) of rate n in patch coordinates. When `mirrored` comes
-  // back true they are the weights at (j, i): apply them to the control points
-  // permuted by reflection(valence), i.e. weight h multiplies point reflection[h].
+  // Direct access for extraordinary patches (valence != 4) and sectors: the
+  // stored weights at cell centre (i, j) of rate n in patch coordinates. When
+  // `mirrored` comes back true (never for a sector, which stores every point)
+  // they are the weights at (j, i): apply them to the control points permuted
+  // by reflection(valence), i.e. weight h multiplies point reflection[h].
   const double* centre_weights(int valence, int n, int i, int j, bool& mirrored) const;
-  const std::uint32_t* reflection(int valence) const { return valence_data(valence).reflection.data(); }
+  // nullptr for a boundary sector, which has no reflection (and is never mirrored).
+  const std::uint32_t* reflection(int valence) const {
+    const auto& r = valence_data(valence).reflection;
+    return r.empty() ? nullptr : r.data();
+  }
 
   // The regular patch is a tensor product: its weight for point (p, q) at
   // (a/(2n), b/(2n)) is w(a)[p+1] * w(b)[q+1], with w(a) the four values
@@ -118,11 +133,22 @@ class QuadTables {
 
  private:
   struct Valence {
-    int valence = 0, points = 0;
+    int valence = 0, points = 0;  // valence: the patch kind
     std::vector<std::uint32_t> reflection;
     std::vector<double> weights;  // stencil_count * points
-    std::vector<std::vector<std::uint32_t>> nodes, centres;  // per rate slot, (i <= j) j-major
+    // Per rate slot: with a reflection (i <= j) j-major; without (sectors) every (i, j), j-major.
+    std::vector<std::vector<std::uint32_t>> nodes, centres;
   };
+  // A boundary sector: what generates its stencils, expanded on first use.
+  struct Sector {
+    SectorKey key;
+    std::vector<double> limit;  // W(0)
+    QuadDescent::Valence descent;
+    std::unique_ptr<std::once_flag> once = std::make_unique<std::once_flag>();
+    mutable std::unique_ptr<const Valence> expanded;
+  };
+  const Sector* find_sector(const SectorKey& s) const;
+  const Valence& expanded(const Sector& s) const;
   int rate_slot(int n) const;
   int checked_slot(int n) const;  // throws EvaluationError for a rate not stored
   // Checks everything a reader filled in (rates, valences, reflections,
@@ -153,6 +179,7 @@ class QuadTables {
   bool has_descent_ = false;
   QuadDescent descent_;
   std::vector<QuadDescent::Valence> descent_valences_;  // parallel to valences_
+  std::vector<Sector> sectors_;
 };
 
 }  // namespace stencil_runtime

@@ -10,6 +10,7 @@
 
 #include "json_reader.hpp"
 #include "quad_tables.hpp"
+#include "stencil_runtime/binary_format.hpp"
 #include "stencil_runtime/limits.hpp"
 
 namespace stencil_runtime {
@@ -73,6 +74,37 @@ SparseRows read_rows(const JsonFile& f, const json& rows, std::size_t count, std
 bool boolean(const JsonFile& f, const json& value, const std::string& field) {
   if (!value.is_boolean()) f.fail(field, "expected true or false");
   return value.get<bool>();
+}
+
+double decimal(const JsonFile& f, const json& x, const std::string& where) {
+  const std::string text = f.string(x, where);
+  double value = 0;
+  const auto [end, err] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (err != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+    f.fail(where, "not a finite decimal number: " + quoted_excerpt(text));
+  return value;
+}
+
+// The tangent stencils at the vertex, entry["tangents"] (null: none); `second`:
+// with the second eigenvalue of the pair (boundary sectors).
+void read_tangents(const JsonFile& f, const json& entry, QuadDescent::Valence& out, std::size_t points, bool second,
+                   const std::string& field) {
+  const json& t = f.member(entry, "tangents", field);
+  if (t.is_null()) return;
+  const std::string tf = field + ".tangents";
+  out.tangent_eigenvalue = decimal(f, f.member(t, "eigenvalue", tf), tf + ".eigenvalue");
+  out.tangent_second_eigenvalue =
+      second ? decimal(f, f.member(t, "second_eigenvalue", tf), tf + ".second_eigenvalue") : out.tangent_eigenvalue;
+  out.tangent_residual = decimal(f, f.member(t, "residual", tf), tf + ".residual");
+  if (!(out.tangent_eigenvalue > 0 && out.tangent_eigenvalue < 1)) f.fail(tf + ".eigenvalue", "must lie in (0, 1)");
+  if (!(out.tangent_second_eigenvalue > 0 && out.tangent_second_eigenvalue < 1)) f.fail(tf + ".second_eigenvalue", "must lie in (0, 1)");
+  for (const char* which : {"u", "v"}) {
+    const std::string where = tf + "." + which;
+    const json& w = f.array(f.member(t, which, tf), where);
+    if (w.size() != points) f.fail(where, "expected " + std::to_string(points) + " weights");
+    std::vector<double>& dest = which[0] == 'u' ? out.tangent_u : out.tangent_v;
+    for (const json& x : w) dest.push_back(decimal(f, x, where));
+  }
 }
 
 }  // namespace
@@ -232,8 +264,8 @@ QuadTables QuadTables::load_json_directory(const std::string& dir, std::uint64_t
     const JsonFile f(descent.string());
     const json& doc = f.root();
     const std::int64_t version = f.integer(f.member(doc, "version", ""), "version");
-    if (f.string(f.member(doc, "format", ""), "format") != "stencilgen-quad-descent" || version < 1 || version > 2)
-      f.fail("format", "not a version 1 or 2 stencilgen quad descent file");
+    if (f.string(f.member(doc, "format", ""), "format") != "stencilgen-quad-descent" || version < 1 || version > 3)
+      f.fail("format", "not a version 1, 2 or 3 stencilgen quad descent file");
     if (f.string(f.member(doc, "scheme", ""), "scheme") != t.name_) f.fail("scheme", "another scheme than the tables'");
     QuadDescent& d = t.descent_;
     const json& mask = f.member(doc, "mask", "");
@@ -277,34 +309,47 @@ QuadTables QuadTables::load_json_directory(const std::string& dir, std::uint64_t
       if (children.size() != 3) f.fail(field + ".regular_children", "expected three children");
       for (std::size_t c = 0; c < 3; ++c)
         out.regular_children[c] = read_rows(f, children[c], 16, points, field + ".regular_children[" + std::to_string(c) + "]");
-      if (version >= 2) {  // the tangent stencils at the vertex (null: none)
-        const json& t = f.member(valences[k], "tangents", field);
-        if (!t.is_null()) {
-          auto decimal = [&](const json& x, const std::string& where) {
-            const std::string text = f.string(x, where);
-            double value = 0;
-            const auto [end, err] = std::from_chars(text.data(), text.data() + text.size(), value);
-            if (err != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
-              f.fail(where, "not a finite decimal number: " + quoted_excerpt(text));
-            return value;
-          };
-          out.tangent_eigenvalue = decimal(f.member(t, "eigenvalue", field + ".tangents"), field + ".tangents.eigenvalue");
-          out.tangent_residual = decimal(f.member(t, "residual", field + ".tangents"), field + ".tangents.residual");
-          if (!(out.tangent_eigenvalue > 0 && out.tangent_eigenvalue < 1))
-            f.fail(field + ".tangents.eigenvalue", "must lie in (0, 1)");
-          for (const char* which : {"u", "v"}) {
-            const std::string where = field + ".tangents." + which;
-            const json& w = f.array(f.member(t, which, field + ".tangents"), where);
-            if (w.size() != points) f.fail(where, "expected " + std::to_string(points) + " weights");
-            std::vector<double>& dest = which[0] == 'u' ? out.tangent_u : out.tangent_v;
-            for (const json& x : w) dest.push_back(decimal(x, where));
-          }
-        }
-      }
+      if (version >= 2) read_tangents(f, valences[k], out, points, false, field);  // the tangent stencils (null: none)
       seen[slot] = 1;
     }
     for (std::size_t s = 0; s < seen.size(); ++s)
       if (!seen[s]) f.fail("valences", "no patch subdivision for valence " + std::to_string(t.valences_[s].valence));
+    if (version >= 3) {  // the boundary sectors
+      const json& sectors = f.array(f.member(doc, "sectors", ""), "sectors");
+      for (std::size_t k = 0; k < sectors.size(); ++k) {
+        const std::string field = "sectors[" + std::to_string(k) + "]";
+        const json& e = sectors[k];
+        Sector sec;
+        const std::string kind = f.string(f.member(e, "kind", field), field + ".kind");
+        if (kind != "crease" && kind != "corner") f.fail(field + ".kind", "expected \"crease\" or \"corner\"");
+        sec.key.corner = kind == "corner";
+        const std::int64_t faces = f.integer(f.member(e, "faces", field), field + ".faces");
+        const std::int64_t position = f.integer(f.member(e, "position", field), field + ".position");
+        if (faces < 1 || faces > limits::kMaxValence || position < 0 || position >= faces)
+          f.fail(field, "face count outside 1.." + std::to_string(limits::kMaxValence) + " or position outside 0..faces-1");
+        sec.key.faces = static_cast<int>(faces);
+        sec.key.position = static_cast<int>(position);
+        const std::size_t points = static_cast<std::size_t>(sec.key.points());
+        if (f.integer(f.member(e, "points", field), field + ".points") != static_cast<std::int64_t>(points))
+          f.fail(field + ".points", "expected " + std::to_string(points));
+        for (int n : t.rates_)
+          if (format::expansion_grid_entries(static_cast<std::uint64_t>(n), points) > format::kMaxExpansionGridEntries)
+            f.fail(field, "too large to expand at rate " + std::to_string(n) + " (the runtime's limit is " +
+                              std::to_string(format::kMaxExpansionGridEntries) + " grid entries per rate)");
+        const json& limit = f.array(f.member(e, "limit", field), field + ".limit");
+        if (limit.size() != points) f.fail(field + ".limit", "expected " + std::to_string(points) + " weights");
+        for (const json& x : limit) sec.limit.push_back(detail::parse_exact_rational(f.string(x, field + ".limit"), f, field + ".limit"));
+        QuadDescent::Valence& out = sec.descent;
+        out.nonnegative = boolean(f, f.member(e, "nonnegative", field), field + ".nonnegative");
+        out.ev_child = read_rows(f, f.member(e, "ev_child", field), points, points, field + ".ev_child");
+        const json& children = f.array(f.member(e, "regular_children", field), field + ".regular_children");
+        if (children.size() != 3) f.fail(field + ".regular_children", "expected three children");
+        for (std::size_t c = 0; c < 3; ++c)
+          out.regular_children[c] = read_rows(f, children[c], 16, points, field + ".regular_children[" + std::to_string(c) + "]");
+        read_tangents(f, e, out, points, true, field);
+        t.sectors_.push_back(std::move(sec));
+      }
+    }
     t.has_descent_ = true;
   }
   t.validate(dir);

@@ -1,0 +1,45 @@
+#pragma once
+// Which patch evaluates a prepared quad face, as one integer "kind": 4 is the
+// regular patch, 3..64 (other than 4) the patch round an interior
+// extraordinary vertex of that valence, and from kFirstSectorKind on the patch
+// of a face at a vertex on a boundary: the vertex in k faces (its sector), the
+// face at position p among them, counter-clockwise from the boundary edge
+// (docs/table-format.md, "Boundary sectors").
+#include <string>
+
+#include "stencil_runtime/limits.hpp"
+
+namespace stencil_runtime {
+
+struct SectorKey {
+  bool corner = false;  // the vertex stays put (a corner) rather than following the boundary curve
+  int faces = 1;        // k, 1..kMaxValence
+  int position = 0;     // p, 0..k-1
+  bool operator==(const SectorKey&) const = default;
+  bool valid() const { return faces >= 1 && faces <= limits::kMaxValence && position >= 0 && position < faces; }
+  // The patch's control points: the vertex, its k+1 edge neighbours, k face
+  // opposites, and the outer points of the face's chart that exist.
+  int points() const { return 2 * faces + 2 + 5 + (position > 0 ? 1 : 0) + (position + 1 < faces ? 1 : 0); }
+  std::string name() const {
+    return std::string(corner ? "corner" : "boundary vertex") + " in " + std::to_string(faces) + " face" +
+           (faces == 1 ? "" : "s") + ", face " + std::to_string(position);
+  }
+};
+
+inline constexpr int kFirstSectorKind = 1 << 16;
+inline int sector_kind(const SectorKey& s) { return kFirstSectorKind + ((s.corner ? 1 : 0) * 128 + s.faces) * 128 + s.position; }
+inline bool is_sector_kind(int kind) { return kind >= kFirstSectorKind; }
+inline SectorKey sector_of(int kind) {
+  const int x = kind - kFirstSectorKind;
+  return {x / (128 * 128) == 1, (x / 128) % 128, x % 128};
+}
+// Control points of a patch of any kind.
+inline int patch_points(int kind) {
+  if (is_sector_kind(kind)) return sector_of(kind).points();
+  return kind == 4 ? 16 : 2 * kind + 8;
+}
+inline std::string kind_name(int kind) {
+  return is_sector_kind(kind) ? sector_of(kind).name() : "valence " + std::to_string(kind);
+}
+
+}  // namespace stencil_runtime
