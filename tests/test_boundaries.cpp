@@ -5,6 +5,7 @@
 // by the curve's limit stencil (nonpoly and Catmull-Clark), written here; the
 // tessellation's rim and Euler characteristic are counted independently.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -384,6 +385,51 @@ TEST_CASE("boundaries: vertices on the boundary in 1..8 faces, nonpoly and Catmu
   }
 }
 
+TEST_CASE("boundaries: the normal at a boundary vertex is the limit of the surface's normals next to it where the "
+          "sector has a tangent plane, and refused with the reason where it has none",
+          "[runtime][boundaries][normals]") {
+  auto angle = [](const Point& a, const Point& b) {  // accurate near 0 too
+    const Point c{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    return std::atan2(std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+  };
+  int with_normal = 0;
+  for (const char* scheme : {"catmull-clark", "nonpoly"}) {
+    const auto tables = tables_for(scheme);
+    for (int k : {1, 3, 4, 5, 6, 7, 8}) {
+      INFO(scheme << ", vertex in " << k << " faces");
+      const Mesh mesh = boundary_fan(k, 2);
+      const Surface surface = boundary_surface(tables, mesh, false);
+      Point at_vertex{};
+      try {
+        at_vertex = surface.normal(0, 0.0, 0.0);
+      } catch (const EvaluationError& e) {
+        CHECK_THAT(e.what(), Catch::Contains("no normal at it") && Catch::Contains(std::to_string(k) + " face"));
+        continue;
+      }
+      ++with_normal;
+      // Face 0 of each sector of the fan has the vertex at its corner (0, 0): they all give the same normal.
+      for (int s = 1; s < k; ++s) CHECK(angle(surface.normal(static_cast<std::size_t>(4 * s), 0.0, 0.0), at_vertex) < 1e-10);
+      // The surface's normals next to the vertex (its derivatives, by the patch descent) approach it, along the
+      // diagonal and along the boundary edge, at a rate set by the eigenvalues below the two that span the plane.
+      // (Much deeper, near a vertex in one face the two derivatives turn nearly parallel and their cross product
+      // is rounding.)
+      for (bool diagonal : {true, false}) {
+        std::vector<double> off;
+        for (int depth : {5, 10, 20}) {
+          const double e = std::ldexp(1.0, -depth);
+          off.push_back(angle(surface.derivatives(0, e, diagonal ? e : 0.0).normal(), at_vertex));
+        }
+        CHECK(off[2] < 1e-3);
+        CHECK(off[2] < off[1]);
+        CHECK(off[1] < off[0]);
+        WARN(scheme << ", " << k << " faces, " << (diagonal ? "diagonal" : "boundary edge") << ": the normals at 2^-5, 2^-10, "
+                    << "2^-20 from the vertex are " << off[0] << ", " << off[1] << ", " << off[2] << " rad from its normal");
+      }
+    }
+  }
+  CHECK(with_normal == 3);  // three faces for both schemes, one face for nonpoly (docs/table-format.md)
+}
+
 TEST_CASE("boundaries: tessellations are closed except along the mesh's boundaries and holes, with the right Euler "
           "characteristic", "[runtime][boundaries][tessellation]") {
   std::mt19937 rng(20261125u);
@@ -493,11 +539,12 @@ TEST_CASE("boundaries from the OBJ tag and the tools' --boundary option", "[runt
   CHECK(!fs::exists(dir / "u.obj"));
 }
 
-TEST_CASE("boundaries: closest points equal a Bfr brute force, also where the nearest point is on the boundary curve",
+TEST_CASE("boundaries: closest points equal a Bfr brute force, also where the nearest point is on the boundary curve "
+          "or at a boundary vertex in other than two faces",
           "[runtime][boundaries][distance][opensubdiv]") {
   std::mt19937 rng(11);
   const auto tables = tables_for("catmull-clark");
-  for (const Mesh& mesh : {tube(8, 3), without_first_face("cube")}) {
+  for (const Mesh& mesh : {tube(8, 3), without_first_face("cube"), l_shape(), open_grid(3, 3), boundary_fan(5, 2)}) {
     const Surface surface = boundary_surface(tables, mesh, false);
     const ClosestPointQuery query(surface);
     const bfr_reference::BfrOracle oracle(mesh);
@@ -595,3 +642,4 @@ TEST_CASE("boundaries, `none`: faces at boundary vertices have no surface, the o
     CHECK(!soup.positions.empty());
   }
 }
+

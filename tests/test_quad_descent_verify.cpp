@@ -64,6 +64,33 @@ TEST_CASE("stencilgen verify checks descent.json: subdivision matrices exactly, 
     r = run_stencilgen("verify " + (dir / "bad.json").string());
     CHECK(r.status == 1);
     CHECK_THAT(r.output, Catch::Contains("no tangent stencils, but the scheme has them"));
+
+    // Boundary sectors: valences up to 5 give the sectors of 1, 3, 4 and 5 faces.
+    REQUIRE(good["sectors"].size() == 1 + 3 + 4 + 5);
+    std::size_t three = 0;  // the first sector of three faces (which has tangents)
+    while (good["sectors"][three]["faces"] != 3) ++three;
+    bad = good;  // a weight of a sector's A0 (its vertex's row: the boundary curve's rule)
+    bad["sectors"][three]["ev_child"][0][0][1] = "1/3";
+    write(dir / "bad.json", bad);
+    r = run_stencilgen("verify " + (dir / "bad.json").string());
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains("boundary vertex in 3 faces, face 0: A0 differs"));
+    bad = good;  // a weight of its limit stencil
+    bad["sectors"][three]["limit"][0] = "1/2";
+    write(dir / "bad.json", bad);
+    r = run_stencilgen("verify " + (dir / "bad.json").string());
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains("boundary vertex in 3 faces, face 0: the limit stencil differs") &&
+                             Catch::Contains("not A0's fixed point"));
+    bad = good;  // a digit of a tangent weight: the plane is no longer one A0 keeps
+    std::string& t = bad["sectors"][three]["tangents"]["v"][0].get_ref<std::string&>();
+    const std::size_t at = t.find('.') + 19;
+    REQUIRE(at < t.size());
+    t[at] = t[at] == '1' ? '2' : '1';
+    write(dir / "bad.json", bad);
+    r = run_stencilgen("verify " + (dir / "bad.json").string());
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains("do not span a plane that A0 keeps"));
   }
   fs::remove_all(dir);
 }

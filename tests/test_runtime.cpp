@@ -252,6 +252,20 @@ TEST_CASE("the runtime loads the exact JSON tables too, with the same stencils a
           for (std::size_t h = 0; h < a.size(); ++h) REQUIRE(a[h] == Approx(b[h]).epsilon(1e-15).margin(1e-300));
         }
     }
+  // The boundary sectors, from descent.json, expand to the binary file's stencils.
+  REQUIRE(exact.sectors() == binary.sectors());
+  REQUIRE(exact.sectors().size() == 1 + 3 + 4 + 5);
+  for (const SectorKey& key : exact.sectors()) {
+    const int kind = sector_kind(key);
+    std::vector<double> a(static_cast<std::size_t>(key.points())), b(a.size());
+    for (int n : {1, 6})
+      for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+          exact.node_stencil(kind, n, i, j, a.data());
+          binary.node_stencil(kind, n, i, j, b.data());
+          for (std::size_t h = 0; h < a.size(); ++h) REQUIRE(a[h] == Approx(b[h]).epsilon(1e-15).margin(1e-300));
+        }
+  }
   CHECK_THROWS_WITH(QuadTables::load_json_directory(json_dir.string(), binary.scheme_hash() + 1), Catch::Contains("different scheme"));
   // descent.json: the JSON tables evaluate at any parameter as the binary file does.
   {

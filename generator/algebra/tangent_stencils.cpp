@@ -181,7 +181,9 @@ Matrix start_near(const Eigen::EigenSolver<Eigen::MatrixXd>& solver, double esti
 
 std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::vector<Real>>& a0,
                                                          const std::vector<Real>& end_u, const std::vector<Real>& end_v,
-                                                         const std::vector<Real>& boundary_tangent, std::string& why) {
+                                                         const std::vector<Real>& boundary_tangent,
+                                                         const std::vector<std::vector<double>>& grid, long g,
+                                                         std::string& why) {
   if (end_u.size() != end_v.size() || boundary_tangent.size() != end_u.size())
     throw Error("internal: boundary_tangent_stencils: sizes differ");
   const Matrix a = square(a0, end_u.size());
@@ -237,6 +239,38 @@ std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::
   };
   const auto [cu0, cu1] = characteristic(end_u);
   const auto [cv0, cv1] = characteristic(end_v);
+  // Regularity of the characteristic map over the patch: the signed area of every sampled cell.
+  if (g < 1 || grid.size() != static_cast<std::size_t>((g + 1) * (g + 1))) throw Error("internal: boundary_tangent_stencils: grid size");
+  std::vector<std::pair<double, double>> c(grid.size());
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    double x = 0, y = 0;
+    for (Eigen::Index h = 0; h < m; ++h) x += grid[k][static_cast<std::size_t>(h)] * to_double(r(h, 0)), y += grid[k][static_cast<std::size_t>(h)] * to_double(r(h, 1));
+    c[k] = {x, y};
+  }
+  long positive = 0, negative = 0;
+  double largest_area = 0;
+  std::vector<double> areas;
+  for (long j = 0; j < g; ++j)
+    for (long i = 0; i < g; ++i) {
+      const auto& a = c[static_cast<std::size_t>(j * (g + 1) + i)];
+      const auto& b = c[static_cast<std::size_t>(j * (g + 1) + i + 1)];
+      const auto& d = c[static_cast<std::size_t>((j + 1) * (g + 1) + i + 1)];
+      const auto& e = c[static_cast<std::size_t>((j + 1) * (g + 1) + i)];
+      const double area = (d.first - a.first) * (e.second - b.second) - (d.second - a.second) * (e.first - b.first);
+      areas.push_back(area);
+      largest_area = std::max(largest_area, std::abs(area));
+    }
+  for (double area : areas) {
+    if (area > 1e-9 * largest_area) ++positive;
+    else if (area < -1e-9 * largest_area) ++negative;
+    else ++negative, ++positive;  // degenerate: counts against regularity either way
+  }
+  if (largest_area == 0 || std::min(positive, negative) > 0) {
+    why = "the characteristic map of the two largest eigenvalues below 1 (" + describe(s1) + ", " + describe(s2) +
+          ") is not regular on the patch (" + std::to_string(std::min(positive, negative)) + " of " + std::to_string(areas.size()) +
+          " sampled cells folded or degenerate): they do not span a tangent plane";
+    return std::nullopt;
+  }
   TangentStencils out;
   out.eigenvalue = lambda[0];
   out.second_eigenvalue = lambda[1];

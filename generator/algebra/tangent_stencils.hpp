@@ -53,8 +53,15 @@ std::optional<TangentStencils> tangent_stencils(const std::vector<std::vector<Re
 // end_u, end_v: value stencils at two points of the patch whose images under
 // the characteristic map turn counter-clockwise by less than pi (the far end of
 // the u edge and the opposite corner), so that t_u.P x t_v.P points as du x dv.
+// `grid`: the value stencils at the nodes (i/g, j/g) of the patch, j-major: the
+// characteristic map c = W R sampled there must be regular (every cell turned
+// the same way), else its two components do not span the tangent plane (one
+// may be a function of the other, as for an eigenvalue that is the square of
+// the other one).
 std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::vector<Real>>& a0,
                                                          const std::vector<Real>& end_u, const std::vector<Real>& end_v,
-                                                         const std::vector<Real>& boundary_tangent, std::string& why);
+                                                         const std::vector<Real>& boundary_tangent,
+                                                         const std::vector<std::vector<double>>& grid, long g,
+                                                         std::string& why);
 
 }  // namespace sg

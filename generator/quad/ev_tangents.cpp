@@ -40,7 +40,8 @@ std::optional<EvTangents> sector_tangents(const QuadScheme& scheme, const Bounda
     why = "a corner has no tangent plane";
     return std::nullopt;
   }
-  const PatchGrid values = solve_patch_recursion(subdivision, limit, 1, solve_by_residues(scheme.curve, 1));
+  constexpr long kSamples = 8;  // the characteristic map's regularity is checked on this grid
+  const PatchGrid values = solve_patch_recursion(subdivision, limit, kSamples, solve_by_residues(scheme.curve, kSamples));
   auto at = [&](long i, long j) {
     std::vector<Real> w;
     for (const Rational& x : values.at(i, j)) w.push_back(to_real(x));
@@ -51,7 +52,12 @@ std::optional<EvTangents> sector_tangents(const QuadScheme& scheme, const Bounda
   std::vector<Real> boundary(subdivision.points, Real(0));
   boundary[layout.edge(sector.faces)] = 1;
   boundary[layout.edge(0)] = -1;
-  return boundary_tangent_stencils(real_matrix(subdivision), at(1, 0), at(1, 1), boundary, why);
+  std::vector<std::vector<double>> grid;
+  for (const auto& w : values.stencils) {
+    grid.emplace_back();
+    for (const Rational& x : w) grid.back().push_back(to_double(x));
+  }
+  return boundary_tangent_stencils(real_matrix(subdivision), at(kSamples, 0), at(kSamples, kSamples), boundary, grid, kSamples, why);
 }
 
 }  // namespace sg
