@@ -227,8 +227,9 @@ std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::
   if (size == 0) throw Error("internal: boundary_tangent_stencils: no boundary tangent");
   if (off > size * Real("1e-40")) {
     why = "the two largest eigenvalues of A0 below 1 (" + describe(s1) + ", " + describe(s2) +
-          ") have eigenvectors that do not contain the boundary curve's tangent: from inside the surface approaches the "
-          "vertex along other directions than along its boundary, so it has no tangent plane there (not C1)";
+          ") have eigenvectors that do not contain the boundary curve's tangent (1/2): Reif's condition fails there, the "
+          "surface approaches the vertex along other directions from inside than along its boundary, and the spectrum "
+          "gives no tangent plane";
     return std::nullopt;
   }
   r = r * (l.transpose() * r).inverse();  // biorthogonal: L^T R = I

@@ -1,4 +1,5 @@
 // stencilgen analyze --scheme S [--valence V]: the smoothness analysis of a surface scheme per valence.
+#include <algorithm>
 #include <functional>
 #include <iostream>
 
@@ -51,8 +52,22 @@ int analyze(const std::string& scheme_spec, const std::string& valence_spec, con
   }
   const QuadScheme scheme = load_quad_scheme(scheme_spec, params);
   check_valences(valences, scheme.min_valence, scheme.max_valence, scheme.source);
-  return print_reports("smoothness analysis of '" + scheme.name + "' (" + scheme.source + ")", valences,
-                       [&](int v) { return analyse_quad_valence(scheme, v, samples); });
+  const int interior = print_reports("smoothness analysis of '" + scheme.name + "' (" + scheme.source + ")", valences,
+                                     [&](int v) { return analyse_quad_valence(scheme, v, samples); });
+  // Boundary vertices in 1..max faces (the sectors stencilgen writes with these valences). Informational: the
+  // boundary rules are OpenSubdiv's, whatever their spectrum, so they do not change the exit code.
+  std::cout << "boundary vertices (the boundary curve's rules along the boundary; informational):\n";
+  int without = 0;
+  for (int k = 1; k <= *std::max_element(valences.begin(), valences.end()); ++k) {
+    if (k == 2) continue;  // the regular boundary
+    bool ok = false;
+    std::cout << "  " << analyse_quad_boundary(scheme, k, ok);
+    without += ok ? 0 : 1;
+  }
+  std::cout << (without == 0 ? "a tangent plane at every boundary vertex\n"
+                             : std::to_string(without) + " boundary configuration(s) without a tangent plane at the vertex "
+                               "(no normal there; the surface round it is evaluated exactly all the same)\n");
+  return interior;
 }
 
 }  // namespace sg::cli

@@ -8,6 +8,8 @@
 #include "base/error.hpp"
 #include "quad/ev_patch_solver.hpp"
 #include "quad/patch_subdivision.hpp"
+#include "quad/quad_descent.hpp"
+#include <cstdio>
 
 namespace sg {
 
@@ -131,6 +133,32 @@ SmoothnessReport analyse_quad_valence(const QuadScheme& scheme, int v, long samp
   r.winding = angle / (2 * std::numbers::pi);
   r.map_injective = r.map_regular && std::abs(std::abs(r.winding) - 1) < 1e-6;
   return r;
+}
+
+std::string analyse_quad_boundary(const QuadScheme& scheme, int faces, bool& ok) {
+  std::vector<BoundarySector> sectors;
+  for (int p = 0; p < faces; ++p) sectors.push_back({false, faces, p});
+  const QuadDescent d = quad_descent(scheme, {}, sectors);
+  // The spectrum of the one ring (2k+2 points, the same for every face).
+  const std::size_t ring = static_cast<std::size_t>(2 * faces + 2);
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(static_cast<long>(ring), static_cast<long>(ring));
+  for (std::size_t r = 0; r < ring; ++r)
+    for (const auto& [c, w] : d.sectors.front().subdivision.extraordinary_child[r]) a(static_cast<long>(r), static_cast<long>(c)) += to_double(w);
+  Eigen::EigenSolver<Eigen::MatrixXd> eig(a, false);
+  std::vector<std::complex<double>> ev(eig.eigenvalues().data(), eig.eigenvalues().data() + eig.eigenvalues().size());
+  std::sort(ev.begin(), ev.end(), [](const auto& x, const auto& y) { return std::abs(x) > std::abs(y); });
+  std::string out = "boundary vertex in " + std::to_string(faces) + " face" + (faces == 1 ? "" : "s") + ": eigenvalues";
+  for (std::size_t k = 0; k < std::min<std::size_t>(5, ev.size()); ++k) {
+    char buf[64];
+    if (std::abs(ev[k].imag()) > 1e-9) std::snprintf(buf, sizeof buf, " %.6f%+.6fi", ev[k].real(), ev[k].imag());
+    else std::snprintf(buf, sizeof buf, " %.6f", ev[k].real());
+    out += buf;
+  }
+  ok = std::all_of(d.sectors.begin(), d.sectors.end(), [](const QuadDescent::Sector& s) { return s.tangents.has_value(); });
+  if (ok) return out + "; tangent plane: yes (the boundary curve's tangent and the first direction across it)\n";
+  for (const QuadDescent::Sector& s : d.sectors)
+    if (!s.tangents) return out + "; tangent plane: NO (" + s.sector.name() + ": " + s.no_tangents + ")\n";
+  return out + "\n";
 }
 
 }  // namespace sg

@@ -577,9 +577,10 @@ Point QuadFamily::normal_any(std::size_t face, P u, P v, const Point* prepared) 
   if (d.tangent_u.size() != points.size() && is_sector_kind(valence)) {
     const SectorKey s = sector_of(valence);
     throw EvaluationError(s.corner ? "a corner has no tangent plane, so there is no normal at it"
-                                   : "the limit surface has no tangent plane at a boundary vertex in " + std::to_string(s.faces) + " face" +
-                                         (s.faces == 1 ? "" : "s") + " under this scheme's boundary rules (not C1 there: `stencilgen "
-                                         "analyze` shows the spectrum), so there is no normal at it");
+                                   : "this scheme's boundary rules give no tangent plane at a boundary vertex in " +
+                                         std::to_string(s.faces) + " face" + (s.faces == 1 ? "" : "s") +
+                                         " (Reif's condition fails there: `stencilgen analyze` shows the spectrum), so there is "
+                                         "no normal at it; the surface round it evaluates as anywhere else");
   }
   if (d.tangent_u.size() != points.size())
     throw EvaluationError("the tables hold no tangent stencils at valence " + std::to_string(valence) +
