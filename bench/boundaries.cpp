@@ -3,9 +3,11 @@
 // same size). Two pairs of meshes: an open tube
 // against the closed torus of the same grid (256 x 224 quads, all regular,
 // equal face counts),
-// and the cube refined to 49,152 faces against the cube without its top face
+// the cube refined to 49,152 faces against the cube without its top face
 // refined alike (40,960 faces, a boundary loop with extraordinary vertices
-// next to it; throughput, not time, is compared). Uniform rates 8
+// next to it; throughput, not time, is compared), and the cube without two
+// adjacent faces (boundary vertices in one and in three faces: boundary
+// sectors) against the cube. Uniform rates 8
 // and 16 and a random mix 1..24, 1 and 2 threads: a whole static
 // tessellation (plan and points, as bench_tessellation) in triangles per
 // second, and the per-frame update of the prepared points (set_positions).
@@ -64,14 +66,25 @@ int run(int argc, char** argv) {
   Mesh open_box = cube;
   open_box.face_sizes.erase(open_box.face_sizes.begin());
   open_box.face_vertices.erase(open_box.face_vertices.begin(), open_box.face_vertices.begin() + 4);
+  // Without two adjacent faces: the two vertices of their common edge are in one face each, and four more
+  // rim vertices in three (boundary sectors: patches of their own, not regular ones with phantom points).
+  Mesh notched = open_box;
+  notched.face_sizes.erase(notched.face_sizes.begin());
+  notched.face_vertices.erase(notched.face_vertices.begin(), notched.face_vertices.begin() + 4);
   while (cube.face_count() < 40000) cube = subdivide(*tables, cube);
   while (open_box.face_count() < 40000) open_box = subdivide(*tables, open_box);
+  Mesh notched_closed = read_obj(std::string(STENCIL_SOURCE_DIR) + "/meshes/cube.obj");
+  // The notched box refined by one step first, so that its sector vertices are not all that is there: then alike.
+  notched = subdivide(*tables, notched);
+  while (notched.face_count() < 30000) notched = subdivide(*tables, notched);
+  while (notched_closed.face_count() < 30000) notched_closed = subdivide(*tables, notched_closed);
   struct Pair {
     const char* name;
     Mesh closed, open;
   };
   const Pair pairs[] = {{"torus / tube 256x224", ring_grid(256, 224, true), ring_grid(256, 224, false)},
-                        {"cube / open box", cube, open_box}};
+                        {"cube / open box", cube, open_box},
+                        {"cube / box without two faces", notched_closed, notched}};
   std::printf("| meshes | mesh | faces | rate | threads | triangles | ours (M tri/s) | ours / closed | Bfr (M tri/s) | Bfr / closed | positions update (ms) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Pair& pair : pairs) {
