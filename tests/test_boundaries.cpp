@@ -468,7 +468,7 @@ TEST_CASE("boundaries the tables or the runtime have no patches for are refused,
   const auto tables = tables_for("catmull-clark");
   // Tables of valences up to 8 hold the boundary sectors of up to 8 faces: a vertex in 9 asks for more.
   CHECK_THROWS_WITH(boundary_surface(tables, boundary_fan(9, 1), false),
-                    Catch::Contains("vertex 0 is on the boundary in 9 faces") &&
+                    Catch::Contains("vertex 0 is on a boundary or crease in 9 faces") &&
                         Catch::Contains("stencilgen --scheme catmull-clark --valence 3,5-9 --n 1-8"));
   MeshFeatures none;
   none.boundary = BoundaryInterpolation::None;

@@ -255,6 +255,120 @@ TEST_CASE("corners: vertex sharpness and three sharp edges at a vertex equal Ope
   }
 }
 
+TEST_CASE("infinitely sharp creases and corners (sharpness >= 10) on quad meshes equal OpenSubdiv's, semi-sharp ones "
+          "beside them too",
+          "[runtime][creases][sharp][opensubdiv]") {
+  const auto tables = catmull_clark();
+  const Mesh cube = load("cube");
+  const Mesh chess = load("chess-piece");
+  const std::vector<int> top(cube.face_vertices.begin(), cube.face_vertices.begin() + 4);
+  struct Case {
+    std::string name;
+    Mesh mesh;
+    Features f;
+  };
+  std::vector<Case> cases;
+  {  // every edge: each vertex on three sharp edges, a corner; every face a patch of its own
+    Case c{"cube, every edge infinitely sharp", cube, {}};
+    for (const auto& [a, b] : edges_of(cube)) c.f.crease(a, b, 10);
+    cases.push_back(c);
+  }
+  {  // a loop round the top face: its vertices on two sharp edges, in one face above and two below
+    Case c{"cube, a sharp loop round a face", cube, {}};
+    for (std::size_t k = 0; k < 4; ++k) c.f.crease(top[k], top[(k + 1) % 4], 10);
+    cases.push_back(c);
+  }
+  {  // the loop, with a corner tag on one of its vertices and a semi-sharp edge leaving another
+    Case c{"cube, a sharp loop, a sharp corner and a semi-sharp edge of 1.5 at its vertices", cube, {}};
+    for (std::size_t k = 0; k < 4; ++k) c.f.crease(top[k], top[(k + 1) % 4], 12.5f);
+    c.f.corner(top[0], 10);
+    for (const auto& [a, b] : edges_of(cube))
+      if ((a == top[2]) != (b == top[2]) && std::find(top.begin(), top.end(), a + b - top[2]) == top.end()) c.f.crease(a, b, 1.5f);
+    cases.push_back(c);
+  }
+  {  // three sharp edges at vertex 0, continued to the opposite corner: no dart
+    Case c{"cube, sharp paths from vertex 0 to the opposite corner", cube, {}};
+    const auto e = edges_of(cube);
+    std::set<int> on;
+    for (const auto& [a, b] : e)
+      if (a == 0 || b == 0) on.insert(a + b);
+    for (const auto& [a, b] : e)
+      if (a == 0 || b == 0 || (on.count(a) + on.count(b) == 1 && a != 0 && b != 0)) c.f.crease(a, b, 10);
+    cases.push_back(c);
+  }
+  {  // the chess piece: every edge of its first face's vertex ring... its first face's edges, a sharp loop
+    Case c{"chess piece, a sharp loop round a face with extraordinary corners", chess, {}};
+    const std::vector<int> ring(chess.face_vertices.begin(), chess.face_vertices.begin() + chess.face_sizes[0]);
+    for (std::size_t k = 0; k < ring.size(); ++k) c.f.crease(ring[k], ring[(k + 1) % ring.size()], 10);
+    cases.push_back(c);
+  }
+  {  // an open grid: a sharp line across it, boundary to boundary, and a sharp corner on its boundary in two faces
+    Mesh grid = test_meshes::open_grid(4, 3);
+    Case c{"open grid, a sharp line across and a sharp boundary corner", grid, {}};
+    for (int i = 0; i < 4; ++i) c.f.crease(1 * 5 + i, 1 * 5 + i + 1, 10);  // row j = 1, vertices (i, 1)
+    c.f.corner(2, 10);                                                   // (2, 0): on the boundary in two faces
+    cases.push_back(c);
+  }
+  for (const Case& c : cases) {
+    INFO(c.name);
+    const double worst = bfr_difference(tables, c.mesh, c.f);
+    CHECK(worst < 1e-10);
+    WARN(c.name << ": largest difference to Bfr over the mesh size " << worst);
+  }
+}
+
+TEST_CASE("infinitely sharp creases: tessellations stay closed across them, and what has no patches yet is refused",
+          "[runtime][creases][sharp]") {
+  const Mesh cube = load("cube");
+  const std::vector<int> top(cube.face_vertices.begin(), cube.face_vertices.begin() + 4);
+  std::mt19937 rng(5);
+  for (const char* scheme : {"nonpoly", "catmull-clark"}) {
+    const auto tables = Tables::load(generated_table(scheme, "--valence 3-8 --n 1-8", "sgs").string());
+    Features loop;
+    for (std::size_t k = 0; k < 4; ++k) loop.crease(top[k], top[(k + 1) % 4], 10);
+    const Surface surface = surface_with(tables, cube, loop);
+    for (int trial = 0; trial < 4; ++trial) {
+      std::vector<int> rates(cube.face_count());
+      for (int& r : rates) r = std::uniform_int_distribution<int>(1, 8)(rng);
+      INFO(scheme << ", trial " << trial);
+      const PolygonSoup soup = tessellate(surface, rates);
+      CHECK(tessellation_defect(soup, 2).empty());  // closed, oriented, V - E + F = 2
+    }
+    // Positions agree across every edge, the sharp ones included.
+    double worst = 0;
+    for (std::size_t f = 0; f < cube.face_count(); ++f)
+      for (std::size_t g = 0; g < cube.face_count(); ++g) {
+        if (f == g) continue;
+        for (int a = 0; a < 4; ++a)
+          for (int b = 0; b < 4; ++b) {
+            const int fa = cube.face_vertices[4 * f + static_cast<std::size_t>(a)], fb = cube.face_vertices[4 * f + static_cast<std::size_t>((a + 1) % 4)];
+            if (cube.face_vertices[4 * g + static_cast<std::size_t>(b)] != fb || cube.face_vertices[4 * g + static_cast<std::size_t>((b + 1) % 4)] != fa) continue;
+            for (long t = 0; t <= 8; ++t) {
+              // Along edge a -> a+1 of f and b -> b+1 of g (reversed), in each face's own (u, v).
+              auto at = [&](int corner, long k) -> ExactParameter {
+                const Fraction s = Fraction::make(k, 8), one = Fraction::make(1, 1), zero = Fraction::make(0, 1);
+                switch (corner) {
+                  case 0: return {s, zero};
+                  case 1: return {one, s};
+                  case 2: return {subtract(one, s), one};
+                  default: return {zero, subtract(one, s)};
+                }
+              };
+              worst = std::max(worst, distance(surface.evaluate(f, at(a, t)), surface.evaluate(g, at(b, 8 - t))));
+            }
+          }
+      }
+    CHECK(worst < 1e-13);
+  }
+  const auto tables = catmull_clark();
+  Features dart;  // one sharp edge inside the mesh: both its ends are darts
+  dart.crease(edges_of(cube)[0].first, edges_of(cube)[0].second, 10);
+  CHECK_THROWS_WITH(surface_with(tables, cube, dart), Catch::Contains("a dart") && Catch::Contains("sharpness below 10"));
+  Features cone;  // a sharp vertex with no sharp edge
+  cone.corner(3, 10);
+  CHECK_THROWS_WITH(surface_with(tables, cube, cone), Catch::Contains("vertex 3 is infinitely sharp inside the mesh"));
+}
+
 TEST_CASE("random creases and corners on the chess piece and on a mesh with triangles equal OpenSubdiv's, both methods",
           "[runtime][creases][opensubdiv]") {
   const auto tables = catmull_clark();

@@ -40,7 +40,7 @@ std::vector<BoundarySector> sectors_for(const std::vector<int>& valences, const 
   if (faces < largest && progress)
     progress("note: boundary vertices in more than " + std::to_string(faces) + " faces get no patches at rate " +
              std::to_string(rate) + " (their stencils would exceed the runtime's expansion limit)");
-  return boundary_sectors(faces);
+  return boundary_sectors(faces, true);  // corners too: for sharp corners and crease ends of three or more sharp edges
 }
 
 }  // namespace

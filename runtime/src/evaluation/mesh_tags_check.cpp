@@ -1,12 +1,15 @@
 // SurfaceTopology::create from a Mesh: its OBJ tags become the features the
-// runtime honours (holes, semi-sharp creases and corners, the crease method,
-// smooth triangles), and a tag it cannot honour yet is an error naming its
-// line instead of a silently different surface.
+// runtime honours (holes, creases and corners, infinitely sharp ones for quad
+// schemes, the crease method, smooth triangles), and a tag it cannot honour
+// yet is an error naming its line instead of a silently different surface.
 #include <algorithm>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 
 #include "stencil_runtime/surface_topology.hpp"
+#include "mesh/polygon_links.hpp"
 #include "tables/quad_tables.hpp"
 
 namespace stencil_runtime {
@@ -35,15 +38,53 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   MeshFeatures features;
   features.chaikin = tags.chaikin_creases;
   features.boundary = tags.boundary;
+  // Infinitely sharp features are boundaries of the cut mesh for quad schemes (family/sharp_cut.hpp); not yet for triangle ones.
+  const bool triangles_only = tables->family() != SchemeFamily::Quad;
   for (const auto& c : tags.creases) {
     const std::string edge = "the edge " + std::to_string(c.a) + "-" + std::to_string(c.b);
-    if (c.sharpness >= kInfinite) refuse(mesh, c.line, "an infinitely sharp crease (sharpness " + number(c.sharpness) + " >= 10) on " + edge);
+    if (c.sharpness >= kInfinite && triangles_only)
+      refuse(mesh, c.line, "an infinitely sharp crease (sharpness " + number(c.sharpness) + " >= 10) on " + edge + " of a triangle scheme");
     features.edges.push_back({c.a, c.b, c.sharpness});
   }
   for (const auto& c : tags.corners) {
     const std::string vertex = "vertex " + std::to_string(c.vertex);
-    if (c.sharpness >= kInfinite) refuse(mesh, c.line, "an infinitely sharp corner (sharpness " + number(c.sharpness) + " >= 10) at " + vertex);
+    if (c.sharpness >= kInfinite && triangles_only)
+      refuse(mesh, c.line, "an infinitely sharp corner (sharpness " + number(c.sharpness) + " >= 10) at " + vertex + " of a triangle scheme");
     features.vertices.push_back({c.vertex, c.sharpness});
+  }
+  // A dart (an infinitely sharp crease ending inside the mesh) has no patches yet: named with its tag's line.
+  if (!triangles_only) {
+    std::map<int, std::vector<const MeshTags::Crease*>> sharp_at;
+    for (const auto& c : tags.creases)
+      if (c.sharpness >= kInfinite) sharp_at[c.a].push_back(&c), sharp_at[c.b].push_back(&c);
+    bool sharp_corner = false;
+    for (const auto& c : tags.corners) sharp_corner |= c.sharpness >= kInfinite;
+    if (!sharp_at.empty() || sharp_corner) {
+      Connectivity connectivity{mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices};
+      PolygonLinks links;
+      try {
+        links = link_polygons(connectivity, true);
+      } catch (const MeshError&) {  // create() names what is wrong with the mesh itself
+      }
+      for (const auto& [v, creases] : sharp_at) {
+        std::set<std::pair<int, int>> edges;
+        for (const auto* c : creases) edges.insert({std::min(c->a, c->b), std::max(c->a, c->b)});
+        const bool inside = static_cast<std::size_t>(v) < links.boundary.size() && !links.boundary[static_cast<std::size_t>(v)];
+        if (inside && edges.size() == 1)
+          refuse(mesh, creases.front()->line, "an infinitely sharp crease that ends inside the mesh at vertex " + std::to_string(v) +
+                                                  " (a dart)");
+      }
+      for (const auto& c : tags.corners) {
+        const std::size_t v = static_cast<std::size_t>(c.vertex);
+        const auto it = sharp_at.find(c.vertex);
+        std::set<std::pair<int, int>> edges;
+        if (it != sharp_at.end())
+          for (const auto* e : it->second) edges.insert({std::min(e->a, e->b), std::max(e->a, e->b)});
+        if (c.sharpness >= kInfinite && v < links.boundary.size() && !links.boundary[v] && edges.size() < 2)
+          refuse(mesh, c.line, "an infinitely sharp corner (sharpness " + number(c.sharpness) + " >= 10) at vertex " + std::to_string(c.vertex) +
+                                   " inside the mesh on fewer than two infinitely sharp edges (a cone point)");
+      }
+    }
   }
   // Smooth triangles change Catmull-Clark's first step only (Loop ignores the tag, as OpenSubdiv).
   const bool triangles = std::find(mesh.face_sizes.begin(), mesh.face_sizes.end(), 3) != mesh.face_sizes.end();

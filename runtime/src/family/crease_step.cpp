@@ -136,7 +136,9 @@ LevelSharpness sharpen_step(const Connectivity& parent, const LevelSharpness& sh
       if (!on_boundary[v][i]) next.set_edge(vi, edge_points[v][i], cs[i]);
     }
     const float cv = decayed_sharpness(pv);
-    if (pv < kInfiniteSharpness) next.set_vertex(vi, cv);
+    // An infinitely sharp tag stays; a boundary corner is made again at each level.
+    if (tagged >= kInfiniteSharpness) next.set_vertex(vi, kInfiniteSharpness);
+    else if (pv < kInfiniteSharpness) next.set_vertex(vi, cv);
     const CreaseRule p_rule = crease_rule(pv, ps.data(), n), c_rule = crease_rule(cv, cs.data(), n);
     if (p_rule == CreaseRule::Smooth || p_rule == CreaseRule::Dart) continue;
     const auto u = static_cast<std::uint32_t>(v);

@@ -11,21 +11,22 @@ namespace stencil_runtime {
 
 namespace {
 
-float checked(double s, const std::string& what) {
+// A sharpness of 10 or more is infinite (OpenSubdiv's SHARPNESS_INFINITE), kept as 10.
+float checked(double s, const std::string& what, bool infinite_allowed) {
   if (!std::isfinite(s) || s < 0)
     throw MeshError(what + " has sharpness " + std::to_string(s) + "; a sharpness is a finite number >= 0");
-  if (s >= kInfiniteSharpness)
+  if (s >= kInfiniteSharpness && !infinite_allowed)
     throw MeshError(what + " has sharpness " + std::to_string(s) +
-                    ", which OpenSubdiv treats as infinitely sharp (>= 10); infinitely sharp creases and corners need "
-                    "crease tables, which stencilgen does not make yet: give it a finite sharpness below 10");
-  return static_cast<float>(s);
+                    ", which OpenSubdiv treats as infinitely sharp (>= 10); infinitely sharp creases and corners are made "
+                    "for quad schemes only so far: give it a finite sharpness below 10");
+  return std::min(static_cast<float>(s), kInfiniteSharpness);
 }
 
 bool semi_sharp(float s) { return s > 0 && s < kInfiniteSharpness; }
 
 }  // namespace
 
-LevelSharpness LevelSharpness::of(const Connectivity& mesh, const MeshFeatures& features) {
+LevelSharpness LevelSharpness::of(const Connectivity& mesh, const MeshFeatures& features, bool infinite_allowed) {
   LevelSharpness out;
   out.chaikin_ = features.chaikin;
   if (features.edges.empty() && features.vertices.empty()) return out;  // the common case: nothing to look up
@@ -40,7 +41,7 @@ LevelSharpness LevelSharpness::of(const Connectivity& mesh, const MeshFeatures& 
   for (const auto& e : features.edges) {
     const std::string what = "the crease on the edge " + std::to_string(e.a) + "-" + std::to_string(e.b);
     if (!edges.count(key(e.a, e.b))) throw MeshError(what + " names no edge of the mesh");
-    const float s = checked(e.sharpness, what);
+    const float s = checked(e.sharpness, what, infinite_allowed);
     if (s > 0) out.edges_[key(e.a, e.b)] = s;
     else out.edges_.erase(key(e.a, e.b));
   }
@@ -48,7 +49,7 @@ LevelSharpness LevelSharpness::of(const Connectivity& mesh, const MeshFeatures& 
     const std::string what = "the corner at vertex " + std::to_string(v.vertex);
     if (v.vertex < 0 || static_cast<std::size_t>(v.vertex) >= mesh.vertex_count)
       throw MeshError(what + " names no vertex (the mesh has " + std::to_string(mesh.vertex_count) + ")");
-    const float s = checked(v.sharpness, what);
+    const float s = checked(v.sharpness, what, infinite_allowed);
     if (s > 0) out.vertices_[v.vertex] = s;
     else out.vertices_.erase(v.vertex);
   }
@@ -67,9 +68,19 @@ float LevelSharpness::vertex(int v) const {
 
 float LevelSharpness::max() const {
   float m = 0;
-  for (const auto& [e, s] : edges_) m = std::max(m, s);
-  for (const auto& [v, s] : vertices_) m = std::max(m, s);
+  for (const auto& [e, s] : edges_)
+    if (semi_sharp(s)) m = std::max(m, s);
+  for (const auto& [v, s] : vertices_)
+    if (semi_sharp(s)) m = std::max(m, s);
   return m;
+}
+
+bool LevelSharpness::infinite() const {
+  for (const auto& [e, s] : edges_)
+    if (!semi_sharp(s)) return true;
+  for (const auto& [v, s] : vertices_)
+    if (!semi_sharp(s)) return true;
+  return false;
 }
 
 void LevelSharpness::set_edge(int a, int b, float s) {

@@ -24,15 +24,19 @@ class LevelSharpness {
   LevelSharpness() = default;
   // The features on `mesh` (closed, already linked). Throws MeshError for an
   // edge that is not an edge of the mesh, a vertex that does not exist, a
-  // sharpness that is negative or not finite, and (until the crease tables
-  // exist) an infinitely sharp one. A feature given twice takes its last value.
-  static LevelSharpness of(const Connectivity& mesh, const MeshFeatures& features);
+  // sharpness that is negative or not finite, and, unless `infinite_allowed`,
+  // an infinitely sharp one (>= 10, kept as 10). A feature given twice takes
+  // its last value.
+  static LevelSharpness of(const Connectivity& mesh, const MeshFeatures& features, bool infinite_allowed = false);
 
   bool chaikin() const { return chaikin_; }
   bool smooth() const { return edges_.empty() && vertices_.empty(); }
+  // Whether a semi-sharp feature is left (infinitely sharp ones never decay).
+  bool has_semi_sharp() const { return max() > 0; }
+  bool infinite() const;  // whether an infinitely sharp feature is there
   float edge(int a, int b) const;
   float vertex(int v) const;
-  float max() const;  // the largest sharpness left (0 when smooth)
+  float max() const;  // the largest semi-sharp sharpness left (0 when none)
 
   void set_edge(int a, int b, float s);  // ignored unless s > 0
   void set_vertex(int v, float s);       // ignored unless s > 0

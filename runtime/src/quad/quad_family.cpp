@@ -7,6 +7,7 @@
 #include "family/parameter_ops.hpp"
 #include "mesh/polygon_links.hpp"
 #include "quad_creases.hpp"
+#include "family/sharp_cut.hpp"
 #include "quad_refinement.hpp"
 
 namespace stencil_runtime {
@@ -19,9 +20,9 @@ struct QuadFamily::Prepared {
   int crease_steps = 0;  // of the steps, those that still had sharp features
   int steps = 0;
   Connectivity mesh;  // the prepared mesh
-  bool boundary = false, corners = false;
+  bool boundary = false;
   bool no_boundary_surface = false;  // `none`: faces at boundary vertices have no surface (holes), hence no patch
-  std::vector<QuadPatch> boundary_patches;  // by face, valid where the face is on the boundary
+  std::vector<QuadPatch> patches;  // by prepared face
 };
 
 namespace {
@@ -33,22 +34,24 @@ bool touches_boundary(const QuadTopology& topo, std::size_t f) {
 }
 
 // The corner of face f at a boundary vertex with a sector patch (sector_vertex), or -1.
-int sector_corner(const QuadTopology& topo, std::size_t f, bool corners) {
+int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<char>& corner) {
   for (int c = 0; c < 4; ++c)
-    if (sector_vertex(topo, topo.vertex(f, c), corners)) return c;
+    if (sector_vertex(topo, topo.vertex(f, c), corner)) return c;
   return -1;
 }
 
 // Whether every face has a patch: at most one extraordinary corner; a face at
-// a boundary vertex in other than two faces its sector's patch; any other
-// face touching the boundary one of the regular boundary patches (with
-// `none`, faces touching the boundary have no surface, hence no patch).
-bool isolated(const QuadTopology& topo, bool corners, bool no_boundary_surface) {
+// a boundary vertex in other than two faces (or a corner) its sector's patch;
+// any other face touching the boundary one of the regular boundary patches
+// (with `none`, faces touching the boundary have no surface, hence no patch).
+// `topo` is the mesh cut along its infinitely sharp edges (sharp_cut.hpp), whose
+// boundaries are the mesh's and its creases, `corner` its vertices that stay put.
+bool isolated(const QuadTopology& topo, const std::vector<char>& corner, bool no_boundary_surface) {
   for (std::size_t f = 0; f < topo.faces(); ++f) {
     if (topo.has_boundary() && touches_boundary(topo, f)) {
       if (no_boundary_surface) continue;
-      const int c = sector_corner(topo, f, corners);
-      if (c >= 0 ? !sector_patch_ready(topo, f, c) : !boundary_patch_ready(topo, f, corners)) return false;
+      const int c = sector_corner(topo, f, corner);
+      if (c >= 0 ? !sector_patch_ready(topo, f, c, corner) : !boundary_patch_ready(topo, f, corner)) return false;
       continue;
     }
     int extraordinary = 0;
@@ -58,26 +61,54 @@ bool isolated(const QuadTopology& topo, bool corners, bool no_boundary_surface) 
   return true;
 }
 
-// Boundary vertices in other than two faces (and not a corner in one) need
-// their sector's patches in the tables (steps keep a vertex's number of faces,
-// so this is checked once on the input). Their number of faces goes into the
-// valence check: stencilgen writes sectors for up to as many faces as the
-// largest valence it is given.
-void check_boundary_vertices(const PolygonLinks& links, const MeshFeatures& features, const QuadTables& tables,
-                             ValenceCheck& valences) {
-  if (features.boundary == BoundaryInterpolation::None) return;  // no surface at boundary vertices: any will do
-  const bool corners = features.boundary == BoundaryInterpolation::EdgeAndCorner;
-  for (std::size_t v = 0; v < links.boundary.size(); ++v) {
-    if (!links.boundary[v]) continue;
+// The vertices of the input mesh, cut along its infinitely sharp edges: inside
+// ones need their valence in the tables; those on a boundary or crease in
+// other than two faces (or a corner in more than one) their sector's patches
+// (steps keep a vertex's number of faces, so this is checked once on the
+// input). stencilgen writes sectors for up to as many faces as the largest
+// valence it is given.
+void check_vertices(const SharpCut& cut, const PolygonLinks& links, bool no_boundary_surface, const QuadTables& tables,
+                    ValenceCheck& valences) {
+  for (std::size_t v = 0; v < cut.mesh.vertex_count; ++v) {
     const int k = links.valence[v];
-    if (k == 2 || (k == 1 && corners)) continue;
+    const std::string who = "vertex " + std::to_string(cut.origin[v]);
+    if (!links.boundary[v]) {
+      valences.add_lazy(k, [&] { return who; });
+      continue;
+    }
+    if (no_boundary_surface) continue;  // no surface at boundary vertices: any will do
+    const bool corner = cut.corner[v] != 0;
+    if ((k == 2 && !corner) || (k == 1 && corner)) continue;  // regular boundary patches
     if (k > limits::kMaxValence)
-      throw MeshError("vertex " + std::to_string(v) + " is on the boundary in " + std::to_string(k) +
-                      " faces; the runtime supports up to " + std::to_string(limits::kMaxValence));
-    if (!tables.has_sector({false, k, 0}))
-      valences.add_boundary(k, "vertex " + std::to_string(v) + " is on the boundary in " + std::to_string(k) + " face" +
-                                   (k == 1 ? "" : "s") + " (tables cover boundary vertices in up to as many faces as their largest valence)");
+      throw MeshError(who + " is on a boundary or crease in " + std::to_string(k) + " faces; the runtime supports up to " +
+                      std::to_string(limits::kMaxValence));
+    if (!tables.has_sector({corner, k, 0}))
+      valences.add_boundary(k, who + " is " + (corner ? "a corner" : "on a boundary or crease") + " in " + std::to_string(k) + " face" +
+                                   (k == 1 ? "" : "s") + " (tables cover those in up to as many faces as their largest valence)");
   }
+}
+
+// The whole-mesh step's topology cut along the infinitely sharp edges (the
+// mesh itself where there are none), with its corners.
+SharpCut cut_of(const Connectivity& mesh, const LevelSharpness& sharpness, bool edge_and_corner) {
+  return cut_along_sharp_edges(mesh, link_polygons(mesh, true), sharpness, edge_and_corner);
+}
+
+// A step that keeps every vertex and appends `extra` rows over them.
+RefinementStep appended(std::size_t vertices, const std::vector<std::vector<std::pair<int, double>>>& extra) {
+  RefinementStep step;
+  step.input_vertices = vertices;
+  SparseEntries row;
+  for (std::size_t v = 0; v < vertices; ++v) {
+    row.assign(1, {static_cast<std::uint32_t>(v), 1.0});
+    step.add_row(row);
+  }
+  for (const auto& p : extra) {
+    row.clear();
+    for (const auto& [v, w] : p) row.emplace_back(static_cast<std::uint32_t>(v), w);
+    step.add_row(row);
+  }
+  return step;
 }
 
 // Child c of a face split into quadrants (subdivide_quads) and the parameter
@@ -114,20 +145,23 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   out.hierarchy.original_faces = mesh.face_count();
   out.original_sizes = mesh.face_sizes;
   const PolygonLinks links = link_polygons(mesh, true);  // a manifold (names the face, edge or vertex)
+  const bool edge_and_corner = features.boundary == BoundaryInterpolation::EdgeAndCorner;
+  out.boundary = links.has_boundary;
+  out.no_boundary_surface = links.has_boundary && features.boundary == BoundaryInterpolation::None;
+  LevelSharpness sharpness = LevelSharpness::of(mesh, features, true);
+  if (sharpness.infinite() && features.boundary == BoundaryInterpolation::None && links.has_boundary)
+    throw MeshError("boundary interpolation `none` together with infinitely sharp creases or corners is not supported yet");
   BoundaryRules boundary;
   ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 4);
+  {
+    const SharpCut input = cut_along_sharp_edges(mesh, links, sharpness, edge_and_corner);  // darts are refused here
+    check_vertices(input, input.cut ? link_polygons(input.mesh, true) : links, out.no_boundary_surface, t, valences);
+  }
   if (links.has_boundary) {
-    check_boundary_vertices(links, features, t, valences);
     const CurveCreaseRule crease = quad_crease_rule(t, tables.scheme());
-    boundary = {crease.centre, crease.neighbour, features.boundary == BoundaryInterpolation::EdgeAndCorner};
-    out.boundary = true;
-    out.corners = boundary.corners;
-    out.no_boundary_surface = features.boundary == BoundaryInterpolation::None;
+    boundary = {crease.centre, crease.neighbour, edge_and_corner};
   }
   const BoundaryRules* rules = links.has_boundary ? &boundary : nullptr;
-  for (std::size_t v = 0; v < mesh.vertex_count; ++v)
-    if (!links.has_boundary || !links.boundary[v])
-      valences.add_lazy(links.valence[v], [&] { return "vertex " + std::to_string(v); });
   const bool all_quads = std::all_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](int k) { return k == 4; });
   if (!all_quads) {
     if (!t.has_polygon_rules()) {
@@ -144,7 +178,6 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
         });
   }
   valences.finish();
-  LevelSharpness sharpness = LevelSharpness::of(mesh, features);
   CurveCreaseRule crease;
   if (!sharpness.smooth()) {
     crease = quad_crease_rule(t, tables.scheme());
@@ -157,7 +190,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     if (features.smooth_triangles && triangles) t.check_smooth_triangles();
     QuadStep step = subdivide_polygons(mesh, links, t, features.smooth_triangles, rules);
     if (!sharpness.smooth()) {
-      sharpness = sharpen_step(mesh, sharpness, crease, quad_step_edge_points(mesh, step.mesh), step.step, out.corners);
+      sharpness = sharpen_step(mesh, sharpness, crease, quad_step_edge_points(mesh, step.mesh), step.step, edge_and_corner);
       ++out.crease_steps;
     }
     std::vector<std::size_t> offsets(mesh.face_count() + 1, 0);
@@ -168,61 +201,58 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     out.polygon_step = true;
   }
   QuadTopology topo = all_quads ? QuadTopology(out.mesh, links) : QuadTopology(out.mesh, out.boundary);
-  // Sharp features decay by at least 1 a step: whole-mesh steps until none is
-  // left, after which every patch is stationary (smooth) again.
-  while (!sharpness.smooth()) {
+  // One whole-mesh step of the scheme's rules, with OpenSubdiv's creasing where there are sharp features.
+  auto step_once = [&] {
     QuadStep step = subdivide_quads(topo, t, rules);
-    sharpness = sharpen_step(out.mesh, sharpness, crease, quad_step_edge_points(out.mesh, step.mesh), step.step, out.corners);
+    if (!sharpness.smooth()) {
+      sharpness = sharpen_step(out.mesh, sharpness, crease, quad_step_edge_points(out.mesh, step.mesh), step.step, edge_and_corner);
+      ++out.crease_steps;
+    }
     out.hierarchy.add_uniform(4, 2);
     out.refinement.add(std::move(step.step));
     out.mesh = std::move(step.mesh);
     ++out.steps;
-    ++out.crease_steps;
     topo = QuadTopology(out.mesh, out.boundary);
-  }
+  };
+  // Semi-sharp features decay by at least 1 a step: whole-mesh steps until none
+  // is left, after which every patch is stationary again (infinitely sharp
+  // ones are boundaries of the cut mesh: sharp_cut.hpp).
+  while (sharpness.has_semi_sharp()) step_once();
   const int before_isolation = out.steps;
-  while (!isolated(topo, out.corners, out.no_boundary_surface)) {
+  SharpCut cut = cut_of(out.mesh, sharpness, edge_and_corner);
+  QuadTopology patch_topo(cut.mesh, true);
+  while (!isolated(patch_topo, cut.corner, out.no_boundary_surface)) {
     if (out.steps - before_isolation + (out.polygon_step ? 1 : 0) == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices still share faces after " + std::to_string(limits::kMaxRefinementSteps) +
                       " subdivision steps");
-    QuadStep step = subdivide_quads(topo, t, rules);
-    out.hierarchy.add_uniform(4, 2);
-    out.refinement.add(std::move(step.step));
-    out.mesh = std::move(step.mesh);
-    ++out.steps;
-    topo = QuadTopology(out.mesh, out.boundary);
+    step_once();
+    cut = cut_of(out.mesh, sharpness, edge_and_corner);
+    patch_topo = QuadTopology(cut.mesh, true);
   }
-  if (out.boundary) {
-    // The points beyond the boundary (boundary_patch_ready) become prepared
-    // points of their own: a last step keeps every vertex and appends them.
-    std::vector<std::vector<std::pair<int, double>>> phantoms;
-    out.boundary_patches.resize(topo.faces());
-    for (std::size_t f = 0; f < topo.faces(); ++f)
-      if (touches_boundary(topo, f)) {
-        const int c = sector_corner(topo, f, out.corners);
-        if (out.no_boundary_surface) out.boundary_patches[f].points.assign(16, 0);  // a hole: never evaluated
-        else if (c >= 0) out.boundary_patches[f] = gather_sector_patch(topo, f, c);
-        else out.boundary_patches[f] = gather_boundary_patch(topo, f, out.mesh.vertex_count, phantoms);
-      }
-    if (!phantoms.empty()) {  // none with `none`: its boundary faces have no patch
-      RefinementStep step;
-      step.input_vertices = out.mesh.vertex_count;
-      SparseEntries row;
-      for (std::size_t v = 0; v < out.mesh.vertex_count; ++v) {
-        row.assign(1, {static_cast<std::uint32_t>(v), 1.0});
-        step.add_row(row);
-      }
-      for (const auto& p : phantoms) {
-        row.clear();
-        for (const auto& [v, w] : p) row.emplace_back(static_cast<std::uint32_t>(v), w);
-        step.add_row(row);
-      }
-      out.refinement.add(std::move(step));
+  // The patches, on the cut mesh. Its extra vertices (copies of those on
+  // creases) and the points beyond its boundaries (boundary_patch_ready)
+  // become prepared points of their own, by steps that keep every vertex and
+  // append them.
+  if (cut.cut) {
+    std::vector<std::vector<std::pair<int, double>>> copies;
+    for (std::size_t v = out.mesh.vertex_count; v < cut.mesh.vertex_count; ++v) copies.push_back({{cut.origin[v], 1.0}});
+    out.refinement.add(appended(out.mesh.vertex_count, copies));
+  }
+  std::vector<std::vector<std::pair<int, double>>> phantoms;
+  out.patches.resize(patch_topo.faces());
+  for (std::size_t f = 0; f < patch_topo.faces(); ++f) {
+    if (!patch_topo.has_boundary() || !touches_boundary(patch_topo, f)) {
+      out.patches[f] = gather_quad_patch(patch_topo, f);
+      continue;
     }
+    const int c = sector_corner(patch_topo, f, cut.corner);
+    if (out.no_boundary_surface) out.patches[f].points.assign(16, 0);  // a hole: never evaluated
+    else if (c >= 0) out.patches[f] = gather_sector_patch(patch_topo, f, c, cut.corner);
+    else out.patches[f] = gather_boundary_patch(patch_topo, f, cut.mesh.vertex_count, phantoms);
   }
+  if (!phantoms.empty()) out.refinement.add(appended(cut.mesh.vertex_count, phantoms));  // none with `none`
   return out;
 }
-
 
 QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const MeshFeatures& sharp)
     : QuadFamily(tables, prepare(*tables, mesh, sharp)) {}
@@ -238,10 +268,7 @@ QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, Prepared prepared)
   refinement_ = std::move(prepared.refinement);
   hierarchy_ = std::move(prepared.hierarchy);
   prepared_ = std::move(prepared.mesh);
-  patches_.reserve(topology_.faces());
-  for (std::size_t f = 0; f < topology_.faces(); ++f)
-    patches_.push_back(prepared.boundary && touches_boundary(topology_, f) ? std::move(prepared.boundary_patches[f])
-                                                                          : gather_quad_patch(topology_, f));
+  patches_ = std::move(prepared.patches);
   if (tables_.descent()) descent_ = std::make_unique<QuadPatchDescent>(tables_);
   centre_weights_.resize(static_cast<std::size_t>(tables_.rates().back()) + 1);
   for (int n : tables_.rates()) {

@@ -44,15 +44,17 @@ QuadPatch gather_quad_patch(const QuadTopology& topology, std::size_t face);
 
 // Faces on a mesh's boundary whose patch is regular once the points beyond
 // the boundary are supplied (docs/runtime.md, "Boundaries"): the face has one
-// boundary edge whose two vertices are in two faces each, or (with `corners`,
-// edge-and-corner) two boundary edges meeting at a vertex in one face, their
-// other ends in two faces each; its other corners are interior, of valence 4.
+// boundary edge whose two vertices are in two faces each, or two boundary
+// edges meeting at a corner in one face, their other ends in two faces each;
+// its other corners are interior, of valence 4.
 // The boundary curve of both quad schemes is their regular curve with the
 // boundary point held, which equals the regular curve on the sequence
 // reflected through the boundary point, p(-j) = 2 p(0) - p(j): the missing
 // row of the 4x4 block is the "phantom" row 2 p(row 0) - p(row 1), as in
 // OpenSubdiv's regular boundary patches.
-bool boundary_patch_ready(const QuadTopology& topology, std::size_t face, bool corners);
+// `corner`: per vertex, whether it stays put (sharp_cut.hpp: with
+// edge-and-corner, a boundary vertex in one face; any vertex Sdc's corner rule gives).
+bool boundary_patch_ready(const QuadTopology& topology, std::size_t face, const std::vector<char>& corner);
 
 // A regular patch (valence 4, rotation 0) of such a face: `points` holds the
 // mesh vertices it reaches; each missing point is appended to `phantoms` as
@@ -62,18 +64,17 @@ QuadPatch gather_boundary_patch(const QuadTopology& topology, std::size_t face, 
                                 std::vector<std::vector<std::pair<int, double>>>& phantoms);
 
 // Vertices on the boundary whose faces get a boundary sector's patch
-// (tables/patch_kind.hpp): those in other than two faces, except a corner in
-// one face (with `corners`, edge-and-corner interpolation), whose patch is a
-// regular one with phantom points.
-bool sector_vertex(const QuadTopology& topology, int vertex, bool corners);
+// (tables/patch_kind.hpp): those in other than two faces and corners, except a
+// corner in one face, whose patch is a regular one with phantom points.
+bool sector_vertex(const QuadTopology& topology, int vertex, const std::vector<char>& corner);
 
-// Whether the face at such a vertex (its corner `corner`) has its sector's
+// Whether the face at such a vertex (its corner `at`) has its sector's
 // patch: its other corners are regular (inside the mesh in four faces, or on
-// the boundary in two and on one of the face's boundary edges).
-bool sector_patch_ready(const QuadTopology& topology, std::size_t face, int corner);
+// the boundary in two, not corners, and on one of the face's boundary edges).
+bool sector_patch_ready(const QuadTopology& topology, std::size_t face, int at, const std::vector<char>& corner);
 
-// That patch: the vertex at patch (0,0) (rotation = `corner`), the points in
-// the sector's canonical order (docs/table-format.md, "Boundary sectors").
-QuadPatch gather_sector_patch(const QuadTopology& topology, std::size_t face, int corner);
+// That patch: the vertex at patch (0,0) (rotation = `at`), the points in the
+// sector's canonical order (docs/table-format.md, "Boundary sectors").
+QuadPatch gather_sector_patch(const QuadTopology& topology, std::size_t face, int at, const std::vector<char>& corner);
 
 }  // namespace stencil_runtime

@@ -1,0 +1,85 @@
+#include "sharp_cut.hpp"
+
+#include <numeric>
+#include <string>
+
+namespace stencil_runtime {
+
+namespace {
+
+std::size_t find(std::vector<std::size_t>& parent, std::size_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+}  // namespace
+
+SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& links, const LevelSharpness& sharpness,
+                               bool edge_and_corner) {
+  const std::size_t corners = mesh.face_vertices.size(), nv = mesh.vertex_count;
+  auto vertex = [&](std::size_t h) { return mesh.face_vertices[h]; };
+  auto infinite = [&](std::size_t h) { return sharpness.edge(vertex(h), vertex(links.next[h])) >= kInfiniteSharpness; };
+  // Sharp edges at each vertex: infinitely sharp ones and boundary ones (counted once per edge).
+  std::vector<int> sharp(nv, 0);
+  for (std::size_t h = 0; h < corners; ++h) {
+    const bool boundary = links.twin[h] == PolygonLinks::kNoTwin;
+    if (!boundary && links.twin[h] < h) continue;  // each inner edge once
+    if (boundary || infinite(h)) {
+      ++sharp[static_cast<std::size_t>(vertex(h))];
+      ++sharp[static_cast<std::size_t>(vertex(links.next[h]))];
+    }
+  }
+  SharpCut out;
+  out.mesh = mesh;
+  std::vector<char> vertex_corner(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v) {
+    const bool boundary = links.boundary[v] != 0;
+    const bool sharp_vertex = sharpness.vertex(static_cast<int>(v)) >= kInfiniteSharpness ||
+                              (boundary && edge_and_corner && links.valence[v] == 1);
+    const int infinite_edges = sharp[v] - (boundary ? 2 : 0);
+    if (!boundary && infinite_edges == 1)
+      throw MeshError("vertex " + std::to_string(v) + " ends an infinitely sharp crease inside the mesh (a dart, one sharp "
+                      "edge): darts have no patches yet; give that edge a finite sharpness below 10, or continue the crease");
+    if (!boundary && sharp_vertex && infinite_edges < 2)
+      throw MeshError("vertex " + std::to_string(v) + " is infinitely sharp inside the mesh with " + std::to_string(infinite_edges) +
+                      " infinitely sharp edge" + (infinite_edges == 1 ? "" : "s") +
+                      ": such a cone point has no patches yet; give it a finite sharpness below 10");
+    vertex_corner[v] = sharp_vertex || sharp[v] >= 3;
+  }
+  // Corners at the same vertex stay together across every edge that is not infinitely sharp.
+  std::vector<std::size_t> parent(corners);
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  for (std::size_t h = 0; h < corners; ++h) {
+    const std::size_t t = links.twin[h];
+    if (t == PolygonLinks::kNoTwin || t < h || infinite(h)) continue;
+    // h runs a -> b in its face; t runs b -> a in the other: a's corners are h and next(t), b's next(h) and t.
+    parent[find(parent, h)] = find(parent, links.next[t]);
+    parent[find(parent, links.next[h])] = find(parent, t);
+  }
+  std::vector<int> id_of_root(corners, -1);
+  std::vector<char> used(nv, 0);
+  out.origin.resize(nv);
+  std::iota(out.origin.begin(), out.origin.end(), 0);
+  for (std::size_t h = 0; h < corners; ++h) {
+    const std::size_t root = find(parent, h);
+    int& id = id_of_root[root];
+    if (id < 0) {
+      const auto v = static_cast<std::size_t>(vertex(h));
+      if (!used[v]) {
+        id = static_cast<int>(v);
+        used[v] = 1;
+      } else {
+        id = static_cast<int>(out.origin.size());
+        out.origin.push_back(static_cast<int>(v));
+        out.cut = true;
+      }
+    }
+    out.mesh.face_vertices[h] = id;
+  }
+  out.mesh.vertex_count = out.origin.size();
+  out.corner.resize(out.origin.size());
+  for (std::size_t v = 0; v < out.origin.size(); ++v) out.corner[v] = vertex_corner[static_cast<std::size_t>(out.origin[v])];
+  return out;
+}
+
+}  // namespace stencil_runtime

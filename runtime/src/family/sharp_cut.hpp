@@ -1,0 +1,41 @@
+#pragma once
+// Infinitely sharp creases as boundaries. Across an edge of infinite sharpness
+// (OpenSubdiv's >= 10) the two sides of the surface are independent: each side
+// is the surface of a mesh with a boundary there, its vertices on the crease
+// following the crease curve (two sharp edges) or staying put (a corner: three
+// or more, or a sharp vertex). Cutting the mesh along those edges therefore
+// turns every face at a crease into a face at a boundary, whose patches the
+// boundary machinery already has (boundary sectors, regular boundary patches
+// with phantom points): each vertex on such edges becomes one copy per sector
+// of faces between its sharp edges. The subdivision steps still run on the
+// uncut mesh (with OpenSubdiv's creasing rules); only the patches are gathered
+// on the cut one, and tessellations keep the uncut adjacency, so that they are
+// watertight across creases.
+//
+// The same pass tells, for every vertex on a boundary of the cut mesh (a real
+// boundary or a crease), whether it is a corner: Sdc's corner rule, counting
+// boundary edges as infinitely sharp and, with edge-and-corner interpolation,
+// a real boundary vertex in one face as a sharp vertex.
+#include <vector>
+
+#include "mesh/connectivity.hpp"
+#include "mesh/polygon_links.hpp"
+#include "mesh/sharpness.hpp"
+
+namespace stencil_runtime {
+
+struct SharpCut {
+  Connectivity mesh;          // the same faces; vertices split along infinitely sharp edges
+  std::vector<int> origin;    // per vertex of `mesh`: the vertex of the uncut mesh it copies (itself for the first copy)
+  std::vector<char> corner;   // per vertex of `mesh`: a corner (stays put)
+  bool cut = false;           // whether any vertex was split
+};
+
+// `links`: of `mesh`. Throws MeshError naming the vertex (numbered in `mesh`)
+// for what has no patches yet: a dart (an infinitely sharp crease that ends
+// inside the mesh, at a vertex with one such edge) and an infinitely sharp
+// vertex inside the mesh with fewer than two such edges.
+SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& links, const LevelSharpness& sharpness,
+                               bool edge_and_corner);
+
+}  // namespace stencil_runtime
