@@ -2,7 +2,9 @@
 // throughput on a mesh with creases within 1.25x of a closed smooth mesh of
 // the same size). The chess piece refined by Catmull-Clark steps to >= 50k
 // faces, smooth and with every 10th edge creased (sharpness 1, then 2:
-// one and two whole-mesh steps with the sharp rules in the preparation);
+// one and two whole-mesh steps with the sharp rules in the preparation; then
+// 10, infinitely sharp: darts, creases and corners, the patches of the mesh
+// cut along them);
 // uniform rates 8 and 16 and a random mix 1..24, 1 and 2 threads: the
 // preparation time, then a whole static tessellation (plan and points, as
 // bench_tessellation), in triangles per second. OpenSubdiv 3.5's Bfr
@@ -54,7 +56,7 @@ int run(int argc, char** argv) {
   std::printf("| sharpness | prepared faces | preparation (s) | rate | threads | triangles | ours (M tri/s) | ours / smooth | Bfr (M tri/s) | Bfr / smooth |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::vector<double>> smooth_rates;  // [rate][threads] of the smooth mesh: ours, Bfr
-  for (double sharpness : {0.0, 1.0, 2.0}) {
+  for (double sharpness : {0.0, 1.0, 2.0, 10.0}) {
     const MeshFeatures features = creases(mesh, sharpness);
     const auto t0 = Clock::now();
     const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, {},

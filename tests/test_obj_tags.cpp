@@ -105,9 +105,8 @@ TEST_CASE("tags the runtime cannot honour are refused, tags without effect chang
   const fs::path dir = scratch_dir("obj-tags-use");
   const long first = line_count(cube_text()) + 1;
   const std::pair<const char*, const char*> refused[] = {
-      {"t crease 2/1/0 0 1 10\n", "infinitely sharp crease that ends inside the mesh at vertex 0 (a dart)"},
-      {"t crease 2/1/0 0 1 12.5\n", "infinitely sharp crease that ends inside the mesh at vertex 0 (a dart)"},
-      {"t corner 1/1/0 3 10\n", "infinitely sharp corner (sharpness 10 >= 10) at vertex 3 inside the mesh"},
+      {"t corner 1/1/0 3 10\n", "infinitely sharp corner (sharpness 10 >= 10) at vertex 3 inside the mesh on no infinitely sharp edge"},
+      {"t corner 1/1/0 3 12.5\n", "infinitely sharp corner (sharpness 12.5 >= 10) at vertex 3 inside the mesh"},
   };
   for (const auto& [tag, message] : refused) {
     INFO(tag);

@@ -65,8 +65,9 @@ TEST_CASE("stencilgen verify checks descent.json: subdivision matrices exactly, 
     CHECK(r.status == 1);
     CHECK_THAT(r.output, Catch::Contains("no tangent stencils, but the scheme has them"));
 
-    // Boundary sectors: valences up to 5 give the crease sectors of 1, 3, 4 and 5 faces, the corners of 2..5.
-    REQUIRE(good["sectors"].size() == (1 + 3 + 4 + 5) + (2 + 3 + 4 + 5));
+    // Boundary sectors: valences up to 5 give the crease sectors of 1, 3, 4 and 5 faces, the corners of 2..5,
+    // the darts of valence 3..5.
+    REQUIRE(good["sectors"].size() == (1 + 3 + 4 + 5) + (2 + 3 + 4 + 5) + (3 + 4 + 5));
     std::size_t three = 0;  // the first sector of three faces (which has tangents)
     while (good["sectors"][three]["faces"] != 3) ++three;
     bad = good;  // a weight of a sector's A0 (its vertex's row: the boundary curve's rule)

@@ -7,13 +7,22 @@
 
 namespace sg {
 
+const char* sector_kind_name(SectorKind kind) {
+  switch (kind) {
+    case SectorKind::Crease: return "crease";
+    case SectorKind::Corner: return "corner";
+    default: return "dart";
+  }
+}
+
 std::string BoundarySector::name() const {
-  return std::string(corner ? "corner" : "boundary vertex") + " in " + std::to_string(faces) + " face" +
+  if (kind == SectorKind::Dart) return "dart of valence " + std::to_string(faces) + ", face " + std::to_string(position);
+  return std::string(kind == SectorKind::Corner ? "corner" : "boundary vertex") + " in " + std::to_string(faces) + " face" +
          (faces == 1 ? "" : "s") + ", face " + std::to_string(position);
 }
 
 SectorLayout::SectorLayout(const BoundarySector& s) : s_(s) {
-  if (s.faces < 1 || s.faces > limits::kMaxValence || s.position < 0 || s.position >= s.faces)
+  if (s.faces < (s.kind == SectorKind::Dart ? 3 : 1) || s.faces > limits::kMaxValence || s.position < 0 || s.position >= s.faces)
     throw Error("internal: no boundary sector of " + std::to_string(s.faces) + " faces with face " + std::to_string(s.position));
   const bool below = s.position > 0, beside = s.position + 1 < s.faces;
   if (below) outer_.emplace_back(2, -1);
@@ -49,8 +58,12 @@ class SectorRefiner final : public ChartRefiner {
     const SectorLayout& L = layout_;
     const int k = L.sector().faces;
     if (h == SectorLayout::vertex()) {
-      if (L.sector().corner) {
+      if (L.sector().kind == SectorKind::Corner) {
         row_.add(L.vertex(), 1);
+      } else if (L.sector().kind == SectorKind::Dart) {  // the smooth rule at valence k; e_k is e_0 again
+        const VertexRule r = s_.vertex_rule(k);
+        row_.add(L.vertex(), r.centre);
+        for (int j = 0; j < k; ++j) row_.add(L.edge(j), r.edge), row_.add(L.face(j), r.face);
       } else {  // the boundary curve's vertex rule over e_0, B, e_k
         row_.add(L.edge(0), curve_[4]), row_.add(L.vertex(), curve_[2]), row_.add(L.edge(k), curve_[0]);
       }
@@ -91,13 +104,15 @@ PatchSubdivision build_sector_subdivision(const QuadScheme& scheme, const Bounda
   return out;
 }
 
-std::vector<BoundarySector> boundary_sectors(int max_faces, bool corners) {
+std::vector<BoundarySector> boundary_sectors(int max_faces, bool sharp) {
   std::vector<BoundarySector> out;
-  for (bool corner : {false, true})
-    for (int k = 1; k <= max_faces && (corners || !corner); ++k) {
-      if (k == (corner ? 1 : 2)) continue;  // regular boundary patches (phantom points)
-      for (int p = 0; p < k; ++p) out.push_back({corner, k, p});
+  for (SectorKind kind : {SectorKind::Crease, SectorKind::Corner, SectorKind::Dart}) {
+    if (kind != SectorKind::Crease && !sharp) continue;
+    for (int k = kind == SectorKind::Dart ? 3 : 1; k <= max_faces; ++k) {
+      if (k == (kind == SectorKind::Corner ? 1 : 2)) continue;  // regular boundary patches (phantom points)
+      for (int p = 0; p < k; ++p) out.push_back({kind, k, p});
     }
+  }
   return out;
 }
 

@@ -18,7 +18,8 @@
 // The rules: the scheme's own inside; along the boundary its regular curve with
 // the boundary point held (vertex rule a, 1-2a, a along the boundary; edge rule
 // 1/2, 1/2), as in OpenSubdiv; B itself follows the curve's vertex rule over
-// e_0 and e_k ("crease"), or stays where it is ("corner").
+// e_0 and e_k ("crease"), stays where it is ("corner"), or follows the smooth
+// rule ("dart", below).
 #include <optional>
 #include <string>
 #include <utility>
@@ -30,12 +31,21 @@ namespace sg {
 
 struct PatchSubdivision;  // patch_subdivision.hpp
 
-struct BoundarySector {
-  bool corner = false;  // B stays put (a corner) instead of following the boundary curve
-  int faces = 1;        // k >= 1
-  int position = 0;     // p, 0 <= p < k
+// What B's own rule is: the boundary curve's vertex rule over e_0 and e_k
+// (a boundary or crease vertex), none (a corner: it stays put), or the scheme's
+// smooth rule at valence k (a dart: an infinitely sharp crease ends at B, the
+// mesh cut along it makes B a boundary vertex whose e_0 and e_k are two copies
+// of the crease's next vertex, and B's rule sees it once).
+enum class SectorKind : unsigned char { Crease = 0, Corner = 1, Dart = 2 };
+const char* sector_kind_name(SectorKind kind);  // "crease", "corner", "dart"
 
-  std::string name() const;  // "boundary vertex in 3 faces, face 1" / "corner in 2 faces, face 0"
+struct BoundarySector {
+  SectorKind kind = SectorKind::Crease;
+  int faces = 1;     // k >= 1 (>= 3 for a dart: its valence)
+  int position = 0;  // p, 0 <= p < k
+
+  // "boundary vertex in 3 faces, face 1" / "corner in 2 faces, face 0" / "dart of valence 5, face 2"
+  std::string name() const;
   bool operator==(const BoundarySector&) const = default;
 };
 
@@ -66,9 +76,10 @@ PatchSubdivision build_sector_subdivision(const QuadScheme& scheme, const Bounda
 
 // The sectors the runtime needs for boundary vertices in 1..max_faces faces:
 // every position p of k = 1 and k >= 3 (in 2 faces the patches are regular
-// boundary patches, with phantom points). With `corners`, also the corners in
-// k >= 2 faces (in 1 face a corner's patch is regular too), which only sharp
-// corner tags make.
-std::vector<BoundarySector> boundary_sectors(int max_faces, bool corners = false);
+// boundary patches, with phantom points). With `sharp`, also the corners in
+// k >= 2 faces (in 1 face a corner's patch is regular too), which sharp corner
+// tags and vertices on three or more sharp edges make, and the darts of
+// valence 3..max_faces.
+std::vector<BoundarySector> boundary_sectors(int max_faces, bool sharp = false);
 
 }  // namespace sg

@@ -36,8 +36,12 @@ std::vector<std::vector<Real>> real_matrix(const PatchSubdivision& subdivision) 
 std::optional<EvTangents> sector_tangents(const QuadScheme& scheme, const BoundarySector& sector,
                                           const PatchSubdivision& subdivision, const std::vector<Rational>& limit,
                                           std::string& why) {
-  if (sector.corner) {
+  if (sector.kind == SectorKind::Corner) {
     why = "a corner has no tangent plane";
+    return std::nullopt;
+  }
+  if (sector.kind == SectorKind::Dart) {
+    why = "tangent stencils at a dart are not made yet";
     return std::nullopt;
   }
   constexpr long kSamples = 8;  // the characteristic map's regularity is checked on this grid

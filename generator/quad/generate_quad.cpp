@@ -35,7 +35,7 @@ std::vector<BoundarySector> sectors_for(const std::vector<int>& valences, const 
   int faces = largest;
   while (faces >= 1 &&
          fmt::expansion_grid_entries(static_cast<std::uint64_t>(rate),
-                                     SectorLayout({false, faces, faces > 1 ? 1 : 0}).size()) > fmt::kMaxExpansionGridEntries)
+                                     SectorLayout({SectorKind::Crease, faces, faces > 1 ? 1 : 0}).size()) > fmt::kMaxExpansionGridEntries)
     --faces;
   if (faces < largest && progress)
     progress("note: boundary vertices in more than " + std::to_string(faces) + " faces get no patches at rate " +

@@ -137,7 +137,7 @@ SmoothnessReport analyse_quad_valence(const QuadScheme& scheme, int v, long samp
 
 std::string analyse_quad_boundary(const QuadScheme& scheme, int faces, bool& ok) {
   std::vector<BoundarySector> sectors;
-  for (int p = 0; p < faces; ++p) sectors.push_back({false, faces, p});
+  for (int p = 0; p < faces; ++p) sectors.push_back({SectorKind::Crease, faces, p});
   const QuadDescent d = quad_descent(scheme, {}, sectors);
   // The spectrum of the one ring (2k+2 points, the same for every face).
   const std::size_t ring = static_cast<std::size_t>(2 * faces + 2);

@@ -54,8 +54,8 @@ std::string quad_descent_to_json(const QuadScheme& scheme, const QuadDescent& d)
       "two stencils over the same points whose combinations of the control points span the tangent plane at the "
       "extraordinary vertex (left eigenvectors of A0 for its subdominant eigenvalue, along the patch's u and v edges; "
       "not parametric derivatives), 40 digits, with the residual max |t A0 - eigenvalue t| (null: none, no_tangents says why); "
-      "sectors: the patches of the faces at a vertex on a boundary (kind crease: the vertex follows the boundary curve; "
-      "corner: it stays put), k faces, the face at position p, over the sector's points (docs/table-format.md), with the "
+      "sectors: the patches of the faces at a vertex on a boundary or infinitely sharp crease (kind crease: the vertex "
+      "follows the boundary curve; corner: it stays put; dart: the end of a crease, the smooth rule at valence k), k faces, the face at position p, over the sector's points (docs/table-format.md), with the "
       "vertex's exact limit stencil; their tangents: u along the patch's u edge, v towards its corner (1,1), eigenvalues "
       "of the two eigenvectors that span the plane.";
   ojson mask;
@@ -102,7 +102,7 @@ std::string quad_descent_to_json(const QuadScheme& scheme, const QuadDescent& d)
   ojson sectors = ojson::array();
   for (const QuadDescent::Sector& sec : d.sectors) {
     ojson entry;
-    entry["kind"] = sec.sector.corner ? "corner" : "crease";
+    entry["kind"] = sector_kind_name(sec.sector.kind);
     entry["faces"] = sec.sector.faces;
     entry["position"] = sec.sector.position;
     entry["points"] = sec.subdivision.points;

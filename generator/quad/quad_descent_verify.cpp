@@ -55,10 +55,12 @@ void verify_sectors(const DocumentReader<ojson>& r, const ojson& sectors, const 
     const std::string field = field_path("sectors", k);
     const ojson& e = sectors[k];
     const std::string& kind = r.string(r.require(e, "kind", field), field_path(field, "kind"));
-    if (kind != "crease" && kind != "corner") r.fail(field_path(field, "kind"), "expected \"crease\" or \"corner\"");
     BoundarySector sector;
-    sector.corner = kind == "corner";
-    sector.faces = static_cast<int>(r.integer(r.require(e, "faces", field), field_path(field, "faces"), 1, scheme.max_valence));
+    if (kind == "corner") sector.kind = SectorKind::Corner;
+    else if (kind == "dart") sector.kind = SectorKind::Dart;
+    else if (kind != "crease") r.fail(field_path(field, "kind"), "expected \"crease\", \"corner\" or \"dart\"");
+    sector.faces = static_cast<int>(r.integer(r.require(e, "faces", field), field_path(field, "faces"),
+                                              sector.kind == SectorKind::Dart ? 3 : 1, scheme.max_valence));
     sector.position = static_cast<int>(r.integer(r.require(e, "position", field), field_path(field, "position"), 0, sector.faces - 1));
     const QuadDescent fresh = quad_descent(scheme, {}, {sector});
     const QuadDescent::Sector& d = fresh.sectors.front();

@@ -191,7 +191,7 @@ std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& 
   // Version 8: the boundary sectors (always generated: the reader expands each on first use).
   put<std::uint32_t>(out, static_cast<std::uint32_t>(set.descent->sectors.size()));
   for (const QuadDescent::Sector& sec : set.descent->sectors) {
-    put<std::uint8_t>(out, sec.sector.corner ? 1 : 0);
+    put<std::uint8_t>(out, static_cast<std::uint8_t>(sec.sector.kind));
     put<std::uint32_t>(out, static_cast<std::uint32_t>(sec.sector.faces));
     put<std::uint32_t>(out, static_cast<std::uint32_t>(sec.sector.position));
     put<std::uint32_t>(out, static_cast<std::uint32_t>(sec.subdivision.points));

@@ -52,7 +52,8 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
       refuse(mesh, c.line, "an infinitely sharp corner (sharpness " + number(c.sharpness) + " >= 10) at " + vertex + " of a triangle scheme");
     features.vertices.push_back({c.vertex, c.sharpness});
   }
-  // A dart (an infinitely sharp crease ending inside the mesh) has no patches yet: named with its tag's line.
+  // An infinitely sharp vertex inside the mesh on no infinitely sharp edge (a cone point) has no patches yet:
+  // named with its tag's line.
   if (!triangles_only) {
     std::map<int, std::vector<const MeshTags::Crease*>> sharp_at;
     for (const auto& c : tags.creases)
@@ -66,23 +67,15 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
         links = link_polygons(connectivity, true);
       } catch (const MeshError&) {  // create() names what is wrong with the mesh itself
       }
-      for (const auto& [v, creases] : sharp_at) {
-        std::set<std::pair<int, int>> edges;
-        for (const auto* c : creases) edges.insert({std::min(c->a, c->b), std::max(c->a, c->b)});
-        const bool inside = static_cast<std::size_t>(v) < links.boundary.size() && !links.boundary[static_cast<std::size_t>(v)];
-        if (inside && edges.size() == 1)
-          refuse(mesh, creases.front()->line, "an infinitely sharp crease that ends inside the mesh at vertex " + std::to_string(v) +
-                                                  " (a dart)");
-      }
       for (const auto& c : tags.corners) {
         const std::size_t v = static_cast<std::size_t>(c.vertex);
         const auto it = sharp_at.find(c.vertex);
         std::set<std::pair<int, int>> edges;
         if (it != sharp_at.end())
           for (const auto* e : it->second) edges.insert({std::min(e->a, e->b), std::max(e->a, e->b)});
-        if (c.sharpness >= kInfinite && v < links.boundary.size() && !links.boundary[v] && edges.size() < 2)
+        if (c.sharpness >= kInfinite && v < links.boundary.size() && !links.boundary[v] && edges.empty())
           refuse(mesh, c.line, "an infinitely sharp corner (sharpness " + number(c.sharpness) + " >= 10) at vertex " + std::to_string(c.vertex) +
-                                   " inside the mesh on fewer than two infinitely sharp edges (a cone point)");
+                                   " inside the mesh on no infinitely sharp edge (a cone point)");
       }
     }
   }

@@ -31,20 +31,17 @@ SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& lin
   }
   SharpCut out;
   out.mesh = mesh;
-  std::vector<char> vertex_corner(nv, 0);
+  std::vector<SectorRule> vertex_rule(nv, SectorRule::Crease);
   for (std::size_t v = 0; v < nv; ++v) {
     const bool boundary = links.boundary[v] != 0;
     const bool sharp_vertex = sharpness.vertex(static_cast<int>(v)) >= kInfiniteSharpness ||
                               (boundary && edge_and_corner && links.valence[v] == 1);
     const int infinite_edges = sharp[v] - (boundary ? 2 : 0);
-    if (!boundary && infinite_edges == 1)
-      throw MeshError("vertex " + std::to_string(v) + " ends an infinitely sharp crease inside the mesh (a dart, one sharp "
-                      "edge): darts have no patches yet; give that edge a finite sharpness below 10, or continue the crease");
-    if (!boundary && sharp_vertex && infinite_edges < 2)
-      throw MeshError("vertex " + std::to_string(v) + " is infinitely sharp inside the mesh with " + std::to_string(infinite_edges) +
-                      " infinitely sharp edge" + (infinite_edges == 1 ? "" : "s") +
-                      ": such a cone point has no patches yet; give it a finite sharpness below 10");
-    vertex_corner[v] = sharp_vertex || sharp[v] >= 3;
+    if (!boundary && sharp_vertex && infinite_edges == 0)
+      throw MeshError("vertex " + std::to_string(v) + " is infinitely sharp inside the mesh on no infinitely sharp edge: such "
+                      "a cone point has no patches yet; give it a finite sharpness below 10");
+    if (sharp_vertex || sharp[v] >= 3) vertex_rule[v] = SectorRule::Corner;
+    else if (sharp[v] == 1) vertex_rule[v] = SectorRule::Dart;  // inside, on one infinitely sharp edge
   }
   // Corners at the same vertex stay together across every edge that is not infinitely sharp.
   std::vector<std::size_t> parent(corners);
@@ -77,8 +74,8 @@ SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& lin
     out.mesh.face_vertices[h] = id;
   }
   out.mesh.vertex_count = out.origin.size();
-  out.corner.resize(out.origin.size());
-  for (std::size_t v = 0; v < out.origin.size(); ++v) out.corner[v] = vertex_corner[static_cast<std::size_t>(out.origin[v])];
+  out.rule.resize(out.origin.size());
+  for (std::size_t v = 0; v < out.origin.size(); ++v) out.rule[v] = vertex_rule[static_cast<std::size_t>(out.origin[v])];
   return out;
 }
 

@@ -21,20 +21,22 @@
 #include "mesh/connectivity.hpp"
 #include "mesh/polygon_links.hpp"
 #include "mesh/sharpness.hpp"
+#include "tables/patch_kind.hpp"
 
 namespace stencil_runtime {
 
 struct SharpCut {
-  Connectivity mesh;          // the same faces; vertices split along infinitely sharp edges
-  std::vector<int> origin;    // per vertex of `mesh`: the vertex of the uncut mesh it copies (itself for the first copy)
-  std::vector<char> corner;   // per vertex of `mesh`: a corner (stays put)
-  bool cut = false;           // whether any vertex was split
+  Connectivity mesh;             // the same faces; vertices split along infinitely sharp edges
+  std::vector<int> origin;       // per vertex of `mesh`: the vertex of the uncut mesh it copies (itself for the first copy)
+  std::vector<SectorRule> rule;  // per vertex of `mesh`: crease (or none inside), corner, dart
+  bool cut = false;              // whether any vertex was split
 };
 
-// `links`: of `mesh`. Throws MeshError naming the vertex (numbered in `mesh`)
-// for what has no patches yet: a dart (an infinitely sharp crease that ends
-// inside the mesh, at a vertex with one such edge) and an infinitely sharp
-// vertex inside the mesh with fewer than two such edges.
+// `links`: of `mesh`. A crease that ends inside the mesh (a vertex on one such
+// edge, a dart) leaves its end one vertex, in all its faces, on the boundary
+// of the cut mesh (the slit), with the dart rule. Throws MeshError naming the
+// vertex (numbered in `mesh`) for what has no patches yet: an infinitely sharp
+// vertex inside the mesh on no infinitely sharp edge (a cone point).
 SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& links, const LevelSharpness& sharpness,
                                bool edge_and_corner);
 

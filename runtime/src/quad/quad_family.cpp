@@ -34,7 +34,7 @@ bool touches_boundary(const QuadTopology& topo, std::size_t f) {
 }
 
 // The corner of face f at a boundary vertex with a sector patch (sector_vertex), or -1.
-int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<char>& corner) {
+int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<SectorRule>& corner) {
   for (int c = 0; c < 4; ++c)
     if (sector_vertex(topo, topo.vertex(f, c), corner)) return c;
   return -1;
@@ -45,8 +45,8 @@ int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<cha
 // any other face touching the boundary one of the regular boundary patches
 // (with `none`, faces touching the boundary have no surface, hence no patch).
 // `topo` is the mesh cut along its infinitely sharp edges (sharp_cut.hpp), whose
-// boundaries are the mesh's and its creases, `corner` its vertices that stay put.
-bool isolated(const QuadTopology& topo, const std::vector<char>& corner, bool no_boundary_surface) {
+// boundaries are the mesh's and its creases, `corner` its vertices' rules.
+bool isolated(const QuadTopology& topo, const std::vector<SectorRule>& corner, bool no_boundary_surface) {
   for (std::size_t f = 0; f < topo.faces(); ++f) {
     if (topo.has_boundary() && touches_boundary(topo, f)) {
       if (no_boundary_surface) continue;
@@ -77,14 +77,16 @@ void check_vertices(const SharpCut& cut, const PolygonLinks& links, bool no_boun
       continue;
     }
     if (no_boundary_surface) continue;  // no surface at boundary vertices: any will do
-    const bool corner = cut.corner[v] != 0;
-    if ((k == 2 && !corner) || (k == 1 && corner)) continue;  // regular boundary patches
+    const SectorRule rule = cut.rule[v];
+    if ((k == 2 && rule == SectorRule::Crease) || (k == 1 && rule == SectorRule::Corner)) continue;  // regular boundary patches
     if (k > limits::kMaxValence)
       throw MeshError(who + " is on a boundary or crease in " + std::to_string(k) + " faces; the runtime supports up to " +
                       std::to_string(limits::kMaxValence));
-    if (!tables.has_sector({corner, k, 0}))
-      valences.add_boundary(k, who + " is " + (corner ? "a corner" : "on a boundary or crease") + " in " + std::to_string(k) + " face" +
-                                   (k == 1 ? "" : "s") + " (tables cover those in up to as many faces as their largest valence)");
+    if (!tables.has_sector({rule, k, 0}))
+      valences.add_boundary(k, who + (rule == SectorRule::Dart ? " ends an infinitely sharp crease (a dart) at valence " + std::to_string(k)
+                                                               : std::string(" is ") + (rule == SectorRule::Corner ? "a corner" : "on a boundary or crease") +
+                                                                     " in " + std::to_string(k) + " face" + (k == 1 ? "" : "s")) +
+                                   " (tables cover those in up to as many faces as their largest valence)");
   }
 }
 
@@ -221,7 +223,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   const int before_isolation = out.steps;
   SharpCut cut = cut_of(out.mesh, sharpness, edge_and_corner);
   QuadTopology patch_topo(cut.mesh, true);
-  while (!isolated(patch_topo, cut.corner, out.no_boundary_surface)) {
+  while (!isolated(patch_topo, cut.rule, out.no_boundary_surface)) {
     if (out.steps - before_isolation + (out.polygon_step ? 1 : 0) == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices still share faces after " + std::to_string(limits::kMaxRefinementSteps) +
                       " subdivision steps");
@@ -245,9 +247,9 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
       out.patches[f] = gather_quad_patch(patch_topo, f);
       continue;
     }
-    const int c = sector_corner(patch_topo, f, cut.corner);
+    const int c = sector_corner(patch_topo, f, cut.rule);
     if (out.no_boundary_surface) out.patches[f].points.assign(16, 0);  // a hole: never evaluated
-    else if (c >= 0) out.patches[f] = gather_sector_patch(patch_topo, f, c, cut.corner);
+    else if (c >= 0) out.patches[f] = gather_sector_patch(patch_topo, f, c, cut.rule);
     else out.patches[f] = gather_boundary_patch(patch_topo, f, cut.mesh.vertex_count, phantoms);
   }
   if (!phantoms.empty()) out.refinement.add(appended(cut.mesh.vertex_count, phantoms));  // none with `none`
@@ -603,7 +605,10 @@ Point QuadFamily::normal_any(std::size_t face, P u, P v, const Point* prepared) 
   const QuadDescent::Valence& d = tables_.descent(valence);
   if (d.tangent_u.size() != points.size() && is_sector_kind(valence)) {
     const SectorKey s = sector_of(valence);
-    throw EvaluationError(s.corner ? "a corner has no tangent plane, so there is no normal at it"
+    if (s.rule == SectorRule::Dart)
+      throw EvaluationError("there is no normal at the end of an infinitely sharp crease (a dart) yet: the tables hold no "
+                            "tangent stencils there; the surface round it evaluates as anywhere else");
+    throw EvaluationError(s.rule == SectorRule::Corner ? "a corner has no tangent plane, so there is no normal at it"
                                    : "this scheme's boundary rules give no tangent plane at a boundary vertex in " +
                                          std::to_string(s.faces) + " face" + (s.faces == 1 ? "" : "s") +
                                          " (Reif's condition fails there: `stencilgen analyze` shows the spectrum), so there is "

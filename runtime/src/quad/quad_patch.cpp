@@ -94,7 +94,7 @@ std::optional<Cell> across(const std::optional<Cell>& c, int from, int offset) {
 
 }  // namespace
 
-bool boundary_patch_ready(const QuadTopology& topo, std::size_t face, const std::vector<char>& corner) {
+bool boundary_patch_ready(const QuadTopology& topo, std::size_t face, const std::vector<SectorRule>& rule) {
   int boundary_edges = 0;
   for (int c = 0; c < 4; ++c) boundary_edges += topo.twin(QuadTopology::half_edge(face, c)) == QuadTopology::kNoTwin;
   if (boundary_edges == 0 || boundary_edges > 2) return false;
@@ -106,14 +106,15 @@ bool boundary_patch_ready(const QuadTopology& topo, std::size_t face, const std:
       if (topo.twin(QuadTopology::half_edge(face, k)) == QuadTopology::kNoTwin &&
           topo.twin(QuadTopology::half_edge(face, k + 3)) == QuadTopology::kNoTwin)
         c = k;
-    if (c < 0 || !corner[static_cast<std::size_t>(topo.vertex(face, c))] || topo.valence(topo.vertex(face, c)) != 1) return false;
+    if (c < 0 || rule[static_cast<std::size_t>(topo.vertex(face, c))] != SectorRule::Corner || topo.valence(topo.vertex(face, c)) != 1)
+      return false;
     corner_at = c;
   }
   for (int c = 0; c < 4; ++c) {
     const int v = topo.vertex(face, c);
     if (c == corner_at) continue;
     if (topo.on_boundary(v)) {
-      if (topo.valence(v) != 2 || corner[static_cast<std::size_t>(v)]) return false;
+      if (topo.valence(v) != 2 || rule[static_cast<std::size_t>(v)] != SectorRule::Crease) return false;
       // A boundary corner must lie on one of the face's boundary edges.
       const bool on_edge = topo.twin(QuadTopology::half_edge(face, c)) == QuadTopology::kNoTwin ||
                            topo.twin(QuadTopology::half_edge(face, c + 3)) == QuadTopology::kNoTwin;
@@ -176,14 +177,14 @@ QuadPatch gather_boundary_patch(const QuadTopology& topo, std::size_t face, std:
   return p;
 }
 
-bool sector_vertex(const QuadTopology& topo, int v, const std::vector<char>& corner) {
+bool sector_vertex(const QuadTopology& topo, int v, const std::vector<SectorRule>& rule) {
   if (!topo.on_boundary(v)) return false;
   const int k = topo.valence(v);
-  const bool held = corner[static_cast<std::size_t>(v)] != 0;
-  return !(k == 2 && !held) && !(k == 1 && held);
+  const SectorRule r = rule[static_cast<std::size_t>(v)];
+  return !(k == 2 && r == SectorRule::Crease) && !(k == 1 && r == SectorRule::Corner);
 }
 
-bool sector_patch_ready(const QuadTopology& topo, std::size_t face, int at, const std::vector<char>& corner_flag) {
+bool sector_patch_ready(const QuadTopology& topo, std::size_t face, int at, const std::vector<SectorRule>& rule) {
   const int corner = at;
   auto boundary_edge = [&](int c) { return topo.twin(QuadTopology::half_edge(face, c)) == QuadTopology::kNoTwin; };
   for (int d = 1; d <= 3; ++d) {
@@ -193,13 +194,13 @@ bool sector_patch_ready(const QuadTopology& topo, std::size_t face, int at, cons
     } else {
       // e_p (d = 1) on the edge corner -> corner+1, e_{p+1} (d = 3) on corner+3 -> corner; f_p never.
       const bool on_edge = (d == 1 && boundary_edge(corner)) || (d == 3 && boundary_edge(corner + 3));
-      if (!on_edge || topo.valence(v) != 2 || corner_flag[static_cast<std::size_t>(v)]) return false;
+      if (!on_edge || topo.valence(v) != 2 || rule[static_cast<std::size_t>(v)] != SectorRule::Crease) return false;
     }
   }
   return true;
 }
 
-QuadPatch gather_sector_patch(const QuadTopology& topo, std::size_t face, int corner, const std::vector<char>& corner_flag) {
+QuadPatch gather_sector_patch(const QuadTopology& topo, std::size_t face, int corner, const std::vector<SectorRule>& rule) {
   const int b = topo.vertex(face, corner);
   // Clockwise to the sector's first face (the one on the boundary edge B-e_0): its position is p.
   Cell first{&topo, face, corner};
@@ -211,7 +212,7 @@ QuadPatch gather_sector_patch(const QuadTopology& topo, std::size_t face, int co
     if (++p > topo.valence(b)) throw MeshError("internal: vertex " + std::to_string(b) + " has no boundary edge");
   }
   const int k = topo.valence(b);
-  const SectorKey key{corner_flag[static_cast<std::size_t>(b)] != 0, k, p};
+  const SectorKey key{rule[static_cast<std::size_t>(b)], k, p};
   QuadPatch out;
   out.valence = sector_kind(key);
   out.rotation = corner;

@@ -52,9 +52,9 @@ QuadPatch gather_quad_patch(const QuadTopology& topology, std::size_t face);
 // reflected through the boundary point, p(-j) = 2 p(0) - p(j): the missing
 // row of the 4x4 block is the "phantom" row 2 p(row 0) - p(row 1), as in
 // OpenSubdiv's regular boundary patches.
-// `corner`: per vertex, whether it stays put (sharp_cut.hpp: with
-// edge-and-corner, a boundary vertex in one face; any vertex Sdc's corner rule gives).
-bool boundary_patch_ready(const QuadTopology& topology, std::size_t face, const std::vector<char>& corner);
+// `rule`: per vertex, its sector rule (sharp_cut.hpp: a corner stays put: with
+// edge-and-corner a boundary vertex in one face, any vertex Sdc's corner rule gives).
+bool boundary_patch_ready(const QuadTopology& topology, std::size_t face, const std::vector<SectorRule>& rule);
 
 // A regular patch (valence 4, rotation 0) of such a face: `points` holds the
 // mesh vertices it reaches; each missing point is appended to `phantoms` as
@@ -65,16 +65,17 @@ QuadPatch gather_boundary_patch(const QuadTopology& topology, std::size_t face, 
 
 // Vertices on the boundary whose faces get a boundary sector's patch
 // (tables/patch_kind.hpp): those in other than two faces and corners, except a
-// corner in one face, whose patch is a regular one with phantom points.
-bool sector_vertex(const QuadTopology& topology, int vertex, const std::vector<char>& corner);
+// corner in one face, whose patch is a regular one with phantom points (a dart
+// is always one: the end of an infinitely sharp crease).
+bool sector_vertex(const QuadTopology& topology, int vertex, const std::vector<SectorRule>& rule);
 
 // Whether the face at such a vertex (its corner `at`) has its sector's
 // patch: its other corners are regular (inside the mesh in four faces, or on
 // the boundary in two, not corners, and on one of the face's boundary edges).
-bool sector_patch_ready(const QuadTopology& topology, std::size_t face, int at, const std::vector<char>& corner);
+bool sector_patch_ready(const QuadTopology& topology, std::size_t face, int at, const std::vector<SectorRule>& rule);
 
 // That patch: the vertex at patch (0,0) (rotation = `at`), the points in the
 // sector's canonical order (docs/table-format.md, "Boundary sectors").
-QuadPatch gather_sector_patch(const QuadTopology& topology, std::size_t face, int at, const std::vector<char>& corner);
+QuadPatch gather_sector_patch(const QuadTopology& topology, std::size_t face, int at, const std::vector<SectorRule>& rule);
 
 }  // namespace stencil_runtime

@@ -11,27 +11,38 @@
 
 namespace stencil_runtime {
 
+// A sector's vertex rule: the boundary curve's (a vertex on a boundary or an
+// infinitely sharp crease), none (a corner: it stays put), or the smooth rule
+// (a dart: the end of an infinitely sharp crease, a boundary vertex of the
+// mesh cut along it whose e_0 and e_k are copies of one vertex).
+enum class SectorRule : unsigned char { Crease = 0, Corner = 1, Dart = 2 };
+
 struct SectorKey {
-  bool corner = false;  // the vertex stays put (a corner) rather than following the boundary curve
-  int faces = 1;        // k, 1..kMaxValence
-  int position = 0;     // p, 0..k-1
+  SectorRule rule = SectorRule::Crease;
+  int faces = 1;     // k, 1..kMaxValence (a dart: its valence, >= 3)
+  int position = 0;  // p, 0..k-1
   bool operator==(const SectorKey&) const = default;
-  bool valid() const { return faces >= 1 && faces <= limits::kMaxValence && position >= 0 && position < faces; }
+  bool valid() const {
+    return faces >= (rule == SectorRule::Dart ? 3 : 1) && faces <= limits::kMaxValence && position >= 0 && position < faces;
+  }
   // The patch's control points: the vertex, its k+1 edge neighbours, k face
   // opposites, and the outer points of the face's chart that exist.
   int points() const { return 2 * faces + 2 + 5 + (position > 0 ? 1 : 0) + (position + 1 < faces ? 1 : 0); }
   std::string name() const {
-    return std::string(corner ? "corner" : "boundary vertex") + " in " + std::to_string(faces) + " face" +
+    if (rule == SectorRule::Dart) return "dart of valence " + std::to_string(faces) + ", face " + std::to_string(position);
+    return std::string(rule == SectorRule::Corner ? "corner" : "boundary vertex") + " in " + std::to_string(faces) + " face" +
            (faces == 1 ? "" : "s") + ", face " + std::to_string(position);
   }
 };
 
 inline constexpr int kFirstSectorKind = 1 << 16;
-inline int sector_kind(const SectorKey& s) { return kFirstSectorKind + ((s.corner ? 1 : 0) * 128 + s.faces) * 128 + s.position; }
+inline int sector_kind(const SectorKey& s) {
+  return kFirstSectorKind + (static_cast<int>(s.rule) * 128 + s.faces) * 128 + s.position;
+}
 inline bool is_sector_kind(int kind) { return kind >= kFirstSectorKind; }
 inline SectorKey sector_of(int kind) {
   const int x = kind - kFirstSectorKind;
-  return {x / (128 * 128) == 1, (x / 128) % 128, x % 128};
+  return {static_cast<SectorRule>(x / (128 * 128)), (x / 128) % 128, x % 128};
 }
 // Control points of a patch of any kind.
 inline int patch_points(int kind) {

@@ -205,12 +205,13 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
   if (sector_count > left() / 14) r.fail("truncated sector list");
   for (std::uint32_t k = 0; k < sector_count; ++k) {
     Sector sec;
-    const auto corner = r.get<std::uint8_t>();
+    const auto rule = r.get<std::uint8_t>();
     const auto faces = r.get<std::uint32_t>(), position = r.get<std::uint32_t>(), points = r.get<std::uint32_t>();
-    if (corner > 1 || faces < 1 || faces > static_cast<std::uint32_t>(limits::kMaxValence) || position >= faces)
+    sec.key = {static_cast<SectorRule>(rule), static_cast<int>(std::min<std::uint32_t>(faces, 1024)),
+               static_cast<int>(std::min<std::uint32_t>(position, 1024))};
+    if (rule > 2 || !sec.key.valid())
       r.fail("boundary sector " + std::to_string(k) + ": invalid kind, face count (1.." + std::to_string(limits::kMaxValence) +
-             ") or position");
-    sec.key = {corner == 1, static_cast<int>(faces), static_cast<int>(position)};
+             ", a dart 3..) or position");
     const std::string where = sec.key.name();
     if (points != static_cast<std::uint32_t>(sec.key.points())) r.fail(where + ": invalid point count");
     for (int n : t.rates_)  // expanded on first use: refused now if it could not be

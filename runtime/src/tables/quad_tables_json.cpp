@@ -2,6 +2,7 @@
 // stencilgen: v<V>/n<N>.json and regular/n<2N>.json) into the same in-memory
 // form as the binary file. Exact rationals become doubles; the binary file is
 // the fast path. Every name, count, index and rational is checked.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -321,14 +322,15 @@ QuadTables QuadTables::load_json_directory(const std::string& dir, std::uint64_t
         const json& e = sectors[k];
         Sector sec;
         const std::string kind = f.string(f.member(e, "kind", field), field + ".kind");
-        if (kind != "crease" && kind != "corner") f.fail(field + ".kind", "expected \"crease\" or \"corner\"");
-        sec.key.corner = kind == "corner";
+        if (kind == "corner") sec.key.rule = SectorRule::Corner;
+        else if (kind == "dart") sec.key.rule = SectorRule::Dart;
+        else if (kind != "crease") f.fail(field + ".kind", "expected \"crease\", \"corner\" or \"dart\"");
         const std::int64_t faces = f.integer(f.member(e, "faces", field), field + ".faces");
         const std::int64_t position = f.integer(f.member(e, "position", field), field + ".position");
-        if (faces < 1 || faces > limits::kMaxValence || position < 0 || position >= faces)
-          f.fail(field, "face count outside 1.." + std::to_string(limits::kMaxValence) + " or position outside 0..faces-1");
-        sec.key.faces = static_cast<int>(faces);
-        sec.key.position = static_cast<int>(position);
+        sec.key.faces = static_cast<int>(std::clamp<std::int64_t>(faces, -1, 1024));
+        sec.key.position = static_cast<int>(std::clamp<std::int64_t>(position, -1, 1024));
+        if (!sec.key.valid())
+          f.fail(field, "face count outside 1.." + std::to_string(limits::kMaxValence) + " (a dart: 3..) or position outside 0..faces-1");
         const std::size_t points = static_cast<std::size_t>(sec.key.points());
         if (f.integer(f.member(e, "points", field), field + ".points") != static_cast<std::int64_t>(points))
           f.fail(field + ".points", "expected " + std::to_string(points));
