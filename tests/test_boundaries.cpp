@@ -69,6 +69,36 @@ Point curve_limit(const std::vector<Point>& p, std::size_t i, double b, bool per
   return r;
 }
 
+// Largest differences to OpenSubdiv Bfr (Catmull-Clark, the same boundary
+// option), over the mesh size: of every node of every quad at rates 1..8, and
+// of the derivatives at four parameters per quad (Bfr's parameterisation of
+// other polygons is its own).
+std::pair<double, double> bfr_boundary_difference(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, bool corners) {
+  const Surface surface = boundary_surface(tables, mesh, corners);
+  bfr_reference::Creasing options;
+  options.boundary_corners = corners;
+  bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices, bfr_reference::osd::Sdc::SCHEME_CATMARK,
+                                    {}, options);
+  const double size = extent(mesh);
+  double worst = 0, worst_derivative = 0;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    if (mesh.face_sizes[f] != 4) continue;
+    REQUIRE(reference.has_surface(static_cast<int>(f)));
+    for (long n = 1; n <= 8; ++n)
+      for (long j = 0; j <= n; ++j)
+        for (long i = 0; i <= n; ++i) {
+          const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n;
+          worst = std::max(worst, distance(surface.evaluate(f, grid(i, j, n)), reference.evaluate(static_cast<int>(f), u, v)) / size);
+        }
+    for (const auto& [u, v] : {std::pair{0.3, 0.7}, {0.5, 0.125}, {0.9, 0.05}, {0.02, 0.01}}) {
+      const Derivatives ours = surface.derivatives(f, u, v);
+      const auto ref = reference.derivatives(static_cast<int>(f), u, v);
+      worst_derivative = std::max({worst_derivative, distance(ours.du, ref[1]) / size, distance(ours.dv, ref[2]) / size});
+    }
+  }
+  return {worst, worst_derivative};
+}
+
 }  // namespace
 
 TEST_CASE("boundaries: every node of every face at rates 1..8 equals OpenSubdiv Bfr with the same boundary option",
@@ -86,28 +116,7 @@ TEST_CASE("boundaries: every node of every face at rates 1..8 equals OpenSubdiv 
                         Case{"box open at the top, edge-only", without_first_face("cube"), false},
                         Case{"open house (triangles), edge-only", house(true), false}}) {
     INFO(c.name);
-    const Surface surface = boundary_surface(tables, c.mesh, c.corners);
-    bfr_reference::Creasing options;
-    options.boundary_corners = c.corners;
-    bfr_reference::BfrLimit reference(c.mesh.positions, c.mesh.face_sizes, c.mesh.face_vertices,
-                                      bfr_reference::osd::Sdc::SCHEME_CATMARK, {}, options);
-    const double size = extent(c.mesh);
-    double worst = 0, worst_derivative = 0;
-    for (std::size_t f = 0; f < c.mesh.face_count(); ++f) {
-      if (c.mesh.face_sizes[f] != 4) continue;  // Bfr's parameterisation of other polygons is its own
-      REQUIRE(reference.has_surface(static_cast<int>(f)));
-      for (long n = 1; n <= 8; ++n)
-        for (long j = 0; j <= n; ++j)
-          for (long i = 0; i <= n; ++i) {
-            const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n;
-            worst = std::max(worst, distance(surface.evaluate(f, grid(i, j, n)), reference.evaluate(static_cast<int>(f), u, v)) / size);
-          }
-      for (const auto& [u, v] : {std::pair{0.3, 0.7}, {0.5, 0.125}, {0.9, 0.05}}) {
-        const Derivatives ours = surface.derivatives(f, u, v);
-        const auto ref = reference.derivatives(static_cast<int>(f), u, v);
-        worst_derivative = std::max({worst_derivative, distance(ours.du, ref[1]) / size, distance(ours.dv, ref[2]) / size});
-      }
-    }
+    const auto [worst, worst_derivative] = bfr_boundary_difference(tables, c.mesh, c.corners);
     CHECK(worst < 1e-10);
     CHECK(worst_derivative < 1e-10);
     WARN(c.name << ": largest difference to Bfr over the mesh size " << worst << " (positions), " << worst_derivative
@@ -137,27 +146,7 @@ TEST_CASE("boundaries: vertices on the boundary in 1..8 faces (boundary sectors)
   }
   for (const Case& c : cases) {
     INFO(c.name);
-    const Surface surface = boundary_surface(tables, c.mesh, c.corners);
-    bfr_reference::Creasing options;
-    options.boundary_corners = c.corners;
-    bfr_reference::BfrLimit reference(c.mesh.positions, c.mesh.face_sizes, c.mesh.face_vertices,
-                                      bfr_reference::osd::Sdc::SCHEME_CATMARK, {}, options);
-    const double size = extent(c.mesh);
-    double worst = 0, worst_derivative = 0;
-    for (std::size_t f = 0; f < c.mesh.face_count(); ++f) {
-      REQUIRE(reference.has_surface(static_cast<int>(f)));
-      for (long n = 1; n <= 8; ++n)
-        for (long j = 0; j <= n; ++j)
-          for (long i = 0; i <= n; ++i) {
-            const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n;
-            worst = std::max(worst, distance(surface.evaluate(f, grid(i, j, n)), reference.evaluate(static_cast<int>(f), u, v)) / size);
-          }
-      for (const auto& [u, v] : {std::pair{0.3, 0.7}, {0.5, 0.125}, {0.9, 0.05}, {0.02, 0.01}}) {
-        const Derivatives ours = surface.derivatives(f, u, v);
-        const auto ref = reference.derivatives(static_cast<int>(f), u, v);
-        worst_derivative = std::max({worst_derivative, distance(ours.du, ref[1]) / size, distance(ours.dv, ref[2]) / size});
-      }
-    }
+    const auto [worst, worst_derivative] = bfr_boundary_difference(tables, c.mesh, c.corners);
     CHECK(worst < 1e-10);
     CHECK(worst_derivative < 1e-10);
     WARN(c.name << ": largest difference to Bfr over the mesh size " << worst << " (positions), " << worst_derivative

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <boost/multiprecision/eigen.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 
@@ -53,6 +54,28 @@ Matrix eigenspace(const Matrix& b, Matrix start, double estimate, Real& lambda) 
     lambda = rq.trace() / Real(x.cols());
   }
   return x;
+}
+
+// t_u = c(end_u) L and t_v = c(end_v) L, with c = W R the characteristic map;
+// returns the largest magnitude of their weights (not yet scaled).
+Real combine_tangents(const Matrix& l, const Matrix& r, const std::vector<Real>& end_u, const std::vector<Real>& end_v,
+                      TangentStencils& out, std::array<Real, 4>& c) {
+  const Eigen::Index m = l.rows();
+  auto characteristic = [&](const std::vector<Real>& w, Real& c0, Real& c1) {
+    c0 = 0, c1 = 0;
+    for (Eigen::Index h = 0; h < m; ++h) c0 += w[static_cast<std::size_t>(h)] * r(h, 0), c1 += w[static_cast<std::size_t>(h)] * r(h, 1);
+  };
+  characteristic(end_u, c[0], c[1]);
+  characteristic(end_v, c[2], c[3]);
+  out.u.resize(static_cast<std::size_t>(m));
+  out.v.resize(static_cast<std::size_t>(m));
+  Real largest = 0;
+  for (Eigen::Index h = 0; h < m; ++h) {
+    out.u[static_cast<std::size_t>(h)] = c[0] * l(h, 0) + c[1] * l(h, 1);
+    out.v[static_cast<std::size_t>(h)] = c[2] * l(h, 0) + c[3] * l(h, 1);
+    largest = std::max({largest, magnitude(out.u[static_cast<std::size_t>(h)]), magnitude(out.v[static_cast<std::size_t>(h)])});
+  }
+  return largest;
 }
 
 }  // namespace
@@ -114,21 +137,8 @@ std::optional<TangentStencils> tangent_stencils(const std::vector<std::vector<Re
   out.second_eigenvalue = lambda_left;
 
   // The characteristic map at the ends of the patch's two edges from the vertex.
-  auto characteristic = [&](const std::vector<Real>& w) {
-    Real c0 = 0, c1 = 0;
-    for (Eigen::Index h = 0; h < m; ++h) c0 += w[static_cast<std::size_t>(h)] * r(h, 0), c1 += w[static_cast<std::size_t>(h)] * r(h, 1);
-    return std::pair{c0, c1};
-  };
-  const auto [cu0, cu1] = characteristic(end_u);
-  const auto [cv0, cv1] = characteristic(end_v);
-  out.u.resize(static_cast<std::size_t>(m));
-  out.v.resize(static_cast<std::size_t>(m));
-  Real largest = 0;
-  for (Eigen::Index h = 0; h < m; ++h) {
-    out.u[static_cast<std::size_t>(h)] = cu0 * l(h, 0) + cu1 * l(h, 1);
-    out.v[static_cast<std::size_t>(h)] = cv0 * l(h, 0) + cv1 * l(h, 1);
-    largest = std::max({largest, magnitude(out.u[static_cast<std::size_t>(h)]), magnitude(out.v[static_cast<std::size_t>(h)])});
-  }
+  std::array<Real, 4> c;
+  const Real largest = combine_tangents(l, r, end_u, end_v, out, c);
   if (largest == 0) {
     why = "the characteristic map vanishes at the patch's corners";
     return std::nullopt;
@@ -233,30 +243,23 @@ std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::
     return std::nullopt;
   }
   r = r * (l.transpose() * r).inverse();  // biorthogonal: L^T R = I
-  auto characteristic = [&](const std::vector<Real>& w) {
-    Real c0 = 0, c1 = 0;
-    for (Eigen::Index h = 0; h < m; ++h) c0 += w[static_cast<std::size_t>(h)] * r(h, 0), c1 += w[static_cast<std::size_t>(h)] * r(h, 1);
-    return std::pair{c0, c1};
-  };
-  const auto [cu0, cu1] = characteristic(end_u);
-  const auto [cv0, cv1] = characteristic(end_v);
   // Regularity of the characteristic map over the patch: the signed area of every sampled cell.
   if (g < 1 || grid.size() != static_cast<std::size_t>((g + 1) * (g + 1))) throw Error("internal: boundary_tangent_stencils: grid size");
-  std::vector<std::pair<double, double>> c(grid.size());
+  std::vector<std::pair<double, double>> image(grid.size());
   for (std::size_t k = 0; k < grid.size(); ++k) {
     double x = 0, y = 0;
     for (Eigen::Index h = 0; h < m; ++h) x += grid[k][static_cast<std::size_t>(h)] * to_double(r(h, 0)), y += grid[k][static_cast<std::size_t>(h)] * to_double(r(h, 1));
-    c[k] = {x, y};
+    image[k] = {x, y};
   }
   long positive = 0, negative = 0;
   double largest_area = 0;
   std::vector<double> areas;
   for (long j = 0; j < g; ++j)
     for (long i = 0; i < g; ++i) {
-      const auto& a = c[static_cast<std::size_t>(j * (g + 1) + i)];
-      const auto& b = c[static_cast<std::size_t>(j * (g + 1) + i + 1)];
-      const auto& d = c[static_cast<std::size_t>((j + 1) * (g + 1) + i + 1)];
-      const auto& e = c[static_cast<std::size_t>((j + 1) * (g + 1) + i)];
+      const auto& a = image[static_cast<std::size_t>(j * (g + 1) + i)];
+      const auto& b = image[static_cast<std::size_t>(j * (g + 1) + i + 1)];
+      const auto& d = image[static_cast<std::size_t>((j + 1) * (g + 1) + i + 1)];
+      const auto& e = image[static_cast<std::size_t>((j + 1) * (g + 1) + i)];
       const double area = (d.first - a.first) * (e.second - b.second) - (d.second - a.second) * (e.first - b.first);
       areas.push_back(area);
       largest_area = std::max(largest_area, std::abs(area));
@@ -275,15 +278,9 @@ std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::
   TangentStencils out;
   out.eigenvalue = lambda[0];
   out.second_eigenvalue = lambda[1];
-  out.u.resize(static_cast<std::size_t>(m));
-  out.v.resize(static_cast<std::size_t>(m));
-  Real largest = 0;
-  for (Eigen::Index h = 0; h < m; ++h) {
-    out.u[static_cast<std::size_t>(h)] = cu0 * l(h, 0) + cu1 * l(h, 1);
-    out.v[static_cast<std::size_t>(h)] = cv0 * l(h, 0) + cv1 * l(h, 1);
-    largest = std::max({largest, magnitude(out.u[static_cast<std::size_t>(h)]), magnitude(out.v[static_cast<std::size_t>(h)])});
-  }
-  if (largest == 0 || cu0 * cv1 - cu1 * cv0 == 0) {
+  std::array<Real, 4> c;  // c(end_u), c(end_v)
+  const Real largest = combine_tangents(l, r, end_u, end_v, out, c);
+  if (largest == 0 || c[0] * c[3] - c[1] * c[2] == 0) {
     why = "the characteristic map does not separate the patch's corners";
     return std::nullopt;
   }

@@ -22,6 +22,14 @@ ojson rows_json(const std::vector<SparseRow>& rows) {
   return out;
 }
 
+// A0 ("ev_child") and the three regular children.
+void put_subdivision(ojson& entry, const PatchSubdivision& s) {
+  entry["ev_child"] = rows_json(s.extraordinary_child);
+  ojson children = ojson::array();
+  for (const auto& child : s.regular_children) children.push_back(rows_json(child));
+  entry["regular_children"] = children;
+}
+
 // The tangent stencils, or null; `both`: with the second eigenvalue (boundary sectors).
 ojson tangents_json(const std::optional<EvTangents>& tangents, bool both) {
   if (!tangents) return nullptr;
@@ -87,10 +95,7 @@ std::string quad_descent_to_json(const QuadScheme& scheme, const QuadDescent& d)
     ojson entry;
     entry["valence"] = v.valence;
     entry["nonnegative"] = v.nonnegative;
-    entry["ev_child"] = rows_json(v.subdivision.extraordinary_child);
-    ojson children = ojson::array();
-    for (const auto& child : v.subdivision.regular_children) children.push_back(rows_json(child));
-    entry["regular_children"] = children;
+    put_subdivision(entry, v.subdivision);
     // Version 2: the tangent stencils at the vertex, in 40 significant digits
     // (lambda is irrational in general), with the residual max |t A0 - lambda t|.
     entry["tangents"] = tangents_json(v.tangents, false);
@@ -110,10 +115,7 @@ std::string quad_descent_to_json(const QuadScheme& scheme, const QuadDescent& d)
     ojson limit = ojson::array();
     for (const Rational& x : sec.limit) limit.push_back(to_string(x));
     entry["limit"] = limit;
-    entry["ev_child"] = rows_json(sec.subdivision.extraordinary_child);
-    ojson children = ojson::array();
-    for (const auto& child : sec.subdivision.regular_children) children.push_back(rows_json(child));
-    entry["regular_children"] = children;
+    put_subdivision(entry, sec.subdivision);
     entry["tangents"] = tangents_json(sec.tangents, true);
     if (!sec.tangents) entry["no_tangents"] = sec.no_tangents;
     sectors.push_back(entry);

@@ -42,6 +42,17 @@ void put_regular_descent(std::string& out, const QuadDescent& d) {
   }
 }
 
+// The flag, then the eigenvalue (and, for a boundary sector, the second one), the residual and the two stencils.
+void put_tangents(std::string& out, const std::optional<EvTangents>& t, bool second) {
+  put<std::uint8_t>(out, t ? 1 : 0);
+  if (!t) return;
+  put<double>(out, to_double(t->eigenvalue));
+  if (second) put<double>(out, to_double(t->second_eigenvalue));
+  put<double>(out, to_double(t->residual));
+  for (const Real& w : t->u) put<double>(out, to_double(w));
+  for (const Real& w : t->v) put<double>(out, to_double(w));
+}
+
 std::uint64_t nonzeros(const std::vector<SparseRow>& rows) {
   std::uint64_t n = 0;
   for (const SparseRow& r : rows) n += r.size();
@@ -180,13 +191,7 @@ std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& 
     put_rows(out, descent.subdivision.extraordinary_child);
     for (const auto& child : descent.subdivision.regular_children) put_rows(out, child);
     // Version 6: the tangent stencils at the vertex (ev_tangents.hpp), in double whatever the precision.
-    put<std::uint8_t>(out, descent.tangents ? 1 : 0);
-    if (descent.tangents) {
-      put<double>(out, to_double(descent.tangents->eigenvalue));
-      put<double>(out, to_double(descent.tangents->residual));
-      for (const Real& w : descent.tangents->u) put<double>(out, to_double(w));
-      for (const Real& w : descent.tangents->v) put<double>(out, to_double(w));
-    }
+    put_tangents(out, descent.tangents, false);
   }
   // Version 8: the boundary sectors (always generated: the reader expands each on first use).
   put<std::uint32_t>(out, static_cast<std::uint32_t>(set.descent->sectors.size()));
@@ -199,14 +204,7 @@ std::string quad_tables_to_binary(const QuadScheme& scheme, const QuadTableSet& 
     put<std::uint8_t>(out, sec.nonnegative ? 1 : 0);
     put_rows(out, sec.subdivision.extraordinary_child);
     for (const auto& child : sec.subdivision.regular_children) put_rows(out, child);
-    put<std::uint8_t>(out, sec.tangents ? 1 : 0);
-    if (sec.tangents) {
-      put<double>(out, to_double(sec.tangents->eigenvalue));
-      put<double>(out, to_double(sec.tangents->second_eigenvalue));
-      put<double>(out, to_double(sec.tangents->residual));
-      for (const Real& w : sec.tangents->u) put<double>(out, to_double(w));
-      for (const Real& w : sec.tangents->v) put<double>(out, to_double(w));
-    }
+    put_tangents(out, sec.tangents, true);
   }
   put<std::uint64_t>(out, fmt::fnv1a64(reinterpret_cast<const unsigned char*>(out.data()), out.size()));
   return out;
