@@ -345,7 +345,7 @@ TEST_CASE("infinitely sharp creases and corners (sharpness >= 10) on quad meshes
 }
 
 TEST_CASE("at an infinitely sharp dart the limit point is the exact one, which OpenSubdiv's refined points approach and "
-          "its dart limit mask (the smooth one) misses",
+          "its dart limit mask (the smooth one) misses, and the normal the limit of the normals next to it",
           "[runtime][creases][sharp][opensubdiv]") {
   const auto tables = catmull_clark();
   const Mesh cube = load("cube");
@@ -388,6 +388,27 @@ TEST_CASE("at an infinitely sharp dart the limit point is the exact one, which O
   const double e = std::ldexp(1.0, -30);
   const double u = (c == 1 || c == 2) ? 1 - e : e, v = c >= 2 ? 1 - e : e;
   CHECK(distance(surface.evaluate(face, u, v, 1e-14).point, ours) / size < 1e-8);
+  // The normal at the dart (its tangent stencils: the slit folded shut) is the limit of the normals next to it,
+  // from every face round it.
+  auto angle = [](const Point& p, const Point& q) {
+    const Point x{p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
+    return std::atan2(std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]), p[0] * q[0] + p[1] * q[1] + p[2] * q[2]);
+  };
+  for (std::size_t g = 0; g < cube.face_count(); ++g)
+    for (int k = 0; k < 4; ++k) {
+      if (cube.face_vertices[4 * g + static_cast<std::size_t>(k)] != a) continue;
+      const double cu = k == 1 || k == 2, cv = k >= 2;
+      const Point n = surface.normal(g, cu, cv);
+      std::vector<double> off;
+      for (int depth : {5, 10, 20}) {
+        const double d = std::ldexp(1.0, -depth);
+        off.push_back(angle(surface.derivatives(g, cu == 1 ? 1 - d : d, cv == 1 ? 1 - d : d).normal(), n));
+      }
+      CHECK(off[2] < 1e-3);
+      CHECK(off[2] < off[1]);
+      CHECK(off[1] < off[0]);
+      CHECK(angle(n, surface.normal(face, c == 1 || c == 2, c >= 2)) < 1e-10);
+    }
 }
 
 TEST_CASE("infinitely sharp creases: tessellations stay closed across them, darts too, and a cone point is refused",

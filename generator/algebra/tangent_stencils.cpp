@@ -194,7 +194,7 @@ std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::
                                                          const std::vector<Real>& boundary_tangent,
                                                          const std::vector<std::vector<double>>& grid, long g,
                                                          std::string& why) {
-  if (end_u.size() != end_v.size() || boundary_tangent.size() != end_u.size())
+  if (end_u.size() != end_v.size() || (!boundary_tangent.empty() && boundary_tangent.size() != end_u.size()))
     throw Error("internal: boundary_tangent_stencils: sizes differ");
   const Matrix a = square(a0, end_u.size());
   const Eigen::Index m = a.rows();
@@ -228,19 +228,21 @@ std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::
       r.col(k) = eigenspace(a, start_near(right, estimate, 1), estimate, unused).col(0);
     }
   }
-  // Is the boundary curve's tangent in the span of l_1, l_2? (least squares in Real)
-  Eigen::Matrix<Real, Eigen::Dynamic, 1> b(m);
-  for (Eigen::Index h = 0; h < m; ++h) b(h) = boundary_tangent[static_cast<std::size_t>(h)];
-  const Matrix gram = l.transpose() * l;
-  const Eigen::Matrix<Real, Eigen::Dynamic, 1> coeff = gram.inverse() * (l.transpose() * b);
-  const Real off = sqrt((b - l * coeff).squaredNorm()), size = sqrt(b.squaredNorm());
-  if (size == 0) throw Error("internal: boundary_tangent_stencils: no boundary tangent");
-  if (off > size * Real("1e-40")) {
-    why = "the two largest eigenvalues of A0 below 1 (" + describe(s1) + ", " + describe(s2) +
-          ") have eigenvectors that do not contain the boundary curve's tangent (1/2): Reif's condition fails there, the "
-          "surface approaches the vertex along other directions from inside than along its boundary, and the spectrum "
-          "gives no tangent plane";
-    return std::nullopt;
+  // Is the boundary curve's tangent in the span of l_1, l_2? (least squares in Real; no boundary: nothing to contain)
+  if (!boundary_tangent.empty()) {
+    Eigen::Matrix<Real, Eigen::Dynamic, 1> b(m);
+    for (Eigen::Index h = 0; h < m; ++h) b(h) = boundary_tangent[static_cast<std::size_t>(h)];
+    const Matrix gram = l.transpose() * l;
+    const Eigen::Matrix<Real, Eigen::Dynamic, 1> coeff = gram.inverse() * (l.transpose() * b);
+    const Real off = sqrt((b - l * coeff).squaredNorm()), size = sqrt(b.squaredNorm());
+    if (size == 0) throw Error("internal: boundary_tangent_stencils: no boundary tangent");
+    if (off > size * Real("1e-40")) {
+      why = "the two largest eigenvalues of A0 below 1 (" + describe(s1) + ", " + describe(s2) +
+            ") have eigenvectors that do not contain the boundary curve's tangent (1/2): Reif's condition fails there, the "
+            "surface approaches the vertex along other directions from inside than along its boundary, and the spectrum "
+            "gives no tangent plane";
+      return std::nullopt;
+    }
   }
   r = r * (l.transpose() * r).inverse();  // biorthogonal: L^T R = I
   // Regularity of the characteristic map over the patch: the signed area of every sampled cell.

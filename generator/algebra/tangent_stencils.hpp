@@ -57,7 +57,8 @@ std::optional<TangentStencils> tangent_stencils(const std::vector<std::vector<Re
 // characteristic map c = W R sampled there must be regular (every cell turned
 // the same way), else its two components do not span the tangent plane (one
 // may be a function of the other, as for an eigenvalue that is the square of
-// the other one).
+// the other one). An empty `boundary_tangent` asks for no such containment (a
+// vertex with no boundary through it: a dart, whose slit is folded shut).
 std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::vector<Real>>& a0,
                                                          const std::vector<Real>& end_u, const std::vector<Real>& end_v,
                                                          const std::vector<Real>& boundary_tangent,

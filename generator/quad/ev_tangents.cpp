@@ -21,18 +21,6 @@ std::optional<EvTangents> ev_tangents(const QuadScheme& scheme, int valence, con
   return tangent_stencils(a0, end(1, 0), end(0, 1), why);
 }
 
-namespace {
-
-std::vector<std::vector<Real>> real_matrix(const PatchSubdivision& subdivision) {
-  const std::size_t m = subdivision.extraordinary_child.size();
-  std::vector<std::vector<Real>> a0(m, std::vector<Real>(m, Real(0)));
-  for (std::size_t r = 0; r < m; ++r)
-    for (const auto& [c, w] : subdivision.extraordinary_child[r]) a0[r][c] += to_real(w);
-  return a0;
-}
-
-}  // namespace
-
 std::optional<EvTangents> sector_tangents(const QuadScheme& scheme, const BoundarySector& sector,
                                           const PatchSubdivision& subdivision, const std::vector<Rational>& limit,
                                           std::string& why) {
@@ -40,28 +28,53 @@ std::optional<EvTangents> sector_tangents(const QuadScheme& scheme, const Bounda
     why = "a corner has no tangent plane";
     return std::nullopt;
   }
-  if (sector.kind == SectorKind::Dart) {
-    why = "tangent stencils at a dart are not made yet";
-    return std::nullopt;
-  }
   constexpr long kSamples = 8;  // the characteristic map's regularity is checked on this grid
   const PatchGrid values = solve_patch_recursion(subdivision, limit, kSamples, solve_by_residues(scheme.curve, kSamples));
-  auto at = [&](long i, long j) {
-    std::vector<Real> w;
-    for (const Rational& x : values.at(i, j)) w.push_back(to_real(x));
-    return w;
-  };
-  // The boundary curve's tangent at the vertex: e_k - e_0 (its left eigenvector for 1/2).
   const SectorLayout layout(sector);
-  std::vector<Real> boundary(subdivision.points, Real(0));
-  boundary[layout.edge(sector.faces)] = 1;
-  boundary[layout.edge(0)] = -1;
+  const std::size_t m = subdivision.points;
+  // A dart's e_k is e_0 again (the two sides of its slit): its surface is that
+  // of the patch with e_k folded into e_0, whose A0 has no slit modes (such as
+  // e_k - e_0, eigenvalue 1/2, which is 0 on any mesh). So the tangent plane
+  // is that patch's: its two leading eigenvalues with a regular map, with no
+  // boundary curve to contain; the stencils are then spread back (0 at e_k).
+  const bool dart = sector.kind == SectorKind::Dart;
+  std::vector<std::size_t> to(m);
+  for (std::size_t h = 0, next = 0; h < m; ++h) to[h] = dart && h == layout.edge(sector.faces) ? m : next++;
+  if (dart) to[layout.edge(sector.faces)] = to[layout.edge(0)];
+  const std::size_t n = dart ? m - 1 : m;
+  std::vector<std::vector<Real>> a0(n, std::vector<Real>(n, Real(0)));
+  for (std::size_t r = 0; r < m; ++r) {
+    if (dart && r == layout.edge(sector.faces)) continue;  // the copy's row repeats e_0's
+    for (const auto& [c, w] : subdivision.extraordinary_child[r]) a0[to[r]][to[c]] += to_real(w);
+  }
+  auto folded = [&](const std::vector<Rational>& w) {
+    std::vector<Real> out(n, Real(0));
+    for (std::size_t h = 0; h < m; ++h) out[to[h]] += to_real(w[h]);
+    return out;
+  };
   std::vector<std::vector<double>> grid;
   for (const auto& w : values.stencils) {
     grid.emplace_back();
-    for (const Rational& x : w) grid.back().push_back(to_double(x));
+    for (const Real& x : folded(w)) grid.back().push_back(to_double(x));
   }
-  return boundary_tangent_stencils(real_matrix(subdivision), at(kSamples, 0), at(kSamples, kSamples), boundary, grid, kSamples, why);
+  // A boundary's curve tangent at the vertex: e_k - e_0 (its left eigenvector for 1/2).
+  std::vector<Real> boundary;
+  if (!dart) {
+    boundary.assign(m, Real(0));
+    boundary[layout.edge(sector.faces)] = 1;
+    boundary[layout.edge(0)] = -1;
+  }
+  auto t = boundary_tangent_stencils(a0, folded(values.at(kSamples, 0)), folded(values.at(kSamples, kSamples)), boundary, grid,
+                                     kSamples, why);
+  if (t && dart) {
+    for (std::vector<Real>* s : {&t->u, &t->v}) {
+      std::vector<Real> spread(m, Real(0));
+      for (std::size_t h = 0; h < m; ++h)
+        if (h != layout.edge(sector.faces)) spread[h] = (*s)[to[h]];
+      *s = std::move(spread);
+    }
+  }
+  return t;
 }
 
 }  // namespace sg

@@ -6,6 +6,7 @@
 #include "common/hash.hpp"
 #include "common/json_document.hpp"
 #include "quad/quad_descent.hpp"
+#include "quad/boundary_sector.hpp"
 #include "quad/quad_descent_json.hpp"
 
 namespace sg {
@@ -120,6 +121,11 @@ void verify_sectors(const DocumentReader<ojson>& r, const ojson& sectors, const 
       std::vector<Real> product(points, Real(0));
       for (std::size_t row = 0; row < points && row < a0.size(); ++row)
         for (const auto& [column, weight] : a0[row]) product[column] += stored[w][row] * to_real(weight);
+      if (sector.kind == SectorKind::Dart) {  // e_k is e_0 again: the plane is kept by A0 with the slit folded shut
+        const SectorLayout layout(sector);
+        product[layout.edge(0)] += product[layout.edge(sector.faces)];
+        product[layout.edge(sector.faces)] = 0;
+      }
       Real pu = 0, pv = 0;
       for (std::size_t h = 0; h < points; ++h) pu += product[h] * stored[0][h], pv += product[h] * stored[1][h];
       const Real a = det == 0 ? Real(0) : (pu * vv - pv * uv) / det, b = det == 0 ? Real(0) : (pv * uu - pu * uv) / det;

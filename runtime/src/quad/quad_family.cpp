@@ -606,8 +606,8 @@ Point QuadFamily::normal_any(std::size_t face, P u, P v, const Point* prepared) 
   if (d.tangent_u.size() != points.size() && is_sector_kind(valence)) {
     const SectorKey s = sector_of(valence);
     if (s.rule == SectorRule::Dart)
-      throw EvaluationError("there is no normal at the end of an infinitely sharp crease (a dart) yet: the tables hold no "
-                            "tangent stencils there; the surface round it evaluates as anywhere else");
+      throw EvaluationError("the tables hold no tangent stencils at this dart (the end of an infinitely sharp crease), so "
+                            "there is no normal at it: regenerate them with this stencilgen");
     throw EvaluationError(s.rule == SectorRule::Corner ? "a corner has no tangent plane, so there is no normal at it"
                                    : "this scheme's boundary rules give no tangent plane at a boundary vertex in " +
                                          std::to_string(s.faces) + " face" + (s.faces == 1 ? "" : "s") +
