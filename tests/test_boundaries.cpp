@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <random>
+#include <set>
 #include <sstream>
 
 #include "bfr_distance.hpp"
@@ -449,6 +450,119 @@ TEST_CASE("boundaries: tessellations are closed except along the mesh's boundari
         INFO(scheme << ", " << c.name << ", trial " << trial);
         check_rimmed_manifold(tessellate(surface, rates), c.loops, 0);
       }
+    }
+  }
+}
+
+namespace {
+
+// The limit points where the surface ends, from Bfr: on every edge of a face
+// that has a surface and none across it (the mesh's boundary, or a hole), the
+// nodes t/n along it in the face's (u, v) (a quad's or a triangle's corners).
+std::vector<Point> bfr_rim(const Mesh& mesh, const std::vector<int>& holes, int n, bfr_reference::BfrLimit& reference) {
+  std::vector<char> hole(mesh.face_count(), 0);
+  for (int h : holes) hole[static_cast<std::size_t>(h)] = 1;
+  std::map<std::pair<int, int>, int> faces_on;  // undirected edge -> faces with a surface
+  std::vector<std::size_t> offset(mesh.face_count() + 1, 0);
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) offset[f + 1] = offset[f] + static_cast<std::size_t>(mesh.face_sizes[f]);
+  auto vertex = [&](std::size_t f, int k) { return mesh.face_vertices[offset[f] + static_cast<std::size_t>(k % mesh.face_sizes[f])]; };
+  for (std::size_t f = 0; f < mesh.face_count(); ++f)
+    for (int k = 0; k < mesh.face_sizes[f] && !hole[f]; ++k)
+      ++faces_on[std::minmax(vertex(f, k), vertex(f, k + 1))];
+  std::vector<Point> out;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    if (hole[f]) continue;
+    const int size = mesh.face_sizes[f];
+    for (int k = 0; k < size; ++k) {
+      if (faces_on[std::minmax(vertex(f, k), vertex(f, k + 1))] != 1) continue;
+      for (int t = 0; t < n; ++t) {  // node n is the next edge's node 0
+        const double s = static_cast<double>(t) / n;
+        double u = 0, v = 0;
+        if (size == 4) {
+          const double corner[4][2] = {{s, 0}, {1, s}, {1 - s, 1}, {0, 1 - s}};
+          u = corner[k][0], v = corner[k][1];
+        } else {
+          const double corner[3][2] = {{s, 0}, {1 - s, s}, {0, 1 - s}};
+          u = corner[k][0], v = corner[k][1];
+        }
+        out.push_back(reference.evaluate(static_cast<int>(f), u, v));
+      }
+    }
+  }
+  return out;
+}
+
+// The tessellation's rim (the points on edges of one polygon) against the
+// expected points, both ways, to float rounding; the largest distance either way.
+double rim_distance(const PolygonSoup& soup, const std::vector<Point>& expected, std::size_t& rim_count) {
+  std::set<std::pair<int, int>> directed;
+  auto polygon = [&](const int* p, int k) {
+    for (int i = 0; i < k; ++i) directed.insert({p[i], p[(i + 1) % k]});
+  };
+  for (const auto& q : soup.quads) polygon(q.data(), 4);
+  for (const auto& t : soup.triangles) polygon(t.data(), 3);
+  std::set<int> rim;
+  for (const auto& [a, b] : directed)
+    if (!directed.count({b, a})) rim.insert(a), rim.insert(b);
+  rim_count = rim.size();
+  auto nearest = [](const Point& p, const std::vector<Point>& among) {
+    double best = HUGE_VAL;
+    for (const Point& q : among) best = std::min(best, distance(p, q));
+    return best;
+  };
+  std::vector<Point> ours;
+  for (int r : rim) {
+    const auto& p = soup.positions[static_cast<std::size_t>(r)];
+    ours.push_back({p[0], p[1], p[2]});
+  }
+  double worst = 0;
+  for (const Point& p : ours) worst = std::max(worst, nearest(p, expected));
+  for (const Point& p : expected) worst = std::max(worst, nearest(p, ours));
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("boundaries and holes: a tessellation reaches the surface's edge: its rim is the limit points of every edge "
+          "the surface ends at, at the faces' grid nodes (OpenSubdiv Bfr), with unit normals",
+          "[runtime][boundaries][holes][tessellation]") {
+  struct Case {
+    const char* name;
+    Mesh mesh;
+    bool corners;
+    std::vector<int> holes;
+  };
+  const auto catmark = tables_for("catmull-clark");
+  const Mesh torus = read_obj((fs::path(STENCIL_SOURCE_DIR) / "meshes" / "tri-torus.obj").string());
+  const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 1-8", "sgt").string());
+  for (const Case& c : {Case{"open grid", open_grid(4, 3), true, {}}, Case{"open grid, edge-only", open_grid(3, 3), false, {}},
+                        Case{"tube", tube(7, 2), false, {}}, Case{"open box", without_first_face("cube"), false, {}},
+                        Case{"open box with a hole in its floor", without_first_face("cube"), false, {0}},
+                        Case{"L of three quads", l_shape(), false, {}}, Case{"fan of 1 sector", boundary_fan(1, 2), false, {}},
+                        Case{"fan of 3 sectors", boundary_fan(3, 2), false, {}},
+                        Case{"fan of 5 sectors with a hole", boundary_fan(5, 4), false, {37}},
+                        Case{"fan of 8 sectors", boundary_fan(8, 1), true, {}},
+                        Case{"Loop: triangle torus with two holes touching at a vertex", torus, false, {0, 2}}}) {
+    const bool triangles = c.mesh.face_sizes.front() == 3;
+    const Surface surface = triangles ? Surface(SurfaceTopology::create(loop, c.mesh.vertex_count(), c.mesh.face_sizes,
+                                                                        c.mesh.face_vertices, c.holes),
+                                                c.mesh.positions)
+                                      : boundary_surface(catmark, c.mesh, c.corners, c.holes);
+    bfr_reference::Creasing options;
+    options.boundary_corners = c.corners;
+    bfr_reference::BfrLimit reference(c.mesh.positions, c.mesh.face_sizes, c.mesh.face_vertices,
+                                      triangles ? bfr_reference::osd::Sdc::SCHEME_LOOP : bfr_reference::osd::Sdc::SCHEME_CATMARK,
+                                      c.holes, options);
+    const double size = extent(c.mesh);
+    for (int n : {2, 4, 8}) {
+      INFO(c.name << ", rate " << n);
+      const PolygonSoup soup = tessellate(surface, std::vector<int>(c.mesh.face_count(), n), {}, true);
+      const std::vector<Point> expected = bfr_rim(c.mesh, c.holes, n, reference);
+      std::size_t rim_count = 0;
+      CHECK(rim_distance(soup, expected, rim_count) <= 1e-6 * size);
+      CHECK(rim_count == expected.size());  // one point per node, none doubled or missing
+      for (const auto& normal : soup.normals)
+        CHECK(std::abs(std::hypot(normal[0], normal[1], normal[2]) - 1) < 1e-5);
     }
   }
 }

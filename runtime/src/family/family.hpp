@@ -13,6 +13,7 @@
 #include "mesh/connectivity.hpp"
 #include "range_runner.hpp"
 #include "refinement.hpp"
+#include "rim_node.hpp"
 #include "sub_domain.hpp"
 #include "stencil_runtime/derivatives.hpp"
 #include "stencil_runtime/exact_parameter.hpp"
@@ -89,6 +90,7 @@ struct TessellationLayout {
   std::vector<int> rates;
   std::vector<std::size_t> point_offsets;  // size prepared faces + 1
   std::vector<char> holes;                 // per prepared face (no points, no polygons), or empty
+  std::vector<RimNode> rim;                // the rim's points, after the faces' (family/seam_polygons.hpp)
   std::vector<std::array<int, 4>> quads;
   std::vector<std::array<int, 3>> triangles;
 };
@@ -185,6 +187,11 @@ class Family {
   // prepared positions, into out[layout.point_offsets[f]...].
   virtual void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
                       std::array<float, 3>* out) const = 0;
+  // The limit point at grid node t (0..n) of the edge from corner k of a
+  // prepared face at rate n (a rim point), and the same node in the patch
+  // coordinates that original() takes.
+  virtual Point edge_node(std::size_t prepared_face, int corner, int t, int n, const Point* prepared) const = 0;
+  virtual std::array<double, 2> edge_node_parameter(std::size_t prepared_face, int corner, int t, int n) const = 0;
 
  protected:
   // stencil() at a double that is no fraction of 64-bit integers: the descent in doubles.

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "family/rim_node.hpp"
 #include "mesh/uniform_topology.hpp"
 #include "stencil_runtime/limits.hpp"
 
@@ -39,13 +40,16 @@ void zipper(int na, int nb, const EmitQuad& quad, const EmitTri& tri) {
 // the row along the face's edge k (corner k -> k+1) at rate n; row(k, 0, n) is
 // the point at corner k.
 //
-// Holes (faces without a surface, `holes[f] != 0`): no zipper along their
-// edges, and round a vertex one fan per run of consecutive faces that are not
-// holes (none for a run of one or two faces: the zipper between two faces
-// already ends at their corner points). The rows along a hole's edges, the
-// fans' closing edges and the zippers' end edges then form its rim. The
-// mesh's own boundary is treated alike: no zipper along a boundary edge, and
-// a boundary vertex's open fan of faces is one run (split by its holes).
+// Rims: the faces' points are inside them (cell centres), so where a face has
+// no neighbour across an edge (the mesh's boundary, or a hole: a face without
+// a surface, `holes[f] != 0`) the tessellation goes on to the surface's edge
+// there: rim points at the edge's grid nodes at the face's rate (the limit
+// curve along that edge) and a strip of triangles from the face's row to them.
+// Round a vertex, each run of consecutive faces that are not holes and ends
+// at such edges gets one rim point at the vertex (its limit point; one per run,
+// so that two runs touching at a vertex stay two sheets) and a fan from it to
+// the run's corner points. Rim points follow the faces' points; rim_nodes()
+// says where each one lies.
 template <int K>
 class SeamPolygons {
  public:
@@ -54,14 +58,24 @@ class SeamPolygons {
   SeamPolygons(const Topology& topo, const std::vector<int>& rates, const std::vector<char>& holes)
       : topo_(topo), rates_(rates), holes_(holes), nh_(K * topo.faces()), nv_(topo.vertices()),
         quad_offset_(nh_ + nv_ + 1, 0), tri_offset_(nh_ + nv_ + 1, 0), vertex_owner_(nv_, UINT32_MAX) {
+    const bool rims = topo.has_boundary() || !holes_.empty();
+    if (rims) {
+      rim_offset_.assign(nh_ + 1, 0);
+      run_offset_.assign(nv_ + 1, 0);
+      rim_start_.assign(nh_, UINT32_MAX);
+      rim_end_.assign(nh_, UINT32_MAX);
+    }
     for (std::uint32_t h = 0; h < nh_; ++h) {
       const auto v = static_cast<std::size_t>(topo.vertex(Topology::face_of(h), Topology::corner_of(h)));
       const std::uint32_t o = topo.twin(h);
       // A boundary vertex's fan starts at its outgoing boundary half-edge.
       if (vertex_owner_[v] == UINT32_MAX || o == Topology::kNoTwin) vertex_owner_[v] = h;
       std::size_t q = 0, t = 0;
-      if (o != Topology::kNoTwin && h < o && !hole(Topology::face_of(h)) && !hole(Topology::face_of(o))) {
-        const auto na = static_cast<std::size_t>(rates[Topology::face_of(h)]);
+      const auto na = static_cast<std::size_t>(rates[Topology::face_of(h)]);
+      if (rim(h)) {
+        t = 2 * na - 1;  // the strip from the face's row to the na + 1 rim points
+        rim_offset_[h + 1] = na - 1;
+      } else if (o != Topology::kNoTwin && h < o && !hole(Topology::face_of(h)) && !hole(Topology::face_of(o))) {
         const auto nb = static_cast<std::size_t>(rates[Topology::face_of(o)]);
         if (na == nb) q = na - 1;
         else t = na + nb - 2;
@@ -69,18 +83,27 @@ class SeamPolygons {
       quad_offset_[h + 1] = quad_offset_[h] + q;
       tri_offset_[h + 1] = tri_offset_[h] + t;
     }
+    if (rims)
+      for (std::size_t h = 0; h < nh_; ++h) rim_offset_[h + 1] += rim_offset_[h];
     std::uint32_t ring[limits::kMaxValence];
     for (std::size_t v = 0; v < nv_; ++v) {
       // Without holes or boundaries the valence says it all; the ring is walked only to find them.
       bool open = false;
-      const int k = holes_.empty() && !topo.has_boundary() ? topo.valence(static_cast<int>(v)) : ring_of(v, ring, open);
-      std::size_t q = 0, t = 0;
+      const int k = !rims ? topo.valence(static_cast<int>(v)) : ring_of(v, ring, open);
+      std::size_t q = 0, t = 0, runs = 0;
       if (!open && (holes_.empty() || !ring_has_hole(ring, k))) {
         q = k == 4 ? 1 : 0;
         t = k == 4 ? 0 : static_cast<std::size_t>(k - 2);
       } else {
-        for_each_run(ring, k, open, [&](const std::uint32_t*, int length) { t += static_cast<std::size_t>(length - 2); });
+        for_each_run(ring, k, open, [&](const std::uint32_t* run, int length) {
+          // The run's rim point: where its first face's outgoing rim edge starts and its last face's incoming one ends.
+          const auto point = static_cast<std::uint32_t>(run_offset_[v] + runs++);
+          rim_start_[run[0]] = point;
+          rim_end_[Topology::half_edge(Topology::face_of(run[length - 1]), Topology::corner_of(run[length - 1]) + K - 1)] = point;
+          t += static_cast<std::size_t>(length - 1);
+        });
       }
+      if (rims) run_offset_[v + 1] = run_offset_[v] + runs;
       quad_offset_[nh_ + v + 1] = quad_offset_[nh_ + v] + q;
       tri_offset_[nh_ + v + 1] = tri_offset_[nh_ + v] + t;
     }
@@ -88,12 +111,46 @@ class SeamPolygons {
   std::size_t half_edges() const { return nh_; }
   std::size_t quads() const { return quad_offset_.back(); }
   std::size_t triangles() const { return tri_offset_.back(); }
+  std::size_t rim_points() const { return rim_offset_.empty() ? 0 : run_offset_.back() + rim_offset_.back(); }
+
+  // Where each rim point lies, in order; `point_offset` as for edges().
+  template <class Row>
+  std::vector<RimNode> rim_nodes(const std::vector<std::size_t>& point_offset, const Row& row) const {
+    std::vector<RimNode> out(rim_points());
+    for (std::uint32_t h = 0; h < nh_; ++h) {
+      if (!rim(h)) continue;
+      const std::uint32_t f = Topology::face_of(h);
+      const int k = Topology::corner_of(h), n = rates_[f];
+      auto beside = [&](int t) { return static_cast<std::uint32_t>(point_offset[f] + static_cast<std::size_t>(row(k, t, n))); };
+      out[rim_start_[h]] = {f, k, 0, beside(0)};  // the same point for every rim edge of its run
+      for (int t = 1; t < n; ++t) out[run_offset_.back() + rim_offset_[h] + static_cast<std::size_t>(t - 1)] = {f, k, t, beside(t - 1)};
+    }
+    return out;
+  }
 
   // Zippers of the edges owned by half-edges [begin, end), into the slots after `quads` and `tris`.
   template <class Row>
   void edges(std::size_t begin, std::size_t end, const std::vector<std::size_t>& point_offset, const Row& row,
              std::array<int, 4>* quads, std::array<int, 3>* tris) const {
+    const int rim_base = static_cast<int>(point_offset.back());
     for (auto h = static_cast<std::uint32_t>(begin); h != end; ++h) {
+      if (rim(h)) {  // the strip from the face's row (A, na points) to the rim points (R, na + 1) along the edge
+        const std::size_t f = Topology::face_of(h);
+        const int kf = Topology::corner_of(h), na = rates_[f];
+        const int fa = static_cast<int>(point_offset[f]);
+        auto A = [&](int t) { return fa + row(kf, t, na); };
+        auto R = [&](int t) {
+          if (t == 0) return rim_base + static_cast<int>(rim_start_[h]);
+          if (t == na) return rim_base + static_cast<int>(rim_end_[h]);
+          return rim_base + static_cast<int>(run_offset_.back() + rim_offset_[h]) + t - 1;
+        };
+        std::array<int, 3>* t = tris + tri_offset_[h];
+        for (int a = 0; a < na; ++a) {
+          *t++ = {R(a), R(a + 1), A(a)};
+          if (a + 1 < na) *t++ = {A(a), R(a + 1), A(a + 1)};
+        }
+        continue;
+      }
       const std::uint32_t o = topo_.twin(h);
       if (o < h || o == Topology::kNoTwin) continue;  // owned by the twin, or a boundary edge
       const std::size_t f = Topology::face_of(h), g = Topology::face_of(o);
@@ -135,14 +192,22 @@ class SeamPolygons {
           for (int i = 1; i + 1 < k; ++i) *t++ = {ring[0], ring[i], ring[i + 1]};
         continue;
       }
+      const int rim_base = static_cast<int>(point_offset.back());
       for_each_run(halfedges, k, open, [&](const std::uint32_t* run, int length) {
-        for (int i = 1; i + 1 < length; ++i) *t++ = {corner(run[0]), corner(run[i]), corner(run[i + 1])};
+        const int apex = rim_base + static_cast<int>(rim_start_[run[0]]);
+        for (int i = 0; i + 1 < length; ++i) *t++ = {apex, corner(run[i]), corner(run[i + 1])};
       });
     }
   }
 
  private:
   bool hole(std::size_t f) const { return !holes_.empty() && holes_[f] != 0; }
+  // A half-edge of a face with a surface and none across it: the tessellation's rim runs along it.
+  bool rim(std::uint32_t h) const {
+    if (hole(Topology::face_of(h))) return false;
+    const std::uint32_t o = topo_.twin(h);
+    return o == Topology::kNoTwin || hole(Topology::face_of(o));
+  }
 
   // The half-edges leaving vertex v, counter-clockwise from its owner; their
   // count. `open`: v is on the boundary, and the fan ends at its last face.
@@ -162,35 +227,33 @@ class SeamPolygons {
       if (hole(Topology::face_of(ring[i]))) return true;
     return false;
   }
-  // Each run of at least three consecutive faces that are not holes (a closed
-  // ring holds one), in counter-clockwise order: emit(first half-edge, length).
-  // An open fan is not wrapped round.
+  // Each run of consecutive faces that are not holes (a closed ring holds one),
+  // in counter-clockwise order: emit(first half-edge, length). An open fan is
+  // not wrapped round.
   template <class Emit>
   void for_each_run(const std::uint32_t* ring, int k, bool open, const Emit& emit) const {
+    std::uint32_t run[limits::kMaxValence];
+    int length = 0;
     if (open) {
-      std::uint32_t run[limits::kMaxValence];
-      int length = 0;
       for (int i = 0; i <= k; ++i) {
         if (i < k && !hole(Topology::face_of(ring[i]))) {
           run[length++] = ring[i];
           continue;
         }
-        if (length >= 3) emit(run, length);
+        if (length >= 1) emit(run, length);
         length = 0;
       }
       return;
     }
     int start = 0;
     while (!hole(Topology::face_of(ring[start]))) ++start;  // a hole: runs begin after it
-    std::uint32_t run[limits::kMaxValence];
-    int length = 0;
     for (int i = 1; i <= k; ++i) {
       const std::uint32_t e = ring[(start + i) % k];
       if (!hole(Topology::face_of(e))) {
         run[length++] = e;
         continue;
       }
-      if (length >= 3) emit(run, length);
+      if (length >= 1) emit(run, length);
       length = 0;
     }
   }
@@ -200,6 +263,12 @@ class SeamPolygons {
   const std::vector<char>& holes_;  // per face, or empty
   std::size_t nh_, nv_;
   std::vector<std::size_t> quad_offset_, tri_offset_;  // per half-edge, then per vertex
+  // Rims (empty without boundary or holes): rim points inside each half-edge's
+  // edge (prefix sums), rim points per vertex (one per run), and the rim point
+  // at the start and at the end of each rim half-edge (its run's, numbered
+  // among the rim points).
+  std::vector<std::size_t> rim_offset_, run_offset_;
+  std::vector<std::uint32_t> rim_start_, rim_end_;
   std::vector<std::uint32_t> vertex_owner_;
 };
 

@@ -51,6 +51,8 @@ class QuadFamily final : public Family {
   bool derivatives(const SubPatch& in, double& x, double& y, Derivatives& out) const override;
   FaceParameterReal original(std::size_t prepared_face, double x, double y) const override;
   void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
+  Point edge_node(std::size_t prepared_face, int corner, int t, int n, const Point* prepared) const override;
+  std::array<double, 2> edge_node_parameter(std::size_t prepared_face, int corner, int t, int n) const override;
   void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
               std::array<float, 3>* out) const override;
   void normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,

@@ -1,6 +1,7 @@
 // The quad family's share of the watertight tessellation (tessellation.hpp):
 // n^2 cell centres per prepared face at its rate n, (n-1)^2 quads between
-// them, and the rows of centres along each edge for the shared seams.
+// them, and the rows of centres along each edge for the shared seams; where
+// the surface ends (boundary, holes) the grid nodes of the face's edge.
 #include <string>
 
 #include "family/seam_polygons.hpp"
@@ -36,10 +37,11 @@ void QuadFamily::plan(TessellationLayout& layout, const detail::RangeRunner& run
     layout.point_offsets[f + 1] = layout.point_offsets[f] + n * n;
     interior_offset[f + 1] = interior_offset[f] + (n == 0 ? 0 : (n - 1) * (n - 1));
   }
-  if (layout.point_offsets[nf] > limits::kMaxTessellationPoints)
-    throw EvaluationError("the tessellation would have " + std::to_string(layout.point_offsets[nf]) +
-                          " points; the limit is " + std::to_string(limits::kMaxTessellationPoints) + " (lower the rates)");
   const detail::SeamPolygons<4> seams(topology_, rates, layout.holes);
+  if (layout.point_offsets[nf] + seams.rim_points() > limits::kMaxTessellationPoints)
+    throw EvaluationError("the tessellation would have " + std::to_string(layout.point_offsets[nf] + seams.rim_points()) +
+                          " points; the limit is " + std::to_string(limits::kMaxTessellationPoints) + " (lower the rates)");
+  layout.rim = seams.rim_nodes(layout.point_offsets, row_cell);
   const std::size_t interior_quads = interior_offset[nf];
   layout.quads.resize(interior_quads + seams.quads());
   layout.triangles.resize(seams.triangles());
@@ -61,6 +63,40 @@ void QuadFamily::plan(TessellationLayout& layout, const detail::RangeRunner& run
   run(topology_.vertices(), [&](std::size_t begin, std::size_t end) {
     seams.vertices(begin, end, layout.point_offsets, row_cell, layout.quads.data() + interior_quads, layout.triangles.data());
   });
+}
+
+namespace {
+
+// Grid node t (0..n, in the edge's direction) of the face's edge k, as (i, j): the face's node (i/n, j/n).
+inline void edge_grid_node(int k, int t, int n, long& i, long& j) {
+  switch (k & 3) {
+    case 0: i = t, j = 0; break;
+    case 1: i = n, j = t; break;
+    case 2: i = n - t, j = n; break;
+    default: i = 0, j = n - t; break;
+  }
+}
+
+}  // namespace
+
+Point QuadFamily::edge_node(std::size_t face, int corner, int t, int n, const Point* prepared) const {
+  const QuadPatch& p = patches_[face];
+  long i = 0, j = 0, pi = 0, pj = 0;
+  edge_grid_node(corner, t, n, i, j);
+  p.to_patch(i, j, n, pi, pj);
+  std::array<double, limits::kMaxPatchPoints> w{};
+  tables_.node_stencil(p.valence, n, static_cast<int>(pi), static_cast<int>(pj), w.data());
+  Point out{0, 0, 0};
+  for (std::size_t h = 0; h < p.points.size(); ++h)
+    for (int c = 0; c < 3; ++c) out[c] += w[h] * prepared[p.points[h]][c];
+  return out;
+}
+
+std::array<double, 2> QuadFamily::edge_node_parameter(std::size_t face, int corner, int t, int n) const {
+  long i = 0, j = 0, pi = 0, pj = 0;
+  edge_grid_node(corner, t, n, i, j);
+  patches_[face].to_patch(i, j, n, pi, pj);
+  return {static_cast<double>(pi) / n, static_cast<double>(pj) / n};
 }
 
 }  // namespace stencil_runtime

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "family/family.hpp"
@@ -45,7 +46,7 @@ TessellationPlan& TessellationPlan::operator=(TessellationPlan&&) noexcept = def
 
 const std::vector<int>& TessellationPlan::prepared_rates() const { return impl_->layout.rates; }
 int TessellationPlan::largest_wanted_rate() const { return impl_->largest_wanted; }
-std::size_t TessellationPlan::point_count() const { return impl_->layout.point_offsets.back(); }
+std::size_t TessellationPlan::point_count() const { return impl_->layout.point_offsets.back() + impl_->layout.rim.size(); }
 const std::vector<std::array<int, 4>>& TessellationPlan::quads() const { return impl_->layout.quads; }
 const std::vector<std::array<int, 3>>& TessellationPlan::triangles() const { return impl_->layout.triangles; }
 
@@ -68,6 +69,14 @@ void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* po
   (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
     family.points(layout, begin, end, prepared, positions);
   });
+  std::array<float, 3>* rim = positions + layout.point_offsets.back();
+  (*impl_->run)(layout.rim.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t r = begin; r != end; ++r) {
+      const RimNode& node = layout.rim[r];
+      const Point p = family.edge_node(node.face, node.corner, node.t, layout.rates[node.face], prepared);
+      rim[r] = {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])};
+    }
+  });
 }
 
 void TessellationPlan::evaluate_normals(const Surface& surface, std::array<float, 3>* normals) const {
@@ -76,6 +85,25 @@ void TessellationPlan::evaluate_normals(const Surface& surface, std::array<float
   const TessellationLayout& layout = impl_->layout;
   (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
     family.normals(layout, begin, end, prepared, normals);
+  });
+  // The rim's normals (after the faces': a rim point where the surface has no
+  // tangent plane, such as a corner, takes the normal of the face point beside it).
+  std::array<float, 3>* rim = normals + layout.point_offsets.back();
+  (*impl_->run)(layout.rim.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t r = begin; r != end; ++r) {
+      const RimNode& node = layout.rim[r];
+      const auto [x, y] = family.edge_node_parameter(node.face, node.corner, node.t, layout.rates[node.face]);
+      const FaceParameterReal at = family.original(node.face, x, y);
+      try {
+        const Point n = family.normal(at.face, at.u, at.v, prepared);
+        if (std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2])) {
+          rim[r] = {static_cast<float>(n[0]), static_cast<float>(n[1]), static_cast<float>(n[2])};
+          continue;
+        }
+      } catch (const EvaluationError&) {
+      }
+      rim[r] = normals[node.beside];
+    }
   });
 }
 

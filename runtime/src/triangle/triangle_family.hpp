@@ -63,6 +63,8 @@ class TriangleFamily final : public Family {
   int max_kind() const override { return kind_of(limits::kMaxValence, 3); }
   static int kind_of(int valence, int region) { return valence + (limits::kMaxValence + 1) * region; }
   void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
+  Point edge_node(std::size_t prepared_face, int corner, int t, int n, const Point* prepared) const override;
+  std::array<double, 2> edge_node_parameter(std::size_t prepared_face, int corner, int t, int n) const override;
   void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
               std::array<float, 3>* out) const override;
   // Loop: the unit normal at each of those points (the descent's derivatives);

@@ -1,7 +1,8 @@
 // The triangle family's share of the watertight tessellation (tessellation.hpp):
 // n^2 centres of the small triangles of each prepared face at its rate n, two
 // quads (a hexagon) round every interior grid node, a triangle round every
-// boundary node, and the rows of up centres along each edge for the seams.
+// boundary node, and the rows of up centres along each edge for the seams;
+// round holes the grid nodes of the face's edge.
 #include <string>
 
 #include "family/seam_polygons.hpp"
@@ -47,10 +48,11 @@ void TriangleFamily::plan(TessellationLayout& layout, const detail::RangeRunner&
     face_quads[f + 1] = face_quads[f] + (n == 0 ? 0 : (n - 1) * (n >= 2 ? n - 2 : 0));
     face_triangles[f + 1] = face_triangles[f] + (n == 0 ? 0 : 3 * (n - 1));
   }
-  if (layout.point_offsets[nf] > limits::kMaxTessellationPoints)
-    throw EvaluationError("the tessellation would have " + std::to_string(layout.point_offsets[nf]) +
-                          " points; the limit is " + std::to_string(limits::kMaxTessellationPoints) + " (lower the rates)");
   const detail::SeamPolygons<3> seams(topology_, rates, layout.holes);
+  if (layout.point_offsets[nf] + seams.rim_points() > limits::kMaxTessellationPoints)
+    throw EvaluationError("the tessellation would have " + std::to_string(layout.point_offsets[nf] + seams.rim_points()) +
+                          " points; the limit is " + std::to_string(limits::kMaxTessellationPoints) + " (lower the rates)");
+  layout.rim = seams.rim_nodes(layout.point_offsets, row_up);
   const std::size_t inner_quads = face_quads[nf], inner_triangles = face_triangles[nf];
   layout.quads.resize(inner_quads + seams.quads());
   layout.triangles.resize(inner_triangles + seams.triangles());
@@ -111,6 +113,39 @@ void TriangleFamily::points(const TessellationLayout& layout, std::size_t begin,
     for (long j = 0; j + 1 < n; ++j)
       for (long i = 0; i + j <= n - 2; ++i) put(3 * i + 2, 3 * j + 2);
   }
+}
+
+namespace {
+
+// Grid node t (0..n, in the edge's direction) of the face's edge k, in thirds: the face's node (i/(3n), j/(3n)).
+inline void edge_grid_node(int k, long t, long n, long& i, long& j) {
+  switch (k) {
+    case 0: i = 3 * t, j = 0; break;
+    case 1: i = 3 * (n - t), j = 3 * t; break;
+    default: i = 0, j = 3 * (n - t); break;
+  }
+}
+
+}  // namespace
+
+Point TriangleFamily::edge_node(std::size_t face, int corner, int t, int n, const Point* prepared) const {
+  const TrianglePatch& p = patches_[face];
+  long i = 0, j = 0, pi = 0, pj = 0;
+  edge_grid_node(corner, t, n, i, j);
+  p.to_patch(i, j, 3L * n, pi, pj);
+  const TriangleTables::Grid grid = tables_.grid(p.valence, n, p.region);
+  const double* w = grid.weights(TriangleTables::GridPoint::Node, pi / 3, pj / 3);
+  Point out{0, 0, 0};
+  for (std::size_t h = 0; h < p.points.size(); ++h)
+    for (int c = 0; c < 3; ++c) out[c] += w[h] * prepared[p.points[h]][c];
+  return out;
+}
+
+std::array<double, 2> TriangleFamily::edge_node_parameter(std::size_t face, int corner, int t, int n) const {
+  long i = 0, j = 0, pi = 0, pj = 0;
+  edge_grid_node(corner, t, n, i, j);
+  patches_[face].to_patch(i, j, 3L * n, pi, pj);
+  return {static_cast<double>(pi) / (3.0 * n), static_cast<double>(pj) / (3.0 * n)};
 }
 
 void TriangleFamily::normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
