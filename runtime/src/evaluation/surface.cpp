@@ -6,6 +6,7 @@
 
 #include "exact_stencil.hpp"
 #include "family/family.hpp"
+#include "family/stencil_sum.hpp"
 #include "stencil_runtime/limits.hpp"
 
 namespace stencil_runtime {
@@ -47,12 +48,7 @@ Mesh Surface::prepared_mesh() const {
 Point Surface::evaluate(std::size_t face, const ExactParameter& at) const {
   if (!has_positions_) throw EvaluationError("the surface has no control positions yet (set_positions)");
   const PatchStencil s = exact_stencil(*topology_, face, at);
-  Point out{0, 0, 0};
-  for (std::size_t h = 0; h < s.size; ++h) {
-    const Point& q = prepared_[static_cast<std::size_t>(s.points[h])];
-    for (int k = 0; k < 3; ++k) out[static_cast<std::size_t>(k)] += s.weights[h] * q[static_cast<std::size_t>(k)];
-  }
-  return out;
+  return stencil_sum(s.weights, s.points, s.size, prepared_.data());
 }
 
 }  // namespace stencil_runtime

@@ -5,10 +5,12 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "family/rim_node.hpp"
 #include "mesh/uniform_topology.hpp"
+#include "stencil_runtime/error.hpp"
 #include "stencil_runtime/limits.hpp"
 
 namespace stencil_runtime::detail {
@@ -74,7 +76,6 @@ class SeamPolygons {
       const auto na = static_cast<std::size_t>(rates[Topology::face_of(h)]);
       if (rim(h)) {
         t = 2 * na - 1;  // the strip from the face's row to the na + 1 rim points
-        rim_offset_[h + 1] = na - 1;
       } else if (o != Topology::kNoTwin && h < o && !hole(Topology::face_of(h)) && !hole(Topology::face_of(o))) {
         const auto nb = static_cast<std::size_t>(rates[Topology::face_of(o)]);
         if (na == nb) q = na - 1;
@@ -82,9 +83,8 @@ class SeamPolygons {
       }
       quad_offset_[h + 1] = quad_offset_[h] + q;
       tri_offset_[h + 1] = tri_offset_[h] + t;
+      if (rims) rim_offset_[h + 1] = rim_offset_[h] + (rim(h) ? na - 1 : 0);  // the edge's inner grid nodes
     }
-    if (rims)
-      for (std::size_t h = 0; h < nh_; ++h) rim_offset_[h + 1] += rim_offset_[h];
     std::uint32_t ring[limits::kMaxValence];
     for (std::size_t v = 0; v < nv_; ++v) {
       // Without holes or boundaries the valence says it all; the ring is walked only to find them.
@@ -112,6 +112,15 @@ class SeamPolygons {
   std::size_t quads() const { return quad_offset_.back(); }
   std::size_t triangles() const { return tri_offset_.back(); }
   std::size_t rim_points() const { return rim_offset_.empty() ? 0 : run_offset_.back() + rim_offset_.back(); }
+  // The tessellation's points: `face_points` and the rim points after them;
+  // EvaluationError beyond limits::kMaxTessellationPoints.
+  std::size_t checked_points(std::size_t face_points) const {
+    const std::size_t total = face_points + rim_points();
+    if (total > limits::kMaxTessellationPoints)
+      throw EvaluationError("the tessellation would have " + std::to_string(total) + " points; the limit is " +
+                            std::to_string(limits::kMaxTessellationPoints) + " (lower the rates)");
+    return total;
+  }
 
   // Where each rim point lies, in order; `point_offset` as for edges().
   template <class Row>

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "family/seam_polygons.hpp"
+#include "family/stencil_sum.hpp"
 #include "quad_family.hpp"
 
 namespace stencil_runtime {
@@ -38,9 +39,7 @@ void QuadFamily::plan(TessellationLayout& layout, const detail::RangeRunner& run
     interior_offset[f + 1] = interior_offset[f] + (n == 0 ? 0 : (n - 1) * (n - 1));
   }
   const detail::SeamPolygons<4> seams(topology_, rates, layout.holes);
-  if (layout.point_offsets[nf] + seams.rim_points() > limits::kMaxTessellationPoints)
-    throw EvaluationError("the tessellation would have " + std::to_string(layout.point_offsets[nf] + seams.rim_points()) +
-                          " points; the limit is " + std::to_string(limits::kMaxTessellationPoints) + " (lower the rates)");
+  seams.checked_points(layout.point_offsets[nf]);
   layout.rim = seams.rim_nodes(layout.point_offsets, row_cell);
   const std::size_t interior_quads = interior_offset[nf];
   layout.quads.resize(interior_quads + seams.quads());
@@ -86,10 +85,7 @@ Point QuadFamily::edge_node(std::size_t face, int corner, int t, int n, const Po
   p.to_patch(i, j, n, pi, pj);
   std::array<double, limits::kMaxPatchPoints> w{};
   tables_.node_stencil(p.valence, n, static_cast<int>(pi), static_cast<int>(pj), w.data());
-  Point out{0, 0, 0};
-  for (std::size_t h = 0; h < p.points.size(); ++h)
-    for (int c = 0; c < 3; ++c) out[c] += w[h] * prepared[p.points[h]][c];
-  return out;
+  return stencil_sum(w.data(), p.points.data(), p.points.size(), prepared);
 }
 
 std::array<double, 2> QuadFamily::edge_node_parameter(std::size_t face, int corner, int t, int n) const {

@@ -6,6 +6,7 @@
 
 #include "family/crease_step.hpp"
 #include "family/parameter_ops.hpp"
+#include "family/stencil_sum.hpp"
 #include "triangle_steps.hpp"
 
 namespace stencil_runtime {
@@ -217,8 +218,7 @@ Approximation TriangleFamily::evaluate(std::size_t face, const ExactParameter& a
   PatchStencil s;
   if (held_stencil(face, at, s)) {  // held by the tables: no descent needed (nor patch subdivision data)
     Approximation out;
-    for (std::size_t h = 0; h < s.size; ++h)
-      for (std::size_t k = 0; k < 3; ++k) out.point[k] += s.weights[h] * prepared[s.points[h]][k];
+    out.point = stencil_sum(s.weights, s.points, s.size, prepared);
     return out;
   }
   try {

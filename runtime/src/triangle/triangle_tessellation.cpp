@@ -6,6 +6,7 @@
 #include <string>
 
 #include "family/seam_polygons.hpp"
+#include "family/stencil_sum.hpp"
 #include "triangle_family.hpp"
 
 namespace stencil_runtime {
@@ -49,9 +50,7 @@ void TriangleFamily::plan(TessellationLayout& layout, const detail::RangeRunner&
     face_triangles[f + 1] = face_triangles[f] + (n == 0 ? 0 : 3 * (n - 1));
   }
   const detail::SeamPolygons<3> seams(topology_, rates, layout.holes);
-  if (layout.point_offsets[nf] + seams.rim_points() > limits::kMaxTessellationPoints)
-    throw EvaluationError("the tessellation would have " + std::to_string(layout.point_offsets[nf] + seams.rim_points()) +
-                          " points; the limit is " + std::to_string(limits::kMaxTessellationPoints) + " (lower the rates)");
+  seams.checked_points(layout.point_offsets[nf]);
   layout.rim = seams.rim_nodes(layout.point_offsets, row_up);
   const std::size_t inner_quads = face_quads[nf], inner_triangles = face_triangles[nf];
   layout.quads.resize(inner_quads + seams.quads());
@@ -135,10 +134,7 @@ Point TriangleFamily::edge_node(std::size_t face, int corner, int t, int n, cons
   p.to_patch(i, j, 3L * n, pi, pj);
   const TriangleTables::Grid grid = tables_.grid(p.valence, n, p.region);
   const double* w = grid.weights(TriangleTables::GridPoint::Node, pi / 3, pj / 3);
-  Point out{0, 0, 0};
-  for (std::size_t h = 0; h < p.points.size(); ++h)
-    for (int c = 0; c < 3; ++c) out[c] += w[h] * prepared[p.points[h]][c];
-  return out;
+  return stencil_sum(w, p.points.data(), p.points.size(), prepared);
 }
 
 std::array<double, 2> TriangleFamily::edge_node_parameter(std::size_t face, int corner, int t, int n) const {
