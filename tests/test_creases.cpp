@@ -322,6 +322,36 @@ TEST_CASE("infinitely sharp creases and corners (sharpness >= 10) on quad meshes
     for (std::size_t k = 0; k < 3; ++k) c.f.crease(ring[k], ring[k + 1], 10);
     cases.push_back(c);
   }
+  {  // cone points: sharp vertices on no sharp edge (OpenSubdiv's corner rule, smooth edges round them), valence 3
+    Case c{"cube, two cone points at opposite corners", cube, {}};
+    c.f.corner(0, 10);
+    c.f.corner(7, 10);
+    cases.push_back(c);
+  }
+  {  // cone points of valence 4 (a regular vertex made irregular by its tag) and 5, one next to a semi-sharp edge
+    std::vector<int> faces_at(chess.vertex_count(), 0);
+    for (int v : chess.face_vertices) ++faces_at[static_cast<std::size_t>(v)];
+    const auto four = std::find(faces_at.begin(), faces_at.end(), 4), five = std::find(faces_at.begin(), faces_at.end(), 5);
+    REQUIRE(four != faces_at.end());
+    REQUIRE(five != faces_at.end());
+    Case c{"chess piece, cone points of valence 4 and 5, a semi-sharp edge of 1.5 at one", chess, {}};
+    const int v4 = static_cast<int>(four - faces_at.begin()), v5 = static_cast<int>(five - faces_at.begin());
+    c.f.corner(v4, 10);
+    c.f.corner(v5, 10);
+    for (const auto& [a, b] : edges_of(chess))
+      if (a == v5 || b == v5) {
+        c.f.crease(a, b, 1.5f);
+        break;
+      }
+    cases.push_back(c);
+  }
+  {  // an open grid: two cone points side by side inside, next to the boundary (they share faces until steps part them)
+    Mesh grid = test_meshes::open_grid(4, 3);
+    Case c{"open grid, two neighbouring cone points next to the boundary", grid, {}};
+    c.f.corner(1 * 5 + 1, 10);  // (1, 1)
+    c.f.corner(1 * 5 + 2, 10);  // (2, 1)
+    cases.push_back(c);
+  }
   {  // a dart whose end is also a sharp vertex: a corner on one sharp edge
     Case c{"cube, one sharp edge with a sharp vertex at one end", cube, {}, {edges_of(cube)[0].second}};
     c.f.crease(edges_of(cube)[0].first, edges_of(cube)[0].second, 10);
@@ -411,7 +441,8 @@ TEST_CASE("at an infinitely sharp dart the limit point is the exact one, which O
     }
 }
 
-TEST_CASE("infinitely sharp creases: tessellations stay closed across them, darts too, and a cone point is refused",
+TEST_CASE("infinitely sharp creases: tessellations stay closed across them, darts and cone points too, and a cone point "
+          "stays where its control vertex is and has no normal",
           "[runtime][creases][sharp]") {
   const Mesh cube = load("cube");
   const std::vector<int> top(cube.face_vertices.begin(), cube.face_vertices.begin() + 4);
@@ -425,7 +456,22 @@ TEST_CASE("infinitely sharp creases: tessellations stay closed across them, dart
         loop.crease(a, b, 10);
         break;
       }
+    // A cone point: a vertex on none of those sharp edges, tagged sharp.
+    std::set<int> on_sharp;
+    for (const auto& e : loop.ours.edges) on_sharp.insert(e.a), on_sharp.insert(e.b);
+    int cone = 0;
+    while (on_sharp.count(cone)) ++cone;
+    loop.corner(cone, 10);
     const Surface surface = surface_with(tables, cube, loop);
+    {  // the corner rule holds the vertex at every step: the limit there is the control vertex itself
+      std::size_t face = 0;
+      int corner = 0;
+      while (cube.face_vertices[4 * face + static_cast<std::size_t>(corner)] != cone)
+        if (++corner == 4) corner = 0, ++face;
+      const Point at = surface.evaluate(face, grid(corner == 1 || corner == 2, corner >= 2, 1));
+      CHECK(distance(at, cube.positions[static_cast<std::size_t>(cone)]) == 0);
+      CHECK_THROWS_WITH(surface.normal(face, corner == 1 || corner == 2, corner >= 2), Catch::Contains("cone point has no tangent plane"));
+    }
     for (int trial = 0; trial < 4; ++trial) {
       std::vector<int> rates(cube.face_count());
       for (int& r : rates) r = std::uniform_int_distribution<int>(1, 8)(rng);
@@ -459,11 +505,6 @@ TEST_CASE("infinitely sharp creases: tessellations stay closed across them, dart
       }
     CHECK(worst < 1e-13);
   }
-  const auto tables = catmull_clark();
-  Features cone;  // a sharp vertex with no sharp edge
-  cone.corner(3, 10);
-  CHECK_THROWS_WITH(surface_with(tables, cube, cone), Catch::Contains("vertex 3 is infinitely sharp inside the mesh") &&
-                                                          Catch::Contains("cone point"));
 }
 
 TEST_CASE("random creases and corners on the chess piece and on a mesh with triangles equal OpenSubdiv's, both methods",

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "cli.hpp"
@@ -103,21 +104,39 @@ TEST_CASE("OBJ tags are read with their lines and checked against the mesh", "[r
 TEST_CASE("tags the runtime cannot honour are refused, tags without effect change nothing", "[runtime][tags]") {
   const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 4", "sgs").string());
   const fs::path dir = scratch_dir("obj-tags-use");
-  const long first = line_count(cube_text()) + 1;
-  const std::pair<const char*, const char*> refused[] = {
-      {"t corner 1/1/0 3 10\n", "infinitely sharp corner (sharpness 10 >= 10) at vertex 3 inside the mesh on no infinitely sharp edge"},
-      {"t corner 1/1/0 3 12.5\n", "infinitely sharp corner (sharpness 12.5 >= 10) at vertex 3 inside the mesh"},
-  };
-  for (const auto& [tag, message] : refused) {
-    INFO(tag);
-    const Mesh m = read_obj(tagged_cube(dir, "refused", tag).string());
-    CHECK_THROWS_WITH(SurfaceTopology::create(tables, m), Catch::Contains(":" + std::to_string(first) + ": ") &&
-                                                              Catch::Contains(message) && Catch::Contains("not supported"));
-    // The tool says the same and exits with 1.
-    const CliResult r = run_stencileval("--tables " + generated_table("catmull-clark", "--valence 3-8 --n 4", "sgs").parent_path().string() +
-                                        " --mesh " + (dir / "refused.obj").string() + " --face 0 --uv 1/2,1/2");
-    CHECK(r.status == 1);
-    CHECK_THAT(r.output, Catch::Contains(message));
+  // A sharp vertex on no sharp edge is a cone point: it stays where its control vertex is (OpenSubdiv's corner rule
+  // holds it at every step), the tool evaluates it and says it has no normal; tables without cone sectors (a
+  // descent.json of version 3, from before them) are refused naming the vertex and the command that covers it.
+  {
+    const fs::path tables_dir = generated_table("catmull-clark", "--valence 3-8 --n 4", "sgs").parent_path();
+    for (const char* tag : {"t corner 1/1/0 3 10\n", "t corner 1/1/0 3 12.5\n"}) {
+      INFO(tag);
+      const fs::path path = tagged_cube(dir, "cone", tag);
+      const CliResult r = run_stencileval("--tables " + tables_dir.string() + " --mesh " + path.string() + " --face 1 --uv 0,1");
+      CHECK(r.status == 0);
+      CHECK_THAT(r.output, Catch::Contains("\n-0.5 0.5 0.5\n"));  // face 1 = (1, 5, 7, 3): vertex 3 at (0, 1)
+      const CliResult n = run_stencileval("--tables " + tables_dir.string() + " --mesh " + path.string() + " --face 1 --uv 0,1 --normal");
+      CHECK(n.status == 1);
+      CHECK_THAT(n.output, Catch::Contains("cone point has no tangent plane"));
+    }
+    const fs::path old = dir / "tables-without-cones";
+    fs::copy(tables_dir, old, fs::copy_options::recursive);
+    for (const auto& e : fs::directory_iterator(old))
+      if (e.path().extension() == ".sgs") fs::remove(e.path());  // the exact JSON tables alone
+    nlohmann::ordered_json descent = nlohmann::ordered_json::parse(std::ifstream(old / "descent.json"));
+    nlohmann::ordered_json kept = nlohmann::ordered_json::array();
+    for (const auto& s : descent["sectors"])
+      if (s["kind"] != "cone") kept.push_back(s);
+    REQUIRE(kept.size() < descent["sectors"].size());
+    descent["sectors"] = kept;
+    descent["version"] = 3;
+    std::ofstream(old / "descent.json") << descent.dump();
+    const auto without = Tables::load(old.string());
+    const Mesh m = read_obj(tagged_cube(dir, "cone", "t corner 1/1/0 3 10\n").string());
+    CHECK_THROWS_WITH(SurfaceTopology::create(without, m), Catch::Contains("vertex 3 is a cone point") &&
+                                                               Catch::Contains("no patches for cone points") &&
+                                                               Catch::Contains("regenerate them"));
+    CHECK_NOTHROW(SurfaceTopology::create(tables, m));
   }
   // An infinitely sharp crease on a triangle scheme's mesh names the line too.
   {

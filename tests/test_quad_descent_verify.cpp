@@ -66,8 +66,20 @@ TEST_CASE("stencilgen verify checks descent.json: subdivision matrices exactly, 
     CHECK_THAT(r.output, Catch::Contains("no tangent stencils, but the scheme has them"));
 
     // Boundary sectors: valences up to 5 give the crease sectors of 1, 3, 4 and 5 faces, the corners of 2..5,
-    // the darts of valence 3..5.
-    REQUIRE(good["sectors"].size() == (1 + 3 + 4 + 5) + (2 + 3 + 4 + 5) + (3 + 4 + 5));
+    // the darts of valence 3..5, and the cone points of valence 3..5 (one patch each).
+    REQUIRE(good["sectors"].size() == (1 + 3 + 4 + 5) + (2 + 3 + 4 + 5) + (3 + 4 + 5) + 3);
+    {
+      std::size_t cone = 0;
+      while (good["sectors"][cone]["kind"] != "cone") ++cone;
+      CHECK(good["sectors"][cone]["points"] == 2 * good["sectors"][cone]["faces"].get<int>() + 8);
+      CHECK(good["sectors"][cone]["tangents"].is_null());
+      bad = good;  // the cone point's own row of A0 is the identity: the smooth rule's weight there is caught
+      bad["sectors"][cone]["ev_child"][0][0][1] = "1/2";
+      write(dir / "bad.json", bad);
+      r = run_stencilgen("verify " + (dir / "bad.json").string());
+      CHECK(r.status == 1);
+      CHECK_THAT(r.output, Catch::Contains("cone point of valence 3: A0 differs"));
+    }
     std::size_t three = 0;  // the first sector of three faces (which has tangents)
     while (good["sectors"][three]["faces"] != 3) ++three;
     bad = good;  // a weight of a sector's A0 (its vertex's row: the boundary curve's rule)

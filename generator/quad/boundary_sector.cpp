@@ -11,17 +11,20 @@ const char* sector_kind_name(SectorKind kind) {
   switch (kind) {
     case SectorKind::Crease: return "crease";
     case SectorKind::Corner: return "corner";
+    case SectorKind::Cone: return "cone";
     default: return "dart";
   }
 }
 
 std::string BoundarySector::name() const {
+  if (kind == SectorKind::Cone) return "cone point of valence " + std::to_string(faces);
   if (kind == SectorKind::Dart) return "dart of valence " + std::to_string(faces) + ", face " + std::to_string(position);
   return std::string(kind == SectorKind::Corner ? "corner" : "boundary vertex") + " in " + std::to_string(faces) + " face" +
          (faces == 1 ? "" : "s") + ", face " + std::to_string(position);
 }
 
 SectorLayout::SectorLayout(const BoundarySector& s) : s_(s) {
+  if (s.kind == SectorKind::Cone) throw Error("internal: a cone point's patch has the interior layout");
   if (s.faces < (s.kind == SectorKind::Dart ? 3 : 1) || s.faces > limits::kMaxValence || s.position < 0 || s.position >= s.faces)
     throw Error("internal: no boundary sector of " + std::to_string(s.faces) + " faces with face " + std::to_string(s.position));
   const bool below = s.position > 0, beside = s.position + 1 < s.faces;
@@ -91,7 +94,20 @@ class SectorRefiner final : public ChartRefiner {
 
 }  // namespace
 
+std::size_t sector_points(const BoundarySector& s) {
+  if (s.kind != SectorKind::Cone) return SectorLayout(s).size();
+  if (s.faces < 3 || s.faces > limits::kMaxValence || s.position != 0)
+    throw Error("internal: no cone point of valence " + std::to_string(s.faces) + " with face " + std::to_string(s.position));
+  return PatchLayout(s.faces).size();
+}
+
 PatchSubdivision build_sector_subdivision(const QuadScheme& scheme, const BoundarySector& sector) {
+  if (sector.kind == SectorKind::Cone) {
+    sector_points(sector);  // checks the valence
+    PatchSubdivision out = build_patch_subdivision(scheme, sector.faces, VertexRule{Rational(1), Rational(0), Rational(0)});
+    out.reflection.clear();  // sectors are stored whole
+    return out;
+  }
   const SectorLayout L(sector);
   SectorRefiner refine(scheme, L);
   PatchSubdivision out;
@@ -113,6 +129,8 @@ std::vector<BoundarySector> boundary_sectors(int max_faces, bool sharp) {
       for (int p = 0; p < k; ++p) out.push_back({kind, k, p});
     }
   }
+  if (sharp)
+    for (int k = 3; k <= max_faces; ++k) out.push_back({SectorKind::Cone, k, 0});
   return out;
 }
 

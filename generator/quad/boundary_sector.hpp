@@ -20,6 +20,12 @@
 // 1/2, 1/2), as in OpenSubdiv; B itself follows the curve's vertex rule over
 // e_0 and e_k ("crease"), stays where it is ("corner"), or follows the smooth
 // rule ("dart", below).
+//
+// A cone point (an infinitely sharp vertex inside the mesh on no infinitely
+// sharp edge: OpenSubdiv's corner rule with smooth edges round it) is kept
+// here too, though its ring is closed: its patch is the interior patch of
+// patch_layout.hpp (2v+8 points, that order) with the vertex held in place,
+// the same for every face round it, so only position 0 is stored.
 #include <optional>
 #include <string>
 #include <utility>
@@ -36,19 +42,22 @@ struct PatchSubdivision;  // patch_subdivision.hpp
 // smooth rule at valence k (a dart: an infinitely sharp crease ends at B, the
 // mesh cut along it makes B a boundary vertex whose e_0 and e_k are two copies
 // of the crease's next vertex, and B's rule sees it once).
-enum class SectorKind : unsigned char { Crease = 0, Corner = 1, Dart = 2 };
-const char* sector_kind_name(SectorKind kind);  // "crease", "corner", "dart"
+// Cone: the vertex stays put, everything round it follows the smooth rules.
+enum class SectorKind : unsigned char { Crease = 0, Corner = 1, Dart = 2, Cone = 3 };
+const char* sector_kind_name(SectorKind kind);  // "crease", "corner", "dart", "cone"
 
 struct BoundarySector {
   SectorKind kind = SectorKind::Crease;
-  int faces = 1;     // k >= 1 (>= 3 for a dart: its valence)
-  int position = 0;  // p, 0 <= p < k
+  int faces = 1;     // k >= 1 (>= 3 for a dart or a cone: its valence)
+  int position = 0;  // p, 0 <= p < k (0 for a cone)
 
-  // "boundary vertex in 3 faces, face 1" / "corner in 2 faces, face 0" / "dart of valence 5, face 2"
+  // "boundary vertex in 3 faces, face 1" / "corner in 2 faces, face 0" / "dart of valence 5, face 2" /
+  // "cone point of valence 3"
   std::string name() const;
   bool operator==(const BoundarySector&) const = default;
 };
 
+// The layout of the sectors with a boundary (not a cone's: patch_layout.hpp).
 class SectorLayout {
  public:
   explicit SectorLayout(const BoundarySector& s);
@@ -74,12 +83,16 @@ class SectorLayout {
 // of face p mirrors that of face k-1-p, not itself).
 PatchSubdivision build_sector_subdivision(const QuadScheme& scheme, const BoundarySector& sector);
 
+// Its point count (2v+8 for a cone).
+std::size_t sector_points(const BoundarySector& s);
+
 // The sectors the runtime needs for boundary vertices in 1..max_faces faces:
 // every position p of k = 1 and k >= 3 (in 2 faces the patches are regular
 // boundary patches, with phantom points). With `sharp`, also the corners in
 // k >= 2 faces (in 1 face a corner's patch is regular too), which sharp corner
-// tags and vertices on three or more sharp edges make, and the darts of
-// valence 3..max_faces.
+// tags and vertices on three or more sharp edges make, the darts of valence
+// 3..max_faces, and the cones of valence 3..max_faces (4 included: a sharp
+// vertex makes a regular vertex a cone).
 std::vector<BoundarySector> boundary_sectors(int max_faces, bool sharp = false);
 
 }  // namespace sg

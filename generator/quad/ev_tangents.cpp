@@ -24,8 +24,8 @@ std::optional<EvTangents> ev_tangents(const QuadScheme& scheme, int valence, con
 std::optional<EvTangents> sector_tangents(const QuadScheme& scheme, const BoundarySector& sector,
                                           const PatchSubdivision& subdivision, const std::vector<Rational>& limit,
                                           std::string& why) {
-  if (sector.kind == SectorKind::Corner) {
-    why = "a corner has no tangent plane";
+  if (sector.kind == SectorKind::Corner || sector.kind == SectorKind::Cone) {
+    why = sector.kind == SectorKind::Corner ? "a corner has no tangent plane" : "a cone point has no tangent plane";
     return std::nullopt;
   }
   constexpr long kSamples = 8;  // the characteristic map's regularity is checked on this grid

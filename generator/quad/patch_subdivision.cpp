@@ -84,8 +84,8 @@ namespace {
 // The chart of a patch round an interior vertex of valence v (patch_layout.hpp).
 class InteriorRefiner final : public ChartRefiner {
  public:
-  InteriorRefiner(const QuadScheme& s, int valence)
-      : ChartRefiner(s, false, false, false), layout_(valence), v_(valence), ev_rule_(s.vertex_rule(valence)) {}
+  InteriorRefiner(const QuadScheme& s, int valence, const VertexRule& ev_rule)
+      : ChartRefiner(s, false, false, false), layout_(valence), v_(valence), ev_rule_(ev_rule) {}
   const PatchLayout& layout() const { return layout_; }
 
   // Refined one-ring point with canonical index h (EV, e_k or f_k).
@@ -116,7 +116,11 @@ class InteriorRefiner final : public ChartRefiner {
 }  // namespace
 
 PatchSubdivision build_patch_subdivision(const QuadScheme& scheme, int valence) {
-  InteriorRefiner refine(scheme, valence);
+  return build_patch_subdivision(scheme, valence, scheme.vertex_rule(valence));
+}
+
+PatchSubdivision build_patch_subdivision(const QuadScheme& scheme, int valence, const VertexRule& ev_rule) {
+  InteriorRefiner refine(scheme, valence, ev_rule);
   const PatchLayout& L = refine.layout();
   PatchSubdivision out;
   out.points = L.size();
@@ -139,7 +143,7 @@ std::vector<std::vector<Rational>> dense(const std::vector<SparseRow>& rows, std
 }
 
 SparseRow refined_chart_point(const QuadScheme& scheme, int valence, int I, int J) {
-  InteriorRefiner refine(scheme, valence);
+  InteriorRefiner refine(scheme, valence, scheme.vertex_rule(valence));
   return refine.at(I, J);
 }
 

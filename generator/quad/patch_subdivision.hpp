@@ -34,6 +34,8 @@ struct PatchSubdivision {
 };
 
 PatchSubdivision build_patch_subdivision(const QuadScheme& scheme, int valence);
+// The same with another rule at the extraordinary vertex (a cone point's: it stays put).
+PatchSubdivision build_patch_subdivision(const QuadScheme& scheme, int valence, const VertexRule& ev_rule);
 
 // Dense copy of the rows (rows x columns), for analysis and checks.
 std::vector<std::vector<Rational>> dense(const std::vector<SparseRow>& rows, std::size_t columns);

@@ -4,6 +4,6 @@
 namespace sg {
 
 inline constexpr const char* kQuadDescentFormat = "stencilgen-quad-descent";
-inline constexpr int kQuadDescentVersion = 3;  // 2: tangent stencils at the vertex; 3: boundary sectors
+inline constexpr int kQuadDescentVersion = 4;  // 2: tangent stencils at the vertex; 3: boundary sectors; 4: cone points
 
 }  // namespace sg

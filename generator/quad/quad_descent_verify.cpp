@@ -59,10 +59,12 @@ void verify_sectors(const DocumentReader<ojson>& r, const ojson& sectors, const 
     BoundarySector sector;
     if (kind == "corner") sector.kind = SectorKind::Corner;
     else if (kind == "dart") sector.kind = SectorKind::Dart;
-    else if (kind != "crease") r.fail(field_path(field, "kind"), "expected \"crease\", \"corner\" or \"dart\"");
-    sector.faces = static_cast<int>(r.integer(r.require(e, "faces", field), field_path(field, "faces"),
-                                              sector.kind == SectorKind::Dart ? 3 : 1, scheme.max_valence));
-    sector.position = static_cast<int>(r.integer(r.require(e, "position", field), field_path(field, "position"), 0, sector.faces - 1));
+    else if (kind == "cone") sector.kind = SectorKind::Cone;
+    else if (kind != "crease") r.fail(field_path(field, "kind"), "expected \"crease\", \"corner\", \"dart\" or \"cone\"");
+    const bool ring = sector.kind == SectorKind::Dart || sector.kind == SectorKind::Cone;
+    sector.faces = static_cast<int>(r.integer(r.require(e, "faces", field), field_path(field, "faces"), ring ? 3 : 1, scheme.max_valence));
+    sector.position = static_cast<int>(r.integer(r.require(e, "position", field), field_path(field, "position"), 0,
+                                                 sector.kind == SectorKind::Cone ? 0 : sector.faces - 1));
     const QuadDescent fresh = quad_descent(scheme, {}, {sector});
     const QuadDescent::Sector& d = fresh.sectors.front();
     const std::size_t points = d.subdivision.points;

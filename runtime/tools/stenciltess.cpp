@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
       "The mesh's OpenSubdiv tag lines are honoured: faces tagged `hole` are left out (their rims become the\n"
       "output's boundaries); semi-sharp creases and corners (`t crease`, `t corner`, sharpness below 10, and\n"
       "`t creasemethod chaikin`) and `t smoothtriangles` (Catmull-Clark) as in OpenSubdiv; the output stays closed\n"
-      "along creases. Infinitely sharp creases, corners and darts (10 or more) too, for quad schemes (refused\n"
+      "along creases. Infinitely sharp creases, corners, darts and cone points (10 or more) too, for quad schemes (refused\n"
       "naming the line for triangle schemes).\n"
       "Meshes with boundaries (quad schemes): every boundary vertex, in any number of faces, with --boundary\n"
       "edge-only (the default), edge-and-corner (or `t interpolateboundary 1/0/0 1`: corners in one face stay put)\n"

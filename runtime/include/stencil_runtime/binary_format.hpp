@@ -27,7 +27,7 @@ namespace stencil_runtime::format {
 
 // Compact binary surface tables (*.sgs): every valence and rate of one quad scheme.
 inline constexpr char kSurfaceMagic[8] = {'S', 'G', 'S', 'U', 'R', 'F', '\0', '\0'};
-inline constexpr std::uint32_t kSurfaceVersion = 8;  // 2: subdivision rules after the hash; 3: polygon rules; 4: scheme name, patch subdivision; 5: phi' of the regular curve; 6: tangent stencils at the extraordinary vertex; 7: the layout byte (generated stencils); 8: boundary sectors
+inline constexpr std::uint32_t kSurfaceVersion = 9;  // 2: subdivision rules after the hash; 3: polygon rules; 4: scheme name, patch subdivision; 5: phi' of the regular curve; 6: tangent stencils at the extraordinary vertex; 7: the layout byte (generated stencils); 8: boundary sectors; 9: cone points (sector rule 3)
 
 // How a .sgs file holds the extraordinary patches' stencils (version 7).
 // Stored: every stencil. Generated: only what generates them (the patch

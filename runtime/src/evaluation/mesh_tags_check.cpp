@@ -1,15 +1,12 @@
 // SurfaceTopology::create from a Mesh: its OBJ tags become the features the
-// runtime honours (holes, creases and corners, infinitely sharp ones for quad
-// schemes, the crease method, smooth triangles), and a tag it cannot honour
+// runtime honours (holes, creases and corners, infinitely sharp ones and cone
+// points for quad schemes, the crease method, smooth triangles), and a tag it cannot honour
 // yet is an error naming its line instead of a silently different surface.
 #include <algorithm>
-#include <map>
-#include <set>
 #include <sstream>
 #include <string>
 
 #include "stencil_runtime/surface_topology.hpp"
-#include "mesh/polygon_links.hpp"
 #include "tables/quad_tables.hpp"
 
 namespace stencil_runtime {
@@ -38,7 +35,8 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   MeshFeatures features;
   features.chaikin = tags.chaikin_creases;
   features.boundary = tags.boundary;
-  // Infinitely sharp features are boundaries of the cut mesh for quad schemes (family/sharp_cut.hpp); not yet for triangle ones.
+  // Infinitely sharp features are boundaries of the cut mesh for quad schemes (family/sharp_cut.hpp), a sharp vertex on
+  // none of them a cone point; not yet for triangle ones.
   const bool triangles_only = tables->family() != SchemeFamily::Quad;
   for (const auto& c : tags.creases) {
     const std::string edge = "the edge " + std::to_string(c.a) + "-" + std::to_string(c.b);
@@ -51,33 +49,6 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
     if (c.sharpness >= kInfinite && triangles_only)
       refuse(mesh, c.line, "an infinitely sharp corner (sharpness " + number(c.sharpness) + " >= 10) at " + vertex + " of a triangle scheme");
     features.vertices.push_back({c.vertex, c.sharpness});
-  }
-  // An infinitely sharp vertex inside the mesh on no infinitely sharp edge (a cone point) has no patches yet:
-  // named with its tag's line.
-  if (!triangles_only) {
-    std::map<int, std::vector<const MeshTags::Crease*>> sharp_at;
-    for (const auto& c : tags.creases)
-      if (c.sharpness >= kInfinite) sharp_at[c.a].push_back(&c), sharp_at[c.b].push_back(&c);
-    bool sharp_corner = false;
-    for (const auto& c : tags.corners) sharp_corner |= c.sharpness >= kInfinite;
-    if (!sharp_at.empty() || sharp_corner) {
-      Connectivity connectivity{mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices};
-      PolygonLinks links;
-      try {
-        links = link_polygons(connectivity, true);
-      } catch (const MeshError&) {  // create() names what is wrong with the mesh itself
-      }
-      for (const auto& c : tags.corners) {
-        const std::size_t v = static_cast<std::size_t>(c.vertex);
-        const auto it = sharp_at.find(c.vertex);
-        std::set<std::pair<int, int>> edges;
-        if (it != sharp_at.end())
-          for (const auto* e : it->second) edges.insert({std::min(e->a, e->b), std::max(e->a, e->b)});
-        if (c.sharpness >= kInfinite && v < links.boundary.size() && !links.boundary[v] && edges.empty())
-          refuse(mesh, c.line, "an infinitely sharp corner (sharpness " + number(c.sharpness) + " >= 10) at vertex " + std::to_string(c.vertex) +
-                                   " inside the mesh on no infinitely sharp edge (a cone point)");
-      }
-    }
   }
   // Smooth triangles change Catmull-Clark's first step only (Loop ignores the tag, as OpenSubdiv).
   const bool triangles = std::find(mesh.face_sizes.begin(), mesh.face_sizes.end(), 3) != mesh.face_sizes.end();

@@ -37,10 +37,8 @@ SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& lin
     const bool sharp_vertex = sharpness.vertex(static_cast<int>(v)) >= kInfiniteSharpness ||
                               (boundary && edge_and_corner && links.valence[v] == 1);
     const int infinite_edges = sharp[v] - (boundary ? 2 : 0);
-    if (!boundary && sharp_vertex && infinite_edges == 0)
-      throw MeshError("vertex " + std::to_string(v) + " is infinitely sharp inside the mesh on no infinitely sharp edge: such "
-                      "a cone point has no patches yet; give it a finite sharpness below 10");
-    if (sharp_vertex || sharp[v] >= 3) vertex_rule[v] = SectorRule::Corner;
+    if (!boundary && sharp_vertex && infinite_edges == 0) vertex_rule[v] = SectorRule::Cone;  // not cut: its ring stays closed
+    else if (sharp_vertex || sharp[v] >= 3) vertex_rule[v] = SectorRule::Corner;
     else if (sharp[v] == 1) vertex_rule[v] = SectorRule::Dart;  // inside, on one infinitely sharp edge
   }
   // Corners at the same vertex stay together across every edge that is not infinitely sharp.

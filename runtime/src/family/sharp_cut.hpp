@@ -28,15 +28,15 @@ namespace stencil_runtime {
 struct SharpCut {
   Connectivity mesh;             // the same faces; vertices split along infinitely sharp edges
   std::vector<int> origin;       // per vertex of `mesh`: the vertex of the uncut mesh it copies (itself for the first copy)
-  std::vector<SectorRule> rule;  // per vertex of `mesh`: crease (or none inside), corner, dart
+  std::vector<SectorRule> rule;  // per vertex of `mesh`: crease (or none inside), corner, dart, cone (inside)
   bool cut = false;              // whether any vertex was split
 };
 
 // `links`: of `mesh`. A crease that ends inside the mesh (a vertex on one such
 // edge, a dart) leaves its end one vertex, in all its faces, on the boundary
-// of the cut mesh (the slit), with the dart rule. Throws MeshError naming the
-// vertex (numbered in `mesh`) for what has no patches yet: an infinitely sharp
-// vertex inside the mesh on no infinitely sharp edge (a cone point).
+// of the cut mesh (the slit), with the dart rule. An infinitely sharp vertex
+// inside the mesh on no infinitely sharp edge (a cone point) stays inside the
+// cut mesh, with the cone rule.
 SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& links, const LevelSharpness& sharpness,
                                bool edge_and_corner);
 

@@ -55,7 +55,7 @@ bool isolated(const QuadTopology& topo, const std::vector<SectorRule>& corner, b
       continue;
     }
     int extraordinary = 0;
-    for (int c = 0; c < 4; ++c) extraordinary += topo.valence(topo.vertex(f, c)) != 4;
+    for (int c = 0; c < 4; ++c) extraordinary += !regular_inside(topo, topo.vertex(f, c), corner);
     if (extraordinary > 1) return false;
   }
   return true;
@@ -73,7 +73,15 @@ void check_vertices(const SharpCut& cut, const PolygonLinks& links, bool no_boun
     const int k = links.valence[v];
     const std::string who = "vertex " + std::to_string(cut.origin[v]);
     if (!links.boundary[v]) {
-      valences.add_lazy(k, [&] { return who; });
+      if (cut.rule[v] != SectorRule::Cone) {
+        valences.add_lazy(k, [&] { return who; });
+      } else if (!tables.has_sector({SectorRule::Cone, k, 0})) {
+        const std::string what = who + " is a cone point (infinitely sharp, on no infinitely sharp edge) of valence " + std::to_string(k);
+        if (!tables.has_sector({SectorRule::Cone, 3, 0}))  // none at all: tables from before cone points
+          throw MeshError(what + "; these tables hold no patches for cone points (descent.json before version 4): "
+                                 "regenerate them with this stencilgen");
+        valences.add_boundary(k, what + " (tables cover those up to their largest valence)");
+      }
       continue;
     }
     if (no_boundary_surface) continue;  // no surface at boundary vertices: any will do
@@ -156,7 +164,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   BoundaryRules boundary;
   ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 4);
   {
-    const SharpCut input = cut_along_sharp_edges(mesh, links, sharpness, edge_and_corner);  // darts are refused here
+    const SharpCut input = cut_along_sharp_edges(mesh, links, sharpness, edge_and_corner);
     check_vertices(input, input.cut ? link_polygons(input.mesh, true) : links, out.no_boundary_surface, t, valences);
   }
   if (links.has_boundary) {
@@ -244,7 +252,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   out.patches.resize(patch_topo.faces());
   for (std::size_t f = 0; f < patch_topo.faces(); ++f) {
     if (!patch_topo.has_boundary() || !touches_boundary(patch_topo, f)) {
-      out.patches[f] = gather_quad_patch(patch_topo, f);
+      out.patches[f] = gather_quad_patch(patch_topo, f, cut.rule);
       continue;
     }
     const int c = sector_corner(patch_topo, f, cut.rule);
@@ -608,6 +616,7 @@ Point QuadFamily::normal_any(std::size_t face, P u, P v, const Point* prepared) 
     if (s.rule == SectorRule::Dart)
       throw EvaluationError("the tables hold no tangent stencils at this dart (the end of an infinitely sharp crease), so "
                             "there is no normal at it: regenerate them with this stencilgen");
+    if (s.rule == SectorRule::Cone) throw EvaluationError("a cone point has no tangent plane, so there is no normal at it");
     throw EvaluationError(s.rule == SectorRule::Corner ? "a corner has no tangent plane, so there is no normal at it"
                                    : "this scheme's boundary rules give no tangent plane at a boundary vertex in " +
                                          std::to_string(s.faces) + " face" + (s.faces == 1 ? "" : "s") +

@@ -31,11 +31,15 @@ struct Cell {
 
 }  // namespace
 
-QuadPatch gather_quad_patch(const QuadTopology& topo, std::size_t face) {
+bool regular_inside(const QuadTopology& topo, int vertex, const std::vector<SectorRule>& rule) {
+  return topo.valence(vertex) == 4 && rule[static_cast<std::size_t>(vertex)] != SectorRule::Cone;
+}
+
+QuadPatch gather_quad_patch(const QuadTopology& topo, std::size_t face, const std::vector<SectorRule>& rule) {
   QuadPatch p;
   int ev = -1;
   for (int c = 0; c < 4; ++c)
-    if (topo.valence(topo.vertex(face, c)) != 4) {
+    if (!regular_inside(topo, topo.vertex(face, c), rule)) {
       if (ev >= 0) throw MeshError("face " + std::to_string(face) + " has two extraordinary vertices");
       ev = c;
     }
@@ -58,7 +62,8 @@ QuadPatch gather_quad_patch(const QuadTopology& topo, std::size_t face) {
     return p;
   }
   const int v = topo.valence(topo.vertex(face, ev));
-  p.valence = v;
+  // A cone point's patch has the interior layout (at valence 4 too) and its own kind.
+  p.valence = rule[static_cast<std::size_t>(topo.vertex(face, ev))] == SectorRule::Cone ? sector_kind({SectorRule::Cone, v, 0}) : v;
   p.rotation = ev;
   p.points.assign(static_cast<std::size_t>(2 * v + 8), -1);
   p.points[0] = topo.vertex(face, ev);
@@ -119,7 +124,7 @@ bool boundary_patch_ready(const QuadTopology& topo, std::size_t face, const std:
       const bool on_edge = topo.twin(QuadTopology::half_edge(face, c)) == QuadTopology::kNoTwin ||
                            topo.twin(QuadTopology::half_edge(face, c + 3)) == QuadTopology::kNoTwin;
       if (!on_edge) return false;
-    } else if (topo.valence(v) != 4) {
+    } else if (!regular_inside(topo, v, rule)) {
       return false;
     }
   }
@@ -190,7 +195,7 @@ bool sector_patch_ready(const QuadTopology& topo, std::size_t face, int at, cons
   for (int d = 1; d <= 3; ++d) {
     const int v = topo.vertex(face, corner + d);
     if (!topo.on_boundary(v)) {
-      if (topo.valence(v) != 4) return false;
+      if (!regular_inside(topo, v, rule)) return false;
     } else {
       // e_p (d = 1) on the edge corner -> corner+1, e_{p+1} (d = 3) on corner+3 -> corner; f_p never.
       const bool on_edge = (d == 1 && boundary_edge(corner)) || (d == 3 && boundary_edge(corner + 3));

@@ -39,8 +39,14 @@ struct QuadPatch {
   }
 };
 
-// Requires at most one extraordinary corner on the face (the preparation).
-QuadPatch gather_quad_patch(const QuadTopology& topology, std::size_t face);
+// Whether a vertex inside the mesh is regular: in four faces and no cone
+// point (`rule`: per vertex, sharp_cut.hpp).
+bool regular_inside(const QuadTopology& topology, int vertex, const std::vector<SectorRule>& rule);
+
+// Requires at most one corner of the face that is not regular_inside (the
+// preparation): its patch is the interior one of that valence, or a cone
+// point's (the same layout, its own kind).
+QuadPatch gather_quad_patch(const QuadTopology& topology, std::size_t face, const std::vector<SectorRule>& rule);
 
 // Faces on a mesh's boundary whose patch is regular once the points beyond
 // the boundary are supplied (docs/runtime.md, "Boundaries"): the face has one

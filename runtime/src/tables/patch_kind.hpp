@@ -14,21 +14,32 @@ namespace stencil_runtime {
 // A sector's vertex rule: the boundary curve's (a vertex on a boundary or an
 // infinitely sharp crease), none (a corner: it stays put), or the smooth rule
 // (a dart: the end of an infinitely sharp crease, a boundary vertex of the
-// mesh cut along it whose e_0 and e_k are copies of one vertex).
-enum class SectorRule : unsigned char { Crease = 0, Corner = 1, Dart = 2 };
+// mesh cut along it whose e_0 and e_k are copies of one vertex). A cone point
+// (an infinitely sharp vertex inside the mesh on no infinitely sharp edge) is
+// no boundary vertex, but its patch is kept as a sector too: the interior
+// patch's layout (2v+8 points) with the vertex held, the same for every face
+// round it (position 0).
+enum class SectorRule : unsigned char { Crease = 0, Corner = 1, Dart = 2, Cone = 3 };
 
 struct SectorKey {
   SectorRule rule = SectorRule::Crease;
-  int faces = 1;     // k, 1..kMaxValence (a dart: its valence, >= 3)
-  int position = 0;  // p, 0..k-1
+  int faces = 1;     // k, 1..kMaxValence (a dart or a cone: its valence, >= 3)
+  int position = 0;  // p, 0..k-1 (a cone: 0)
   bool operator==(const SectorKey&) const = default;
   bool valid() const {
-    return faces >= (rule == SectorRule::Dart ? 3 : 1) && faces <= limits::kMaxValence && position >= 0 && position < faces;
+    const bool ring = rule == SectorRule::Dart || rule == SectorRule::Cone;
+    return faces >= (ring ? 3 : 1) && faces <= limits::kMaxValence && position >= 0 &&
+           position < (rule == SectorRule::Cone ? 1 : faces);
   }
   // The patch's control points: the vertex, its k+1 edge neighbours, k face
-  // opposites, and the outer points of the face's chart that exist.
-  int points() const { return 2 * faces + 2 + 5 + (position > 0 ? 1 : 0) + (position + 1 < faces ? 1 : 0); }
+  // opposites, and the outer points of the face's chart that exist (a cone:
+  // the interior patch's 2k+8).
+  int points() const {
+    if (rule == SectorRule::Cone) return 2 * faces + 8;
+    return 2 * faces + 2 + 5 + (position > 0 ? 1 : 0) + (position + 1 < faces ? 1 : 0);
+  }
   std::string name() const {
+    if (rule == SectorRule::Cone) return "cone point of valence " + std::to_string(faces);
     if (rule == SectorRule::Dart) return "dart of valence " + std::to_string(faces) + ", face " + std::to_string(position);
     return std::string(rule == SectorRule::Corner ? "corner" : "boundary vertex") + " in " + std::to_string(faces) + " face" +
            (faces == 1 ? "" : "s") + ", face " + std::to_string(position);

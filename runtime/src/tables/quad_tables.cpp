@@ -201,7 +201,7 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
     t.descent_valences_.push_back(std::move(d));
     t.valences_.push_back(std::move(v));
   }
-  const auto sector_count = r.get<std::uint32_t>();  // version 8: boundary sectors
+  const auto sector_count = r.get<std::uint32_t>();  // version 8: boundary sectors (9: cone points too)
   if (sector_count > left() / 14) r.fail("truncated sector list");
   for (std::uint32_t k = 0; k < sector_count; ++k) {
     Sector sec;
@@ -209,9 +209,9 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
     const auto faces = r.get<std::uint32_t>(), position = r.get<std::uint32_t>(), points = r.get<std::uint32_t>();
     sec.key = {static_cast<SectorRule>(rule), static_cast<int>(std::min<std::uint32_t>(faces, 1024)),
                static_cast<int>(std::min<std::uint32_t>(position, 1024))};
-    if (rule > 2 || !sec.key.valid())
+    if (rule > 3 || !sec.key.valid())
       r.fail("boundary sector " + std::to_string(k) + ": invalid kind, face count (1.." + std::to_string(limits::kMaxValence) +
-             ", a dart 3..) or position");
+             ", a dart or cone 3..) or position (a cone: 0)");
     const std::string where = sec.key.name();
     if (points != static_cast<std::uint32_t>(sec.key.points())) r.fail(where + ": invalid point count");
     for (int n : t.rates_)  // expanded on first use: refused now if it could not be

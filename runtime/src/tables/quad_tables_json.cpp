@@ -265,8 +265,8 @@ QuadTables QuadTables::load_json_directory(const std::string& dir, std::uint64_t
     const JsonFile f(descent.string());
     const json& doc = f.root();
     const std::int64_t version = f.integer(f.member(doc, "version", ""), "version");
-    if (f.string(f.member(doc, "format", ""), "format") != "stencilgen-quad-descent" || version < 1 || version > 3)
-      f.fail("format", "not a version 1, 2 or 3 stencilgen quad descent file");
+    if (f.string(f.member(doc, "format", ""), "format") != "stencilgen-quad-descent" || version < 1 || version > 4)
+      f.fail("format", "not a version 1 to 4 stencilgen quad descent file");
     if (f.string(f.member(doc, "scheme", ""), "scheme") != t.name_) f.fail("scheme", "another scheme than the tables'");
     QuadDescent& d = t.descent_;
     const json& mask = f.member(doc, "mask", "");
@@ -324,13 +324,15 @@ QuadTables QuadTables::load_json_directory(const std::string& dir, std::uint64_t
         const std::string kind = f.string(f.member(e, "kind", field), field + ".kind");
         if (kind == "corner") sec.key.rule = SectorRule::Corner;
         else if (kind == "dart") sec.key.rule = SectorRule::Dart;
-        else if (kind != "crease") f.fail(field + ".kind", "expected \"crease\", \"corner\" or \"dart\"");
+        else if (kind == "cone" && version >= 4) sec.key.rule = SectorRule::Cone;
+        else if (kind != "crease") f.fail(field + ".kind", version >= 4 ? "expected \"crease\", \"corner\", \"dart\" or \"cone\""
+                                                                         : "expected \"crease\", \"corner\" or \"dart\"");
         const std::int64_t faces = f.integer(f.member(e, "faces", field), field + ".faces");
         const std::int64_t position = f.integer(f.member(e, "position", field), field + ".position");
         sec.key.faces = static_cast<int>(std::clamp<std::int64_t>(faces, -1, 1024));
         sec.key.position = static_cast<int>(std::clamp<std::int64_t>(position, -1, 1024));
         if (!sec.key.valid())
-          f.fail(field, "face count outside 1.." + std::to_string(limits::kMaxValence) + " (a dart: 3..) or position outside 0..faces-1");
+          f.fail(field, "face count outside 1.." + std::to_string(limits::kMaxValence) + " (a dart or cone: 3..) or position outside 0..faces-1 (a cone: 0)");
         const std::size_t points = static_cast<std::size_t>(sec.key.points());
         if (f.integer(f.member(e, "points", field), field + ".points") != static_cast<std::int64_t>(points))
           f.fail(field + ".points", "expected " + std::to_string(points));
