@@ -27,6 +27,7 @@ struct Creasing {
   bool chaikin = false;
   bool smooth_triangles = false;  // Catmark's TRI_SUB_SMOOTH
   bool boundary_corners = false;  // VTX_BOUNDARY_EDGE_AND_CORNER (default: edge only)
+  bool boundary_none = false;     // VTX_BOUNDARY_NONE (faces at boundary vertices have no surface)
 };
 
 inline std::unique_ptr<osd::Far::TopologyRefiner> make_refiner(int num_vertices, const std::vector<int>& sizes,
@@ -48,8 +49,9 @@ inline std::unique_ptr<osd::Far::TopologyRefiner> make_refiner(int num_vertices,
   desc.cornerVertexIndices = creasing.corners.empty() ? nullptr : creasing.corners.data();
   desc.cornerWeights = creasing.corner_sharpness.empty() ? nullptr : creasing.corner_sharpness.data();
   osd::Sdc::Options sdc;
-  sdc.SetVtxBoundaryInterpolation(creasing.boundary_corners ? osd::Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER
-                                                            : osd::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  sdc.SetVtxBoundaryInterpolation(creasing.boundary_none      ? osd::Sdc::Options::VTX_BOUNDARY_NONE
+                                   : creasing.boundary_corners ? osd::Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER
+                                                               : osd::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
   if (creasing.chaikin) sdc.SetCreasingMethod(osd::Sdc::Options::CREASE_CHAIKIN);
   if (creasing.smooth_triangles) sdc.SetTriangleSubdivision(osd::Sdc::Options::TRI_SUB_SMOOTH);
   using Factory = osd::Far::TopologyRefinerFactory<osd::Far::TopologyDescriptor>;

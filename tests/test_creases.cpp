@@ -65,6 +65,10 @@ struct Features {
     osd.corner_sharpness.push_back(s);
   }
   void chaikin() { ours.chaikin = osd.chaikin = true; }
+  void boundary_none() {
+    ours.boundary = BoundaryInterpolation::None;
+    osd.boundary_none = true;
+  }
   void smooth_triangles() { ours.smooth_triangles = osd.smooth_triangles = true; }
 };
 
@@ -91,6 +95,9 @@ double bfr_difference(const std::shared_ptr<const Tables>& tables, const Mesh& m
   double worst = 0;
   for (std::size_t face = 0; face < mesh.face_count(); ++face) {
     if (mesh.face_sizes[face] != (loop ? 3 : 4)) continue;
+    const bool hole = surface.topology().is_hole(face);
+    CHECK(hole == !reference.has_surface(static_cast<int>(face)));  // `none`: the faces at boundary vertices
+    if (hole) continue;
     for (long n = 1; n <= 8; ++n)
       for (long j = 0; j <= n; ++j)
         for (long i = 0; i + (loop ? j : 0) <= n; ++i) {
@@ -371,6 +378,41 @@ TEST_CASE("infinitely sharp creases and corners (sharpness >= 10) on quad meshes
     CHECK(worst < 1e-10);
     if (c.darts.empty()) CHECK(far_difference(tables, c.mesh, c.f, 3) < 1e-10);
     WARN(c.name << ": largest difference to Bfr over the mesh size " << worst);
+  }
+}
+
+TEST_CASE("boundary interpolation none with infinitely sharp creases, darts and cone points gives no surface at the "
+          "faces at the mesh's own boundary vertices and Bfr's surface at every other face",
+          "[runtime][creases][sharp][boundaries][opensubdiv]") {
+  const auto tables = catmull_clark();
+  {  // an open grid: a sharp line across it, boundary to boundary; a sharp edge leaving it (a corner on the line,
+     // a dart inside); a cone point next to the boundary
+    const Mesh grid = test_meshes::open_grid(6, 5);
+    auto at = [](int i, int j) { return j * 7 + i; };
+    Features f;
+    f.boundary_none();
+    for (int i = 0; i < 6; ++i) f.crease(at(i, 2), at(i + 1, 2), 10);
+    f.crease(at(3, 2), at(3, 3), 10);
+    f.corner(at(1, 4), 10);
+    const Surface surface = surface_with(tables, grid, f);
+    std::size_t with_surface = 0;
+    for (std::size_t face = 0; face < grid.face_count(); ++face) with_surface += !surface.topology().is_hole(face);
+    CHECK(with_surface == 4 * 3);  // the faces touching no boundary vertex
+    check_rimmed_manifold(tessellate(surface, std::vector<int>(grid.face_count(), 3)), 1, 0);  // a disc, across the creases
+    const double worst = bfr_difference(tables, grid, f, {at(3, 3)});  // but at the dart vertex (OpenSubdiv's limit misses it)
+    CHECK(worst < 1e-10);
+    WARN("open grid with `none`, a sharp line, a dart and a cone point: largest difference to Bfr over the size " << worst);
+  }
+  {  // a tube: a sharp ring round its middle, a semi-sharp edge of 1.5 beside it
+    const Mesh tube = test_meshes::tube(8, 6);
+    Features f;
+    f.boundary_none();
+    for (int i = 0; i < 8; ++i) f.crease(3 * 8 + i, 3 * 8 + (i + 1) % 8, 10);
+    f.crease(3 * 8 + 2, 4 * 8 + 2, 1.5f);
+    const double worst = bfr_difference(tables, tube, f);
+    CHECK(worst < 1e-10);
+    check_rimmed_manifold(tessellate(surface_with(tables, tube, f), std::vector<int>(tube.face_count(), 4)), 2, 0);  // a band
+    WARN("tube with `none` and a sharp ring: largest difference to Bfr over the size " << worst);
   }
 }
 

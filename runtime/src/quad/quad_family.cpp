@@ -33,6 +33,26 @@ bool touches_boundary(const QuadTopology& topo, std::size_t f) {
   return false;
 }
 
+// Whether face f has a corner at a vertex marked in `no_surface` (per vertex, or empty).
+bool without_surface(const QuadTopology& topo, std::size_t f, const std::vector<char>& no_surface) {
+  if (no_surface.empty()) return false;
+  for (int c = 0; c < 4; ++c)
+    if (no_surface[static_cast<std::size_t>(topo.vertex(f, c))]) return true;
+  return false;
+}
+
+// With `none`, per vertex of the cut mesh: whether it copies a vertex on the
+// mesh's own boundary (`uncut`: the whole-mesh step's topology), whose faces
+// have no surface; crease copies are boundary vertices of the cut mesh only.
+// Empty without `none`.
+std::vector<char> no_surface_vertices(bool no_boundary_surface, const QuadTopology& uncut, const SharpCut& cut) {
+  std::vector<char> out;
+  if (!no_boundary_surface) return out;
+  out.resize(cut.mesh.vertex_count);
+  for (std::size_t v = 0; v < out.size(); ++v) out[v] = uncut.on_boundary(cut.origin[v]) ? 1 : 0;
+  return out;
+}
+
 // The corner of face f at a boundary vertex with a sector patch (sector_vertex), or -1.
 int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<SectorRule>& corner) {
   for (int c = 0; c < 4; ++c)
@@ -43,13 +63,15 @@ int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<Sec
 // Whether every face has a patch: at most one extraordinary corner; a face at
 // a boundary vertex in other than two faces (or a corner) its sector's patch;
 // any other face touching the boundary one of the regular boundary patches
-// (with `none`, faces touching the boundary have no surface, hence no patch).
-// `topo` is the mesh cut along its infinitely sharp edges (sharp_cut.hpp), whose
-// boundaries are the mesh's and its creases, `corner` its vertices' rules.
-bool isolated(const QuadTopology& topo, const std::vector<SectorRule>& corner, bool no_boundary_surface) {
+// (with `none`, faces touching the mesh's own boundary have no surface, hence
+// no patch). `topo` is the mesh cut along its infinitely sharp edges
+// (sharp_cut.hpp), whose boundaries are the mesh's and its creases, `corner`
+// its vertices' rules, `no_surface` per vertex whether the faces at it have no
+// surface (empty: none).
+bool isolated(const QuadTopology& topo, const std::vector<SectorRule>& corner, const std::vector<char>& no_surface) {
   for (std::size_t f = 0; f < topo.faces(); ++f) {
     if (topo.has_boundary() && touches_boundary(topo, f)) {
-      if (no_boundary_surface) continue;
+      if (without_surface(topo, f, no_surface)) continue;
       const int c = sector_corner(topo, f, corner);
       if (c >= 0 ? !sector_patch_ready(topo, f, c, corner) : !boundary_patch_ready(topo, f, corner)) return false;
       continue;
@@ -67,8 +89,8 @@ bool isolated(const QuadTopology& topo, const std::vector<SectorRule>& corner, b
 // (steps keep a vertex's number of faces, so this is checked once on the
 // input). stencilgen writes sectors for up to as many faces as the largest
 // valence it is given.
-void check_vertices(const SharpCut& cut, const PolygonLinks& links, bool no_boundary_surface, const QuadTables& tables,
-                    ValenceCheck& valences) {
+void check_vertices(const SharpCut& cut, const PolygonLinks& links, const PolygonLinks& uncut, bool no_boundary_surface,
+                    const QuadTables& tables, ValenceCheck& valences) {
   for (std::size_t v = 0; v < cut.mesh.vertex_count; ++v) {
     const int k = links.valence[v];
     const std::string who = "vertex " + std::to_string(cut.origin[v]);
@@ -84,7 +106,7 @@ void check_vertices(const SharpCut& cut, const PolygonLinks& links, bool no_boun
       }
       continue;
     }
-    if (no_boundary_surface) continue;  // no surface at boundary vertices: any will do
+    if (no_boundary_surface && uncut.boundary[static_cast<std::size_t>(cut.origin[v])]) continue;  // no surface there: any will do
     const SectorRule rule = cut.rule[v];
     if ((k == 2 && rule == SectorRule::Crease) || (k == 1 && rule == SectorRule::Corner)) continue;  // regular boundary patches
     if (k > limits::kMaxValence)
@@ -159,13 +181,11 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   out.boundary = links.has_boundary;
   out.no_boundary_surface = links.has_boundary && features.boundary == BoundaryInterpolation::None;
   LevelSharpness sharpness = LevelSharpness::of(mesh, features, true);
-  if (sharpness.infinite() && features.boundary == BoundaryInterpolation::None && links.has_boundary)
-    throw MeshError("boundary interpolation `none` together with infinitely sharp creases or corners is not supported yet");
   BoundaryRules boundary;
   ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 4);
   {
     const SharpCut input = cut_along_sharp_edges(mesh, links, sharpness, edge_and_corner);
-    check_vertices(input, input.cut ? link_polygons(input.mesh, true) : links, out.no_boundary_surface, t, valences);
+    check_vertices(input, input.cut ? link_polygons(input.mesh, true) : links, links, out.no_boundary_surface, t, valences);
   }
   if (links.has_boundary) {
     const CurveCreaseRule crease = quad_crease_rule(t, tables.scheme());
@@ -231,13 +251,15 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   const int before_isolation = out.steps;
   SharpCut cut = cut_of(out.mesh, sharpness, edge_and_corner);
   QuadTopology patch_topo(cut.mesh, true);
-  while (!isolated(patch_topo, cut.rule, out.no_boundary_surface)) {
+  std::vector<char> no_surface = no_surface_vertices(out.no_boundary_surface, topo, cut);
+  while (!isolated(patch_topo, cut.rule, no_surface)) {
     if (out.steps - before_isolation + (out.polygon_step ? 1 : 0) == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices still share faces after " + std::to_string(limits::kMaxRefinementSteps) +
                       " subdivision steps");
     step_once();
     cut = cut_of(out.mesh, sharpness, edge_and_corner);
     patch_topo = QuadTopology(cut.mesh, true);
+    no_surface = no_surface_vertices(out.no_boundary_surface, topo, cut);
   }
   // The patches, on the cut mesh. Its extra vertices (copies of those on
   // creases) and the points beyond its boundaries (boundary_patch_ready)
@@ -256,11 +278,11 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
       continue;
     }
     const int c = sector_corner(patch_topo, f, cut.rule);
-    if (out.no_boundary_surface) out.patches[f].points.assign(16, 0);  // a hole: never evaluated
+    if (without_surface(patch_topo, f, no_surface)) out.patches[f].points.assign(16, 0);  // a hole: never evaluated
     else if (c >= 0) out.patches[f] = gather_sector_patch(patch_topo, f, c, cut.rule);
     else out.patches[f] = gather_boundary_patch(patch_topo, f, cut.mesh.vertex_count, phantoms);
   }
-  if (!phantoms.empty()) out.refinement.add(appended(cut.mesh.vertex_count, phantoms));  // none with `none`
+  if (!phantoms.empty()) out.refinement.add(appended(cut.mesh.vertex_count, phantoms));
   return out;
 }
 
