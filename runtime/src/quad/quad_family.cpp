@@ -787,12 +787,13 @@ void QuadFamily::points(const TessellationLayout& layout, std::size_t begin, std
     for (std::size_t h = 0; h < m; ++h) local[h] = pos[p.points[h]];
     if (reflect)
       for (std::size_t h = 0; h < m; ++h) reflected[h] = local[reflect[h]];
+    const QuadTables::CentreGrid grid = tables_.centre_grid(p.valence, n);
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         long pa = 0, pb = 0;
         p.to_patch(2L * i + 1, 2L * j + 1, 2L * n, pa, pb);
         bool mirrored = false;
-        const double* wt = tables_.centre_weights(p.valence, n, static_cast<int>(pa / 2), static_cast<int>(pb / 2), mirrored);
+        const double* wt = grid.at(static_cast<int>(pa / 2), static_cast<int>(pb / 2), mirrored);
         const Point* P = mirrored ? reflected.data() : local.data();
         double x = 0, y = 0, z = 0;
         for (std::size_t h = 0; h < m; ++h) x += wt[h] * P[h][0], y += wt[h] * P[h][1], z += wt[h] * P[h][2];

@@ -339,8 +339,7 @@ void QuadTables::validate(const std::string& origin) {
     const Sector& sec = sectors_[k];
     const std::string where = sec.key.valid() ? sec.key.name() : "boundary sector " + std::to_string(k);
     if (!sec.key.valid()) fail(where + ": invalid face count or position");
-    for (std::size_t j = 0; j < k; ++j)
-      if (sectors_[j].key == sec.key) fail(where + " is stored twice");
+    if (!sector_by_kind_.emplace(sector_kind(sec.key), k).second) fail(where + " is stored twice");
     const std::size_t n = static_cast<std::size_t>(sec.key.points());
     const QuadDescent::Valence& d = sec.descent;
     if (sec.limit.size() != n || d.ev_child.rows() != n || d.ev_child.columns_count != n)
@@ -364,9 +363,8 @@ void QuadTables::validate(const std::string& origin) {
 }
 
 const QuadTables::Sector* QuadTables::find_sector(const SectorKey& s) const {
-  for (const Sector& x : sectors_)
-    if (x.key == s) return &x;
-  return nullptr;
+  const auto it = sector_by_kind_.find(sector_kind(s));  // per evaluated point: no scan over the sectors
+  return it == sector_by_kind_.end() ? nullptr : &sectors_[it->second];
 }
 
 std::vector<SectorKey> QuadTables::sectors() const {
@@ -478,6 +476,18 @@ const double* QuadTables::centre_weights(int valence, int n, int i, int j, bool&
   const Valence& v = valence_data(valence);
   mirrored = i > j && !v.reflection.empty();
   return stored_weights(v, slot, mirrored ? j : i, mirrored ? i : j, true);
+}
+
+QuadTables::CentreGrid QuadTables::centre_grid(int valence, int n) const {
+  const int slot = checked_slot(n);
+  const Valence& v = valence_data(valence);
+  CentreGrid g;
+  g.weights_ = v.weights.data();
+  g.index_ = v.centres[static_cast<std::size_t>(slot)].data();
+  g.side_ = n;
+  g.points_ = static_cast<std::size_t>(v.points);
+  g.reflected_ = !v.reflection.empty();
+  return g;
 }
 
 void QuadTables::regular_weights_at(int slot, long a, double* w4) const {

@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "patch_kind.hpp"
@@ -115,6 +116,27 @@ class QuadTables {
   // they are the weights at (j, i): apply them to the control points permuted
   // by reflection(valence), i.e. weight h multiplies point reflection[h].
   const double* centre_weights(int valence, int n, int i, int j, bool& mirrored) const;
+  // The same for every cell of one patch kind at rate n, looked up once (a
+  // face's loop over its cells): at(i, j, mirrored), 0 <= i, j < n, is
+  // centre_weights(valence, n, i, j, mirrored). Valid while the tables live.
+  class CentreGrid {
+   public:
+    const double* at(int i, int j, bool& mirrored) const {
+      mirrored = reflected_ && i > j;
+      const long a = mirrored ? j : i, b = mirrored ? i : j;
+      const long k = reflected_ ? b * (b + 1) / 2 + a : b * side_ + a;
+      return weights_ + static_cast<std::size_t>(index_[static_cast<std::size_t>(k)]) * points_;
+    }
+
+   private:
+    friend class QuadTables;
+    const double* weights_ = nullptr;
+    const std::uint32_t* index_ = nullptr;
+    long side_ = 0;
+    std::size_t points_ = 0;
+    bool reflected_ = false;
+  };
+  CentreGrid centre_grid(int valence, int n) const;
   // nullptr for a boundary sector, which has no reflection (and is never mirrored).
   const std::uint32_t* reflection(int valence) const {
     const auto& r = valence_data(valence).reflection;
@@ -180,6 +202,7 @@ class QuadTables {
   QuadDescent descent_;
   std::vector<QuadDescent::Valence> descent_valences_;  // parallel to valences_
   std::vector<Sector> sectors_;
+  std::unordered_map<int, std::size_t> sector_by_kind_;  // sector_kind(key) -> position in sectors_ (validate)
 };
 
 }  // namespace stencil_runtime
