@@ -13,6 +13,7 @@
 
 #include "bfr_distance.hpp"
 #include "distance/affine_enclosure.hpp"
+#include "distance/convex_bound.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
 #include "stencil_runtime/closest_point.hpp"
@@ -361,6 +362,102 @@ TEST_CASE("the affine enclosure bounds every sampled sub-patch from below and ti
     // order, 4 levels below depth 1 the gap is far smaller (1/256 ideally).
     CHECK(worst_gap_deep < 1e-3 * diagonal);
     CHECK(worst_gap_deep < worst_gap_shallow / 16);
+  }
+}
+
+// The convexity bound (distance/convex_bound.hpp): the polynomial a family
+// declares for its regular sub-patches is their surface (against the family's
+// exact evaluation from the tables), the point Newton returns lies on that
+// surface, and wherever the squared distance is certified convex the bound
+// is never above the nearest of dense exact samples, and close to it.
+TEST_CASE("the convexity bound holds below dense samples of every sub-patch it certifies", "[runtime][distance]") {
+  for (const SubPatchCase& tc : kSubPatchCases) {
+    CAPTURE(tc.scheme);
+    const Mesh mesh = read_obj((kMeshes / tc.mesh).string());
+    const auto tables = Tables::load(generated_table(tc.scheme, tc.options, tc.extension).string());
+    const Surface surface = surface_of(tables, mesh);
+    const Family& family = surface.topology().family();
+    const PolynomialPatch* polynomial = family.polynomial_patch(tc.regular_kind);
+    CHECK(family.polynomial_patch(tc.extraordinary_kind) == nullptr);
+    if (std::string(tc.scheme) == "nonpoly") {  // its regular patch is no polynomial
+      CHECK(polynomial == nullptr);
+      continue;
+    }
+    REQUIRE(polynomial != nullptr);
+    const ConvexBound convex(*polynomial);
+    REQUIRE(!convex.empty());
+    const double diagonal = diagonal_of(mesh);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int tested = 0, certified = 0, tight = 0, near_deep = 0, near_deep_certified = 0;
+    while (tested < 60) {
+      const int depth = tested % 5;
+      const SubPatch s = random_sub_patch(surface, rng, depth);
+      if (s.kind != tc.regular_kind) continue;
+      ++tested;
+      constexpr int kSamples = 32;
+      std::vector<Point> samples;
+      for (int j = 0; j <= kSamples; ++j)
+        for (int i = 0; i <= (s.domain.triangle ? kSamples - j : kSamples); ++i) {
+          const double X = double(i) / kSamples, Y = double(j) / kSamples;
+          const auto at = s.domain.at(X, Y);
+          samples.push_back(family.evaluate(s, at[0], at[1], 1e-14 * diagonal).point);
+          // The declared polynomial at the same own coordinates.
+          Point p{0, 0, 0};
+          for (std::size_t h = 0; h < s.points.size(); ++h)
+            for (std::size_t m = 0; m < polynomial->monomials.size(); ++m) {
+              const double w = polynomial->coefficients[h][m] * std::pow(X, polynomial->monomials[m][0]) *
+                               std::pow(Y, polynomial->monomials[m][1]);
+              for (int k = 0; k < 3; ++k) p[k] += w * s.points[h][k];
+            }
+          REQUIRE(distance(p, samples.back()) <= 1e-12 * diagonal);
+        }
+      ConvexBound::Prepared prepared;
+      convex.prepare(s.points, prepared);
+      const Point centre = samples[samples.size() / 2];
+      double size = 0;
+      for (const Point& p : samples) size = std::max(size, distance(p, centre));
+      for (int k = 0; k < 24; ++k) {
+        // Near the sub-patch (on both sides, within and beyond its curvature's reach) and far away.
+        const double reach = (k < 8 ? 0.5 : k < 16 ? 4.0 : 100.0) * size;
+        const Point q{centre[0] + reach * unit(rng), centre[1] + reach * unit(rng), centre[2] + reach * unit(rng)};
+        double nearest = INFINITY;
+        for (const Point& p : samples) nearest = std::min(nearest, distance(p, q));
+        const ConvexBound::Result r = convex.bound(prepared, q, INFINITY);  // INFINITY: always Newton's point
+        const auto at = s.domain.at(r.X, r.Y);
+        INFO("depth " << depth << " query " << k << " distance " << nearest << " bound " << r.lower);
+        CHECK(s.domain.contains(at[0], at[1], 1e-12));
+        CHECK(distance(r.point, family.evaluate(s, at[0], at[1], 1e-14 * diagonal).point) <= 1e-12 * diagonal);
+        CHECK(std::fabs(distance(r.point, q) - r.distance) <= 1e-12 * diagonal);
+        if (depth >= 3 && k < 8) ++near_deep, near_deep_certified += r.convex ? 1 : 0;
+        if (!r.convex) continue;
+        ++certified;
+        CHECK(r.lower <= nearest + 1e-12 * diagonal);
+        // Certified convex: the squared distance is midpoint-convex along chords of the frame.
+        const auto squared = [&](double X, double Y) {
+          const auto p = s.domain.at(X, Y);
+          const double d = distance(family.evaluate(s, p[0], p[1], 1e-15 * diagonal).point, q);
+          return d * d;
+        };
+        std::uniform_real_distribution<double> own(0, 1);
+        for (int chord = 0; chord < 8; ++chord) {
+          double ax = own(rng), ay = own(rng), bx = own(rng), by = own(rng);
+          if (s.domain.triangle && ax + ay > 1) ax = 1 - ax, ay = 1 - ay;
+          if (s.domain.triangle && bx + by > 1) bx = 1 - bx, by = 1 - by;
+          const double fa = squared(ax, ay), fb = squared(bx, by), fm = squared(0.5 * (ax + bx), 0.5 * (ay + by));
+          CHECK(fm <= 0.5 * (fa + fb) + 1e-12 * diagonal * diagonal);
+        }
+        // The samples are 1/32 apart: their minimum is within a second-order step of the true one.
+        // Newton's point is the sub-patch's nearest: the bound is its distance.
+        if (r.lower >= r.distance - 1e-9 * size) ++tight;
+      }
+    }
+    // Nearly every query within half a sub-patch's size of a small sub-patch
+    // is certified (the squared distance is convex there), and the certified
+    // bound is the distance of Newton's point.
+    CAPTURE(certified, tight, near_deep, near_deep_certified);
+    CHECK(near_deep_certified >= 0.9 * near_deep);
+    CHECK(tight == certified);
   }
 }
 

@@ -34,7 +34,8 @@ double point_segment_distance(const Point& q, const Point& a, const Point& b) {
 
 }  // namespace
 
-double AffineEnclosure::lower_bound(const std::vector<Point>& points, const Point& q) const {
+AffineEnclosure::Slab AffineEnclosure::slab(const std::vector<Point>& points) const {
+  Slab out;
   Point o{0, 0, 0}, u{0, 0, 0}, v{0, 0, 0};
   double magnitude = 0;
   const std::size_t n = points.size();
@@ -50,26 +51,51 @@ double AffineEnclosure::lower_bound(const std::vector<Point>& points, const Poin
   // parallelogram grown by `across` in its plane and by [low, high] along m.
   const Point m0 = cross(u, v);
   const double m_len = length(m0);
-  const bool flat = m_len > 1e-12 * (length(u) * length(v));
-  const Point m = flat ? Point{m0[0] / m_len, m0[1] / m_len, m0[2] / m_len} : Point{0, 0, 0};
+  out.flat = m_len > 1e-12 * (length(u) * length(v));
+  out.m = out.flat ? Point{m0[0] / m_len, m0[1] / m_len, m0[2] / m_len} : Point{0, 0, 0};
   double low = 0, high = 0, across2 = 0;
   for (std::size_t i = 0; i < n; ++i) {
     Point e{};
     for (int k = 0; k < 3; ++k) e[k] = points[i][k] - (o[k] + at_[i][0] * u[k] + at_[i][1] * v[k]);
-    const double h = dot(e, m);
+    const double h = dot(e, out.m);
     low = std::min(low, h), high = std::max(high, h);
     across2 = std::max(across2, dot(e, e) - h * h);
   }
   // The reproduction's residual moves L(x) by at most (|u| + |v| + |o|) times
   // it; the arithmetic here rounds by a few units in the last place of the points.
   const double slack = residual_ * (length(u) + length(v) + length(o)) + 64 * std::numeric_limits<double>::epsilon() * magnitude;
-  const double across = std::sqrt(std::max(across2, 0.0)) + slack;
-  low -= slack, high += slack;
+  out.across = std::sqrt(std::max(across2, 0.0)) + slack;
+  out.low = low - slack, out.high = high + slack;
+  out.o = o, out.u = u, out.v = v;
+  out.uu = dot(u, u), out.uv = dot(u, v), out.vv = dot(v, v);
+  return out;
+}
+
+std::array<Point, 2> AffineEnclosure::box(const Slab& slab) const {
+  // The image's corners, each grown by the in-plane spread (a ball of radius
+  // `across`) and by the normal range; where L is degenerate, by the ball
+  // lower_bound() takes then.
+  const double along = slab.flat ? 0.0 : std::hypot(slab.across, std::max(-slab.low, slab.high));
+  std::array<Point, 2> out{Point{INFINITY, INFINITY, INFINITY}, Point{-INFINITY, -INFINITY, -INFINITY}};
+  const int corners = triangle_ ? 3 : 4;
+  const double cu[4] = {0, 1, 0, 1}, cv[4] = {0, 0, 1, 1};
+  for (int c = 0; c < corners; ++c)
+    for (int k = 0; k < 3; ++k) {
+      const double p = slab.o[k] + cu[c] * slab.u[k] + cv[c] * slab.v[k];
+      const double lo = std::min(slab.low * slab.m[k], slab.high * slab.m[k]), hi = std::max(slab.low * slab.m[k], slab.high * slab.m[k]);
+      out[0][k] = std::min(out[0][k], p + lo - slab.across - along);
+      out[1][k] = std::max(out[1][k], p + hi + slab.across + along);
+    }
+  return out;
+}
+
+double AffineEnclosure::lower_bound(const Slab& slab, const Point& q) const {
+  const Point &o = slab.o, &u = slab.u, &v = slab.v, &m = slab.m;
   // L's image of the unit domain: the parallelogram a b c d, or the triangle a b d.
   const Point a = o, b{o[0] + u[0], o[1] + u[1], o[2] + u[2]}, d{o[0] + v[0], o[1] + v[1], o[2] + v[2]},
               c{b[0] + v[0], b[1] + v[1], b[2] + v[2]};
-  if (!flat) {  // a degenerate image: the ball around it
-    const double spread = std::hypot(across, std::max(-low, high));
+  if (!slab.flat) {  // a degenerate image: the ball around it
+    const double spread = std::hypot(slab.across, std::max(-slab.low, slab.high));
     const double image = triangle_ ? point_triangle_distance(q, a, b, d)
                                    : std::min(point_triangle_distance(q, a, b, c), point_triangle_distance(q, a, c, d));
     return image - spread;
@@ -77,10 +103,11 @@ double AffineEnclosure::lower_bound(const std::vector<Point>& points, const Poin
   // q's height above the plane, and its foot's distance in the plane from the parallelogram.
   const Point w = minus(q, o);
   const double height = dot(w, m);
+  const double upwards = height > slab.high ? height - slab.high : (height < slab.low ? slab.low - height : 0.0);
   const Point foot{q[0] - height * m[0], q[1] - height * m[1], q[2] - height * m[2]};
-  const double uu = dot(u, u), uv = dot(u, v), vv = dot(v, v), fu = dot(minus(foot, o), u), fv = dot(minus(foot, o), v);
-  const double det = uu * vv - uv * uv;
-  const double s = (vv * fu - uv * fv) / det, t = (uu * fv - uv * fu) / det;
+  const double fu = dot(minus(foot, o), u), fv = dot(minus(foot, o), v);
+  const double det = slab.uu * slab.vv - slab.uv * slab.uv;
+  const double s = (slab.vv * fu - slab.uv * fv) / det, t = (slab.uu * fv - slab.uv * fu) / det;
   double in_plane = 0;
   if (triangle_) {
     if (!(s >= 0 && t >= 0 && s + t <= 1))
@@ -89,8 +116,7 @@ double AffineEnclosure::lower_bound(const std::vector<Point>& points, const Poin
     in_plane = std::min({point_segment_distance(foot, a, b), point_segment_distance(foot, b, c), point_segment_distance(foot, c, d),
                          point_segment_distance(foot, d, a)});
   }
-  const double sideways = std::max(in_plane - across, 0.0);
-  const double upwards = height > high ? height - high : (height < low ? low - height : 0.0);
+  const double sideways = std::max(in_plane - slab.across, 0.0);
   return std::sqrt(sideways * sideways + upwards * upwards);
 }
 

@@ -26,8 +26,25 @@ class AffineEnclosure {
   explicit AffineEnclosure(const AffineParameters& parameters);
 
   bool empty() const { return fit_.empty(); }
+
+  // The slab of one sub-patch: what does not depend on the query point (made
+  // once per face patch, or per sub-patch as the search splits it).
+  struct Slab {
+    Point o{0, 0, 0}, u{0, 0, 0}, v{0, 0, 0};  // L(X, Y) = o + X u + Y v
+    Point m{0, 0, 0};                          // the unit normal of L's plane (0 where L is degenerate)
+    bool flat = false;                         // whether L's image is a proper parallelogram (triangle)
+    double low = 0, high = 0;                  // the residuals' range along m
+    double across = 0;                         // their largest part across m
+    double uu = 0, uv = 0, vv = 0;
+  };
+  Slab slab(const std::vector<Point>& points) const;
+  // An axis-aligned box that holds the slab (so the sub-patch's surface): a
+  // far tighter box than its control points' for a regular patch, whose points
+  // reach a ring beyond its face.
+  std::array<Point, 2> box(const Slab& slab) const;
   // A lower bound on the distance from q to the surface of a sub-patch of this kind.
-  double lower_bound(const std::vector<Point>& points, const Point& q) const;
+  double lower_bound(const Slab& slab, const Point& q) const;
+  double lower_bound(const std::vector<Point>& points, const Point& q) const { return lower_bound(slab(points), q); }
 
  private:
   std::vector<std::array<double, 2>> at_;

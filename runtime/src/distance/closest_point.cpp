@@ -76,8 +76,10 @@ struct ClosestPointQuery::Impl {
   ClosestPointOptions options;
   double tolerance = 0;
   std::vector<Point> prepared;
-  std::vector<std::array<float, 6>> boxes;  // per prepared face: its control points' box
+  std::vector<std::array<float, 6>> boxes;  // per prepared face: a box around its surface (control points', or the slab's)
   std::vector<AffineEnclosure> enclosures;     // per sub-patch kind (empty where none)
+  std::vector<ConvexBound> convex;             // per sub-patch kind (empty where none)
+  PreparedRoots roots;                         // per prepared face: its patch's slab and convexity data
   std::vector<signed char> orientation;      // +1 where patch (x, y) keeps the original face's orientation
   std::vector<char> holes;                   // per prepared face: part of a hole (no surface), or empty
   Seeds seeds;
@@ -140,14 +142,28 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
   const double diagonal = std::sqrt(dot(minus(hi, lo), minus(hi, lo)));
   tolerance = options.tolerance > 0 ? options.tolerance : 1e-9 * std::max(diagonal, 1e-300);
-  std::vector<SubPatch> roots(faces);
+  std::vector<SubPatch> patches(faces);
+  roots.kinds.assign(faces, 0);
+  roots.has_slab.assign(faces, 0);
+  roots.slabs.assign(faces, {});
+  roots.convex.assign(faces, {});
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces, 256), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t f = r.begin(); f < r.end(); ++f) {
-      family->root(f, prepared.data(), roots[f]);
-      Point a = roots[f].points[0], b = a;
-      for (const Point& p : roots[f].points)
+      family->root(f, prepared.data(), patches[f]);
+      Point a = patches[f].points[0], b = a;
+      for (const Point& p : patches[f].points)
         for (int k = 0; k < 3; ++k) a[k] = std::min(a[k], p[k]), b[k] = std::max(b[k], p[k]);
+      const std::size_t kind = static_cast<std::size_t>(patches[f].kind);
+      roots.kinds[f] = patches[f].kind;
+      if (kind < enclosures.size() && !enclosures[kind].empty()) {
+        roots.slabs[f] = enclosures[kind].slab(patches[f].points);
+        roots.has_slab[f] = 1;
+        // The slab's box where it is inside the control points' (both hold the surface).
+        const std::array<Point, 2> slab_box = enclosures[kind].box(roots.slabs[f]);
+        for (int k = 0; k < 3; ++k) a[k] = std::max(a[k], slab_box[0][k]), b[k] = std::min(b[k], slab_box[1][k]);
+      }
       boxes[f] = {float_down(a[0]), float_down(a[1]), float_down(a[2]), float_up(b[0]), float_up(b[1]), float_up(b[2])};
+      if (kind < convex.size() && !convex[kind].empty()) convex[kind].prepare(patches[f].points, roots.convex[f]);
     }
   });
 
@@ -156,7 +172,7 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
   std::vector<std::size_t> live;
   for (std::size_t f = 0; f < faces; ++f)
     if (holes.empty() || !holes[f]) live.push_back(f);
-  const std::vector<std::array<double, 2>> seed_at = seed_parameters(roots.empty() ? SubDomain() : roots[0].domain);
+  const std::vector<std::array<double, 2>> seed_at = seed_parameters(patches.empty() ? SubDomain() : patches[0].domain);
   const std::size_t per_face = seed_at.size();
   // Seeds only pick where Gauss-Newton starts (the branch and bound then
   // proves the answer with its own evaluations): where evaluation is
@@ -171,7 +187,7 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
       const std::size_t f = live[l];
       for (std::size_t s = 0; s < per_face; ++s) {
         const std::size_t i = per_face * l + s;
-        seeds.points[i] = family->evaluate(roots[f], seed_at[s][0], seed_at[s][1], seed_tolerance).point;
+        seeds.points[i] = family->evaluate(patches[f], seed_at[s][0], seed_at[s][1], seed_tolerance).point;
         seeds.faces[i] = f;
         seeds.at[i] = seed_at[s];
       }
@@ -202,7 +218,7 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
 ClosestPoint ClosestPointQuery::Impl::find(const Point& q) const {
   for (double c : q)
     if (!std::isfinite(c)) throw EvaluationError("closest points: a query point has a coordinate that is not finite");
-  FaceSearch search(*family, prepared, enclosures, tolerance);
+  FaceSearch search(*family, prepared, enclosures, convex, roots, tolerance);
   FaceHit best;
   best.distance = options.max_distance;
 
@@ -278,6 +294,8 @@ ClosestPointQuery::ClosestPointQuery(const Surface& surface, const ClosestPointO
   for (int kind = 0; kind <= impl_->family->max_kind(); ++kind) {
     const AffineParameters* affine = impl_->family->affine_parameters(kind);
     impl_->enclosures.push_back(affine ? AffineEnclosure(*affine) : AffineEnclosure());
+    const PolynomialPatch* polynomial = impl_->family->polynomial_patch(kind);
+    impl_->convex.push_back(polynomial ? ConvexBound(*polynomial) : ConvexBound());
   }
   impl_->build(surface);
 }
@@ -310,6 +328,10 @@ std::size_t ClosestPointQuery::memory_bytes() const {
   std::size_t bytes = i.prepared.capacity() * sizeof(Point) + i.boxes.capacity() * sizeof(i.boxes[0]) +
                       i.orientation.capacity() + i.seeds.points.capacity() * sizeof(Point) +
                       i.seeds.faces.capacity() * sizeof(std::size_t) + i.seeds.at.capacity() * sizeof(i.seeds.at[0]);
+  bytes += i.roots.kinds.capacity() * sizeof(int) + i.roots.has_slab.capacity() +
+           i.roots.slabs.capacity() * sizeof(AffineEnclosure::Slab);
+  for (const ConvexBound::Prepared& p : i.roots.convex)
+    bytes += sizeof(p) + (p.poly.capacity() + p.net.capacity()) * sizeof(Point) + (p.low.capacity() + p.high.capacity()) * sizeof(double);
   if (i.seed_tree) bytes += i.seed_tree->usedMemory(*i.seed_tree);
   // Embree's BVH over the boxes: about two nodes of 64 bytes per primitive (no API to ask).
   bytes += i.boxes.size() * 128;

@@ -320,9 +320,15 @@ void FaceSearch::start(std::size_t face, double x, double y, const Point& q, Fac
 }
 
 void FaceSearch::add(std::size_t face, const Point& q, const FaceHit& best) {
+  double bound = -INFINITY;
+  if (face < roots_.has_slab.size() && roots_.has_slab[face]) {  // the slab made once: the patch is gathered only when needed
+    const std::size_t kind = static_cast<std::size_t>(roots_.kinds[face]);
+    bound = enclosures_[kind].lower_bound(roots_.slabs[face], q);
+    if (!(bound < best.distance - tolerance_)) return;
+  }
   SubPatch root;
   family_.root(face, prepared_.data(), root);
-  const double bound = lower_bound(root, q);
+  if (bound == -INFINITY) bound = lower_bound(root, q);
   if (bound < best.distance - tolerance_) push(bound, 0, std::move(root));
 }
 
@@ -340,9 +346,22 @@ void FaceSearch::run(const Point& q, FaceHit& best) {
     Node node = std::move(open_.back());
     open_.pop_back();
     const SubPatch& s = node.patch;
-    const auto [cx, cy] = s.domain.centre();
-    // The centre; where it is the nearest point so far, Gauss-Newton from there.
-    if (consider(s, cx, cy, q, best)) polish(s, cx, cy, q, best);
+    const std::size_t kind = static_cast<std::size_t>(s.kind);
+    if (kind < convex_.size() && !convex_[kind].empty()) {
+      // Newton's nearest point of the sub-patch; and where the squared
+      // distance is convex over it, a bound that settles the whole sub-patch.
+      const ConvexBound::Prepared* prepared = &scratch_;
+      if (node.depth == 0 && s.face < roots_.convex.size() && !roots_.convex[s.face].poly.empty()) prepared = &roots_.convex[s.face];
+      else convex_[kind].prepare(s.points, scratch_);
+      const ConvexBound::Result r = convex_[kind].bound(*prepared, q, best.distance - tolerance_);
+      const auto at = s.domain.at(r.X, r.Y);
+      improve(s, at[0], at[1], r.point, 0, q, best);
+      if (r.convex && r.lower >= best.distance - tolerance_) continue;
+    } else {
+      // The centre; where it is the nearest point so far, Gauss-Newton from there.
+      const auto [cx, cy] = s.domain.centre();
+      if (consider(s, cx, cy, q, best)) polish(s, cx, cy, q, best);
+    }
     if (node.depth == kMaxDepth) {
       unresolved = std::max(unresolved, best.distance - node.bound);
       continue;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "affine_enclosure.hpp"
+#include "convex_bound.hpp"
 #include "family/family.hpp"
 
 namespace stencil_runtime {
@@ -27,12 +28,23 @@ struct FaceHit {
   SubPatch patch;        // the sub-patch it was found in (derivatives there are exact at its grid points)
 };
 
+// What the search keeps of every prepared face's whole patch, made once per
+// set of control positions: the affine slab and the convexity bound's data
+// (empty where the face's kind has none).
+struct PreparedRoots {
+  std::vector<int> kinds;        // per prepared face: its patch's kind
+  std::vector<char> has_slab;
+  std::vector<AffineEnclosure::Slab> slabs;
+  std::vector<ConvexBound::Prepared> convex;
+};
+
 class FaceSearch {
  public:
-  // `enclosures`, indexed by sub-patch kind: the affine enclosure of kinds that have one.
+  // `enclosures` and `convex`, indexed by sub-patch kind: the affine
+  // enclosure and the convexity bound of kinds that have them.
   FaceSearch(const Family& family, const std::vector<Point>& prepared, const std::vector<AffineEnclosure>& enclosures,
-             double tolerance)
-      : family_(family), prepared_(prepared), enclosures_(enclosures), tolerance_(tolerance) {}
+             const std::vector<ConvexBound>& convex, const PreparedRoots& roots, double tolerance)
+      : family_(family), prepared_(prepared), enclosures_(enclosures), convex_(convex), roots_(roots), tolerance_(tolerance) {}
 
   // A lower bound on the distance from q to the convex hull of a sub-patch's control points.
   static double hull_bound(const SubPatch& s, const Point& q);
@@ -72,6 +84,9 @@ class FaceSearch {
   const Family& family_;
   const std::vector<Point>& prepared_;
   const std::vector<AffineEnclosure>& enclosures_;
+  const std::vector<ConvexBound>& convex_;
+  const PreparedRoots& roots_;
+  ConvexBound::Prepared scratch_;  // a deeper sub-patch's, made as it is popped
   double tolerance_;
   std::vector<Node> open_;  // a heap, smallest bound on top
 };

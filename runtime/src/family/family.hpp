@@ -78,6 +78,20 @@ struct AffineParameters {
   double residual = 0;
 };
 
+// Where the sub-patches of one kind are polynomial over their own unit frame
+// (the square, or the triangle when `triangle`): the surface is
+// sum_i P_i sum_m coefficients[i][m] X^e Y^f with (e, f) = monomials[m], i
+// in the order of SubPatch::points; `degree` is the degree per axis (square)
+// or the total degree (triangle). The closest-point search bounds such a
+// sub-patch's second derivatives by their Bernstein coefficients and so proves
+// the squared distance convex over it (distance/convex_bound.hpp).
+struct PolynomialPatch {
+  bool triangle = false;
+  int degree = 0;
+  std::vector<std::array<int, 2>> monomials;
+  std::vector<std::vector<double>> coefficients;
+};
+
 // An original face and a parameter in its domain.
 struct FaceParameterReal {
   std::size_t face = 0;
@@ -173,6 +187,8 @@ class Family {
   // Sub-patches of kind `kind` that reproduce affine functions (null: none
   // known), and the largest kind number the family uses.
   virtual const AffineParameters* affine_parameters(int /*kind*/) const { return nullptr; }
+  // Sub-patches of kind `kind` whose surface is polynomial over their unit frame (null: not known to be).
+  virtual const PolynomialPatch* polynomial_patch(int /*kind*/) const { return nullptr; }
   virtual int max_kind() const = 0;
 
   // The unit normals at the points of prepared faces [begin, end) of a planned

@@ -528,6 +528,31 @@ const AffineParameters* QuadFamily::affine_parameters(int kind) const {
   return affine_.get();
 }
 
+const PolynomialPatch* QuadFamily::polynomial_patch(int kind) const {
+  if (kind != 4 || !descent_ || !descent_->polynomial_regular() || !descent_->nonnegative()) return nullptr;
+  std::call_once(polynomial_once_, [this] {
+    // The regular patch is the tensor product of the curve's basis pieces on
+    // [0, 1] (QuadDescent::basis): point (i, j), i, j in -1..2, at (j + 1) * 4
+    // + (i + 1), weighs phi_i(X) phi_j(Y). A sub-patch of the regular kind has
+    // the same form over its own unit square (its children are regular patches).
+    const QuadDescent& d = *tables_.descent();
+    auto out = std::make_unique<PolynomialPatch>();
+    out->degree = d.degree;
+    for (int f = 0; f <= d.degree; ++f)
+      for (int e = 0; e <= d.degree; ++e) out->monomials.push_back({e, f});
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i) {
+        std::vector<double> c;
+        for (const auto& m : out->monomials)
+          c.push_back(d.basis[static_cast<std::size_t>(i)][static_cast<std::size_t>(m[0])] *
+                      d.basis[static_cast<std::size_t>(j)][static_cast<std::size_t>(m[1])]);
+        out->coefficients.push_back(std::move(c));
+      }
+    polynomial_ = std::move(out);
+  });
+  return polynomial_.get();
+}
+
 FaceParameterReal QuadFamily::original(std::size_t face, double x, double y) const {
   // Patch coordinates back to the prepared face's (undo the rotation).
   double u = x, v = y;

@@ -47,6 +47,7 @@ class QuadFamily final : public Family {
   int split(const SubPatch& in, SubPatch* children) const override;
   Approximation evaluate(const SubPatch& in, double x, double y, double tolerance) const override;
   const AffineParameters* affine_parameters(int kind) const override;
+  const PolynomialPatch* polynomial_patch(int kind) const override;
   int max_kind() const override { return limits::kMaxValence; }
   bool derivatives(const SubPatch& in, double& x, double& y, Derivatives& out) const override;
   FaceParameterReal original(std::size_t prepared_face, double x, double y) const override;
@@ -95,6 +96,8 @@ class QuadFamily final : public Family {
   // The regular patch's control-point parameters, found once on first use.
   mutable std::once_flag affine_once_;
   mutable std::unique_ptr<const AffineParameters> affine_;
+  mutable std::once_flag polynomial_once_;
+  mutable std::unique_ptr<const PolynomialPatch> polynomial_;
 
   const QuadPatchDescent& checked_descent() const;  // throws EvaluationError without descent data
   // d(patch x, y)/d(u, v), row-major: the product of every step's linear part

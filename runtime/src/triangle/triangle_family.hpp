@@ -60,6 +60,7 @@ class TriangleFamily final : public Family {
   FaceParameterReal original(std::size_t prepared_face, double x, double y) const override;
   bool derivatives(const SubPatch& in, double& x, double& y, Derivatives& out) const override;
   const AffineParameters* affine_parameters(int kind) const override;
+  const PolynomialPatch* polynomial_patch(int kind) const override;
   int max_kind() const override { return kind_of(limits::kMaxValence, 3); }
   static int kind_of(int valence, int region) { return valence + (limits::kMaxValence + 1) * region; }
   void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
@@ -109,6 +110,8 @@ class TriangleFamily final : public Family {
   std::optional<TrianglePatchDescent> descent_;  // when the tables hold the patch subdivision
   mutable std::once_flag affine_once_;
   mutable std::unique_ptr<const AffineParameters> affine_;  // of the regular kind, where the scheme reproduces affine functions
+  mutable std::once_flag polynomial_once_;
+  mutable std::unique_ptr<const PolynomialPatch> polynomial_;  // of the regular kind, where its basis is polynomial (Loop)
 };
 
 // Index of up centre (i, j) and down centre (i, j) among a face's n^2 tessellation

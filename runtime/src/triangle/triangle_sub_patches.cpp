@@ -153,6 +153,28 @@ FaceParameterReal TriangleFamily::original(std::size_t face, double x, double y)
   return {face, u, v};
 }
 
+const PolynomialPatch* TriangleFamily::polynomial_patch(int kind) const {
+  if (kind != kind_of(6, 0) || !descent_ || tables_.polynomial_degree() <= 0 || !tables_.children_nonnegative()) return nullptr;
+  std::call_once(polynomial_once_, [this] {
+    // The regular patch's basis as stored (TriangleTables::polynomial): per
+    // point h of the regular layout, the coefficients of u^e v^f, f = 0..d,
+    // e = 0..d-f; a regular sub-patch has the same form over its own unit triangle.
+    const int d = tables_.polynomial_degree();
+    auto out = std::make_unique<PolynomialPatch>();
+    out->triangle = true;
+    out->degree = d;
+    for (int f = 0; f <= d; ++f)
+      for (int e = 0; e + f <= d; ++e) out->monomials.push_back({e, f});
+    const std::size_t terms = out->monomials.size(), count = tables_.layout(6, 0).size();
+    const std::vector<double>& coefficients = tables_.polynomial();
+    for (std::size_t h = 0; h < count; ++h)
+      out->coefficients.emplace_back(coefficients.begin() + static_cast<std::ptrdiff_t>(h * terms),
+                                     coefficients.begin() + static_cast<std::ptrdiff_t>((h + 1) * terms));
+    polynomial_ = std::move(out);
+  });
+  return polynomial_.get();
+}
+
 const AffineParameters* TriangleFamily::affine_parameters(int kind) const {
   if (kind != kind_of(6, 0) || !descent_ || !tables_.children_nonnegative()) return nullptr;
   std::call_once(affine_once_, [this] {

@@ -1,0 +1,282 @@
+#include "convex_bound.hpp"
+#include "distance/point_ops.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace stencil_runtime {
+
+using namespace point_ops;
+
+namespace {
+
+// Newton steps at most, halvings of a step that does not come nearer, and the
+// step (in the unit frame) below which Newton has converged.
+constexpr int kNewtonSteps = 8;
+constexpr int kHalvings = 12;
+constexpr double kConverged = 1e-13;
+
+double factorial(int n) {
+  double f = 1;
+  for (int k = 2; k <= n; ++k) f *= k;
+  return f;
+}
+double binomial(int n, int k) { return k < 0 || k > n ? 0.0 : factorial(n) / (factorial(k) * factorial(n - k)); }
+
+// The smallest eigenvalue of [[a, b], [b, c]].
+double smallest_eigenvalue(double a, double b, double c) {
+  return 0.5 * (a + c) - std::sqrt(0.25 * (a - c) * (a - c) + b * b);
+}
+
+// The derivatives whose Bernstein coefficients bound them: S, S_X, S_Y, S_XX, S_XY, S_YY.
+constexpr int kOrder[6][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
+
+}  // namespace
+
+ConvexBound::ConvexBound(const PolynomialPatch& patch) : triangle_(patch.triangle), degree_(patch.degree) {
+  if (patch.monomials.empty() || patch.monomials.size() > kMaxTerms || patch.degree > kMaxDegree) return;  // none
+  const auto sparse = [](const std::vector<double>& row) {
+    std::vector<std::pair<std::size_t, double>> out;
+    for (std::size_t m = 0; m < row.size(); ++m)
+      if (row[m] != 0) out.push_back({m, row[m]});
+    return out;
+  };
+  for (const auto& c : patch.coefficients) coefficients_.push_back(sparse(c));
+  // Rows of Bernstein coefficients of S and its derivatives over the monomials.
+  const int d = degree_;
+  for (int k = 0; k < kOrders; ++k) {
+    const int dx = kOrder[k][0], dy = kOrder[k][1];
+    // The derivative of monomial (e, f): factor * X^(e-dx) Y^(f-dy).
+    const auto derivative = [&](const std::array<int, 2>& m, int& e, int& f) {
+      e = m[0] - dx, f = m[1] - dy;
+      if (e < 0 || f < 0) return 0.0;
+      return factorial(m[0]) / factorial(e) * factorial(m[1]) / factorial(f);
+    };
+    if (triangle_) {
+      const int top = d - dx - dy;  // total degree of the derivative
+      for (int j = 0; j <= top; ++j)
+        for (int i = 0; i + j <= top; ++i) {
+          std::vector<double> row;
+          for (const auto& m : patch.monomials) {
+            int e = 0, f = 0;
+            const double factor = derivative(m, e, f);
+            // X^e Y^f = sum over Bernstein B_ijk of (top-e-f)! i! j! / (top! (i-e)! (j-f)!).
+            row.push_back(factor == 0 || i < e || j < f || e + f > top
+                              ? 0.0
+                              : factor * factorial(top - e - f) * factorial(i) * factorial(j) /
+                                    (factorial(top) * factorial(i - e) * factorial(j - f)));
+          }
+          bernstein_[k].push_back(sparse(row));
+        }
+    } else {
+      const int p = d - dx, r = d - dy;  // degrees along X and Y
+      for (int l = 0; l <= r; ++l)
+        for (int i = 0; i <= p; ++i) {
+          std::vector<double> row;
+          for (const auto& m : patch.monomials) {
+            int e = 0, f = 0;
+            const double factor = derivative(m, e, f);
+            // X^e = sum_i C(i, e) / C(p, e) B_i^p(X), likewise Y^f.
+            row.push_back(factor == 0 || e > i || f > l ? 0.0
+                                                        : factor * binomial(i, e) / binomial(p, e) * binomial(l, f) / binomial(r, f));
+          }
+          bernstein_[k].push_back(sparse(row));
+        }
+    }
+  }
+  for (int k = 0; k < kOrders; ++k) {
+    if (bernstein_[k].size() > kMaxTerms) return;  // none
+    offset_[k + 1] = offset_[k] + bernstein_[k].size();
+  }
+  monomials_ = patch.monomials;  // last: empty() says whether the bound is there
+}
+
+ConvexBound::Jet ConvexBound::jet(const Point* q, double X, double Y) const {
+  double px[kMaxDegree + 1], py[kMaxDegree + 1];
+  px[0] = py[0] = 1;
+  for (int k = 1; k <= degree_; ++k) px[k] = px[k - 1] * X, py[k] = py[k - 1] * Y;
+  Jet j{};
+  for (std::size_t m = 0; m < monomials_.size(); ++m) {
+    const int e = monomials_[m][0], f = monomials_[m][1];
+    const double v = px[e] * py[f];
+    const double vx = e > 0 ? e * px[e - 1] * py[f] : 0.0, vy = f > 0 ? f * px[e] * py[f - 1] : 0.0;
+    const double vxx = e > 1 ? e * (e - 1) * px[e - 2] * py[f] : 0.0, vyy = f > 1 ? f * (f - 1) * px[e] * py[f - 2] : 0.0;
+    const double vxy = e > 0 && f > 0 ? e * f * px[e - 1] * py[f - 1] : 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double c = q[m][k];
+      j.s[k] += v * c, j.x[k] += vx * c, j.y[k] += vy * c;
+      j.xx[k] += vxx * c, j.xy[k] += vxy * c, j.yy[k] += vyy * c;
+    }
+  }
+  return j;
+}
+
+void ConvexBound::project(double& X, double& Y) const {
+  // The nearest point of the frame (Euclidean).
+  if (!triangle_) {
+    X = std::clamp(X, 0.0, 1.0), Y = std::clamp(Y, 0.0, 1.0);
+    return;
+  }
+  if (X >= 0 && Y >= 0 && X + Y <= 1) return;
+  // The nearest of the three edges' nearest points.
+  const double corners[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+  double best = INFINITY, bx = 0, by = 0;
+  for (int e = 0; e < 3; ++e) {
+    const double* a = corners[e];
+    const double* b = corners[(e + 1) % 3];
+    const double dx = b[0] - a[0], dy = b[1] - a[1];
+    const double t = std::clamp(((X - a[0]) * dx + (Y - a[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+    const double px = a[0] + t * dx, py = a[1] + t * dy;
+    const double d = (px - X) * (px - X) + (py - Y) * (py - Y);
+    if (d < best) best = d, bx = px, by = py;
+  }
+  X = bx, Y = by;
+  if (X + Y > 1) Y = 1 - X;  // the hypotenuse's points, rounded, inside
+}
+
+void ConvexBound::prepare(const std::vector<Point>& points, Prepared& out) const {
+  const std::size_t terms = monomials_.size();
+  out.poly.assign(terms, Point{0, 0, 0});
+  for (std::size_t i = 0; i < points.size() && i < coefficients_.size(); ++i)
+    for (const auto& [m, w] : coefficients_[i])
+      for (int k = 0; k < 3; ++k) out.poly[m][k] += w * points[i][k];
+  out.net.assign(offset_[kOrders], Point{0, 0, 0});
+  for (int k = 0; k < kOrders; ++k)
+    for (std::size_t row = 0; row < bernstein_[k].size(); ++row) {
+      Point& v = out.net[offset_[k] + row];
+      for (const auto& [m, w] : bernstein_[k][row])
+        for (int c = 0; c < 3; ++c) v[c] += w * out.poly[m][c];
+    }
+  const std::size_t seconds = offset_[kOrders] - offset_[3];
+  out.low.assign(seconds, INFINITY), out.high.assign(seconds, -INFINITY);
+  for (int k = 0; k < 3; ++k) {
+    out.largest[k] = 0;
+    for (std::size_t b = offset_[3 + k]; b < offset_[4 + k]; ++b) {
+      const Point& v = out.net[b];
+      out.largest[k] = std::max(out.largest[k], length(v));
+      for (std::size_t i = offset_[0]; i < offset_[1]; ++i) {
+        const double e = dot(out.net[i], v);
+        out.low[b - offset_[3]] = std::min(out.low[b - offset_[3]], e);
+        out.high[b - offset_[3]] = std::max(out.high[b - offset_[3]], e);
+      }
+    }
+  }
+}
+
+void ConvexBound::certify(const Prepared& patch, const Jet& j, const Point& q, Result& out) const {
+  out.convex = false, out.lower = 0;
+  const Point r = minus(j.s, q);
+  const Point* net = patch.net.data();
+  const auto largest_from = [&](int k, const Point& from) {
+    double most = 0;
+    for (std::size_t b = offset_[k]; b < offset_[k + 1]; ++b) most = std::max(most, dot(minus(net[b], from), minus(net[b], from)));
+    return std::sqrt(most);
+  };
+  const double Mxx = patch.largest[0], Mxy = patch.largest[1], Myy = patch.largest[2];
+  // sigma_min(J) over the frame: J(x) - J(c) is at most the second
+  // derivatives times the distance to the far side, and its columns lie in the
+  // hulls of the S_X and S_Y coefficients less their values at c.
+  const double ax = std::max(out.X, 1 - out.X), ay = std::max(out.Y, 1 - out.Y);
+  const double du = std::min(Mxx * ax + Mxy * ay, largest_from(1, j.x));
+  const double dv = std::min(Mxy * ax + Myy * ay, largest_from(2, j.y));
+  const double sigma_c = std::sqrt(std::max(0.0, smallest_eigenvalue(dot(j.x, j.x), dot(j.x, j.y), dot(j.y, j.y))));
+  const double sigma = sigma_c - std::sqrt(du * du + dv * dv);
+  const double lambda_j = sigma > 0 ? sigma * sigma : 0.0;
+  // r . Hess S = r_c . Hess S + (S(x) - S(c)) . Hess S over the frame: the
+  // first between r_c dotted with the second derivatives' coefficients v, the
+  // second between min_b (b - S(c)).v and max_b (b - S(c)).v over S's
+  // coefficients b (a bilinear function of points of two hulls is extreme at
+  // their vertices).
+  double low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
+  for (int k = 0; k < 3; ++k) {
+    if (offset_[4 + k] == offset_[3 + k]) continue;
+    low[k] = INFINITY, high[k] = -INFINITY;
+    for (std::size_t b = offset_[3 + k]; b < offset_[4 + k]; ++b) {
+      const double h = dot(r, net[b]), at_c = dot(j.s, net[b]);
+      low[k] = std::min(low[k], h + patch.low[b - offset_[3]] - at_c);
+      high[k] = std::max(high[k], h + patch.high[b - offset_[3]] - at_c);
+    }
+  }
+  const double off = std::max(std::fabs(low[1]), std::fabs(high[1]));
+  const double lambda_r = smallest_eigenvalue(low[0], off, low[2]);
+  // A margin for rounding in all of the above.
+  const double scale = lambda_j + std::fabs(lambda_r) + sigma_c * sigma_c +
+                       (length(r) + length(j.s)) * (Mxx + Mxy + Myy);
+  const double lambda = lambda_j + lambda_r - 1e-12 * scale;
+  if (!(lambda > 0)) return;
+  out.convex = true;
+  // F(x) >= F(c) + g.t + lambda/2 |t|^2, t = x - c, = F(c) + lambda/2 |x - c
+  // + g/lambda|^2 - |g|^2/(2 lambda): smallest over the frame at the frame's
+  // point nearest c - g/lambda.
+  const double gx = dot(r, j.x), gy = dot(r, j.y);
+  double X = out.X - gx / lambda, Y = out.Y - gy / lambda;
+  project(X, Y);
+  const double tx = X - out.X, ty = Y - out.Y;
+  const double lower = 0.5 * dot(r, r) + gx * tx + gy * ty + 0.5 * lambda * (tx * tx + ty * ty);
+  // The rounding of F itself (r from points rounded at the size of the coordinates).
+  const double coordinates = std::max({std::fabs(q[0]), std::fabs(q[1]), std::fabs(q[2]), std::fabs(j.s[0]), std::fabs(j.s[1]),
+                                       std::fabs(j.s[2])});
+  out.lower = std::max(0.0, std::sqrt(2 * std::max(0.0, lower)) - 64 * std::numeric_limits<double>::epsilon() * coordinates);
+}
+
+ConvexBound::Result ConvexBound::bound(const Prepared& patch, const Point& q, double enough) const {
+  const Point* poly = patch.poly.data();
+  Result out;
+  out.X = out.Y = triangle_ ? 1.0 / 3 : 0.5;
+  Jet j = jet(poly, out.X, out.Y);
+  Point r = minus(j.s, q);
+  double F = 0.5 * dot(r, r);
+  certify(patch, j, q, out);
+  out.point = j.s, out.distance = std::sqrt(2 * F);
+  if (out.convex && out.lower >= enough) return out;  // settled at the centre
+
+  // Damped Newton on F from the frame's centre, each step projected onto the frame.
+  bool moved_at_all = false;
+  for (int step = 0; step < kNewtonSteps; ++step) {
+    const double gx = dot(r, j.x), gy = dot(r, j.y);
+    const double a = dot(j.x, j.x), b = dot(j.x, j.y), c = dot(j.y, j.y);
+    double hxx = a + dot(r, j.xx), hxy = b + dot(r, j.xy), hyy = c + dot(r, j.yy);
+    if (!(hxx > 0 && hxx * hyy - hxy * hxy > 0)) hxx = a, hxy = b, hyy = c;  // Gauss-Newton where F is not convex here
+    const double det = hxx * hyy - hxy * hxy;
+    if (!(det > 0)) break;
+    double sx = -(hyy * gx - hxy * gy) / det, sy = -(hxx * gy - hxy * gx) / det;
+    // The sides the point is on that the descent would leave by (their
+    // multipliers are positive) are held, and Newton runs along what is left:
+    // so that Newton ends at the constrained minimum, where the bound below
+    // is the distance. At a corner held by two sides it is there.
+    const bool hold_x = (out.X <= 0 && gx > 0) || (!triangle_ && out.X >= 1 && gx < 0);
+    const bool hold_y = (out.Y <= 0 && gy > 0) || (!triangle_ && out.Y >= 1 && gy < 0);
+    const bool hold_h = triangle_ && out.X + out.Y >= 1 - 4 * std::numeric_limits<double>::epsilon() && gx + gy < 0;  // project() rounds
+    if (int(hold_x) + int(hold_y) + int(hold_h) >= 2) break;
+    if (hold_x) sx = 0, sy = hyy > 0 ? -gy / hyy : 0.0;
+    if (hold_y) sy = 0, sx = hxx > 0 ? -gx / hxx : 0.0;
+    if (hold_h) {  // along the hypotenuse, direction (1, -1)
+      const double h = hxx - 2 * hxy + hyy;
+      const double along = h > 0 ? -(gx - gy) / h : 0.0;
+      sx = along, sy = -along;
+    }
+    bool moved = false;
+    double t = 1;
+    for (int halving = 0; halving <= kHalvings; ++halving, t *= 0.5) {
+      double X = out.X + t * sx, Y = out.Y + t * sy;
+      project(X, Y);
+      if (X == out.X && Y == out.Y) break;
+      const Jet n = jet(poly, X, Y);
+      const Point nr = minus(n.s, q);
+      const double nF = 0.5 * dot(nr, nr);
+      if (nF < F) {
+        moved = std::fabs(X - out.X) + std::fabs(Y - out.Y) > kConverged;
+        moved_at_all = true;
+        out.X = X, out.Y = Y, j = n, r = nr, F = nF;
+        break;
+      }
+    }
+    if (!moved) break;
+  }
+  out.point = j.s, out.distance = std::sqrt(2 * F);
+  if (moved_at_all) certify(patch, j, q, out);
+  return out;
+}
+
+}  // namespace stencil_runtime

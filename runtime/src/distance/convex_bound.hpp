@@ -1,0 +1,89 @@
+#pragma once
+// A second-order bound on the distance from a point q to a polynomial
+// sub-patch (docs/runtime.md, "Closest points"). With F(x) = |S(x) - q|^2 / 2
+// over the sub-patch's unit frame,
+//   Hess F = J^T J + sum_k r_k Hess S_k,   r = S - q.
+// Around any point c of the frame, with r = r_c + (S(x) - S(c)):
+//  - sigma_min(J(x)) >= sigma_min(J(c)) - |J(x) - J(c)|, and J moves by at
+//    most the second derivatives' bound times the distance to the frame's far side;
+//  - r_c . Hess S(x) has entries between the smallest and largest of r_c
+//    dotted with the Bernstein coefficients of S_XX, S_XY, S_YY (the surface's
+//    second derivatives are polynomials over the frame, and a polynomial lies in
+//    the hull of its Bernstein coefficients), and the smallest eigenvalue of a
+//    symmetric 2x2 matrix grows with its diagonal and falls with |off-diagonal|;
+//  - |S(x) - S(c)| <= the diameter of the control points' box (the surface
+//    lies in their hull), times the second derivatives' bound.
+// Where these give Hess F >= lambda I with lambda > 0 over the whole frame, F
+// is strongly convex there and F(x) >= F(c) + g.(x - c) + lambda/2 |x - c|^2
+// (g = J^T r_c), minimised over the frame's box: a lower bound that equals the
+// distance when c is the minimiser. c comes from damped Newton steps from the
+// frame's centre. Unlike the affine slab (whose slack falls as the square of
+// the sub-patch's size, so that 1e-9 of the diagonal takes about eleven levels
+// of subdivision around the nearest point), this bound is tight at any size
+// where the squared distance is convex, which holds near every point nearer
+// than the surface's focal points.
+#include <array>
+#include <utility>
+#include <vector>
+
+#include "family/family.hpp"
+
+namespace stencil_runtime {
+
+class ConvexBound {
+ public:
+  ConvexBound() = default;  // none: bound() is never asked
+  explicit ConvexBound(const PolynomialPatch& patch);
+
+  bool empty() const { return monomials_.empty(); }
+
+  // What bound() needs of one sub-patch that does not depend on the query
+  // point: its polynomial, the Bernstein coefficients of S and of its first
+  // and second derivatives, and per second-derivative coefficient v the range
+  // of b.v over S's coefficients b. Made once per face patch (its control
+  // points fixed) or per sub-patch.
+  struct Prepared {
+    std::vector<Point> poly;             // per monomial
+    std::vector<Point> net;              // per order, per Bernstein coefficient (offsets: ConvexBound::net_offset)
+    std::vector<double> low, high;       // per second-derivative coefficient
+    double largest[3] = {0, 0, 0};       // the largest |S_XX|, |S_XY|, |S_YY| coefficient
+  };
+  void prepare(const std::vector<Point>& points, Prepared& out) const;
+
+  struct Result {
+    double X = 0, Y = 0;     // the sub-patch's own coordinates of `point`
+    Point point{0, 0, 0};    // a point of the surface (the nearest Newton found, or the centre)
+    double distance = 0;     // |point - q|
+    bool convex = false;     // whether F was proved strongly convex over the sub-patch
+    double lower = 0;        // then a lower bound on the distance from q to the sub-patch's surface
+  };
+  // The bound at the frame's centre; where that does not reach `enough`,
+  // Newton's nearest point and the bound there.
+  Result bound(const Prepared& patch, const Point& q, double enough) const;
+
+ private:
+  struct Jet {
+    Point s, x, y, xx, xy, yy;
+  };
+  Jet jet(const Point* monomial_points, double X, double Y) const;
+  void project(double& X, double& Y) const;
+  // The certificate at (X, Y) with its jet there: sets out.convex and out.lower.
+  void certify(const Prepared& patch, const Jet& j, const Point& q, Result& out) const;
+
+  // Sizes the bound works on the stack with (larger patches get none).
+  static constexpr std::size_t kMaxTerms = 64;
+  static constexpr int kMaxDegree = 7;
+  static constexpr int kOrders = 6;  // S, S_X, S_Y, S_XX, S_XY, S_YY
+  using SparseRow = std::vector<std::pair<std::size_t, double>>;
+
+  bool triangle_ = false;
+  int degree_ = 0;
+  std::vector<std::array<int, 2>> monomials_;
+  std::vector<SparseRow> coefficients_;  // per control point: (monomial, coefficient)
+  // The Bernstein coefficients of each order over the frame, each a row of
+  // weights over the monomials' vector coefficients; where each order's start in Prepared::net.
+  std::vector<SparseRow> bernstein_[kOrders];
+  std::size_t offset_[kOrders + 1] = {};
+};
+
+}  // namespace stencil_runtime
