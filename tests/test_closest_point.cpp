@@ -369,7 +369,8 @@ TEST_CASE("the affine enclosure bounds every sampled sub-patch from below and ti
 // declares for its regular sub-patches is their surface (against the family's
 // exact evaluation from the tables), the point Newton returns lies on that
 // surface, and wherever the squared distance is certified convex the bound
-// is never above the nearest of dense exact samples, and close to it.
+// is never above the nearest of dense exact samples, and close to it; the
+// bound with a negative lambda (not convex) is never above them either.
 TEST_CASE("the convexity bound holds below dense samples of every sub-patch it certifies", "[runtime][distance]") {
   for (const SubPatchCase& tc : kSubPatchCases) {
     CAPTURE(tc.scheme);
@@ -389,7 +390,7 @@ TEST_CASE("the convexity bound holds below dense samples of every sub-patch it c
     const double diagonal = diagonal_of(mesh);
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> unit(-1, 1);
-    int tested = 0, certified = 0, tight = 0, near_deep = 0, near_deep_certified = 0;
+    int tested = 0, certified = 0, tight = 0, near_deep = 0, near_deep_certified = 0, nonconvex_bounds = 0;
     while (tested < 60) {
       const int depth = tested % 5;
       const SubPatch s = random_sub_patch(surface, rng, depth);
@@ -430,6 +431,11 @@ TEST_CASE("the convexity bound holds below dense samples of every sub-patch it c
         CHECK(distance(r.point, family.evaluate(s, at[0], at[1], 1e-14 * diagonal).point) <= 1e-12 * diagonal);
         CHECK(std::fabs(distance(r.point, q) - r.distance) <= 1e-12 * diagonal);
         if (depth >= 3 && k < 8) ++near_deep, near_deep_certified += r.convex ? 1 : 0;
+        // At the centre, with the bound made also where F is not convex (a negative lambda).
+        const ConvexBound::Result centre_bound = convex.bound(prepared, q, 0.0);
+        REQUIRE(centre_bound.bounded);
+        CHECK(centre_bound.lower <= nearest + 1e-12 * diagonal);
+        if (!centre_bound.convex && centre_bound.lower > 0) ++nonconvex_bounds;
         if (!r.convex) continue;
         ++certified;
         CHECK(r.lower <= nearest + 1e-12 * diagonal);
@@ -455,8 +461,9 @@ TEST_CASE("the convexity bound holds below dense samples of every sub-patch it c
     // Nearly every query within half a sub-patch's size of a small sub-patch
     // is certified (the squared distance is convex there), and the certified
     // bound is the distance of Newton's point.
-    CAPTURE(certified, tight, near_deep, near_deep_certified);
+    CAPTURE(certified, tight, near_deep, near_deep_certified, nonconvex_bounds);
     CHECK(near_deep_certified >= 0.9 * near_deep);
+    CHECK(nonconvex_bounds > 100);  // the bound with a negative lambda is exercised and not vacuous
     CHECK(tight == certified);
   }
 }

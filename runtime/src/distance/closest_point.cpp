@@ -331,7 +331,7 @@ std::size_t ClosestPointQuery::memory_bytes() const {
   bytes += i.roots.kinds.capacity() * sizeof(int) + i.roots.has_slab.capacity() +
            i.roots.slabs.capacity() * sizeof(AffineEnclosure::Slab);
   for (const ConvexBound::Prepared& p : i.roots.convex)
-    bytes += sizeof(p) + (p.poly.capacity() + p.net.capacity()) * sizeof(Point) + (p.low.capacity() + p.high.capacity()) * sizeof(double);
+    bytes += sizeof(p) + (p.poly.capacity() + p.grid.capacity() + p.net.capacity()) * sizeof(Point) + (p.low.capacity() + p.high.capacity()) * sizeof(double);
   if (i.seed_tree) bytes += i.seed_tree->usedMemory(*i.seed_tree);
   // Embree's BVH over the boxes: about two nodes of 64 bytes per primitive (no API to ask).
   bytes += i.boxes.size() * 128;

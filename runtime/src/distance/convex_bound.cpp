@@ -92,22 +92,29 @@ ConvexBound::ConvexBound(const PolynomialPatch& patch) : triangle_(patch.triangl
   monomials_ = patch.monomials;  // last: empty() says whether the bound is there
 }
 
-ConvexBound::Jet ConvexBound::jet(const Point* q, double X, double Y) const {
-  double px[kMaxDegree + 1], py[kMaxDegree + 1];
-  px[0] = py[0] = 1;
-  for (int k = 1; k <= degree_; ++k) px[k] = px[k - 1] * X, py[k] = py[k - 1] * Y;
+ConvexBound::Jet ConvexBound::jet(const Point* grid, double X, double Y) const {
+  // Horner along X for each power of Y (value and two derivatives together),
+  // then the powers of Y: `grid` holds the coefficient of X^e Y^f at e + (d + 1) f.
+  const int d = degree_;
   Jet j{};
-  for (std::size_t m = 0; m < monomials_.size(); ++m) {
-    const int e = monomials_[m][0], f = monomials_[m][1];
-    const double v = px[e] * py[f];
-    const double vx = e > 0 ? e * px[e - 1] * py[f] : 0.0, vy = f > 0 ? f * px[e] * py[f - 1] : 0.0;
-    const double vxx = e > 1 ? e * (e - 1) * px[e - 2] * py[f] : 0.0, vyy = f > 1 ? f * (f - 1) * px[e] * py[f - 2] : 0.0;
-    const double vxy = e > 0 && f > 0 ? e * f * px[e - 1] * py[f - 1] : 0.0;
+  double yf = 1, yf1 = 0, yf2 = 0;  // Y^f, f Y^(f-1), f (f-1) Y^(f-2)
+  for (int f = 0; f <= d; ++f) {
+    const Point* row = grid + static_cast<std::size_t>((d + 1) * f);
+    double v[3] = {0, 0, 0}, dv[3] = {0, 0, 0}, ddv[3] = {0, 0, 0};
+    for (int e = d; e >= 0; --e)
+      for (int k = 0; k < 3; ++k) {
+        ddv[k] = ddv[k] * X + 2 * dv[k];
+        dv[k] = dv[k] * X + v[k];
+        v[k] = v[k] * X + row[e][k];
+      }
     for (int k = 0; k < 3; ++k) {
-      const double c = q[m][k];
-      j.s[k] += v * c, j.x[k] += vx * c, j.y[k] += vy * c;
-      j.xx[k] += vxx * c, j.xy[k] += vxy * c, j.yy[k] += vyy * c;
+      j.s[k] += v[k] * yf, j.x[k] += dv[k] * yf, j.xx[k] += ddv[k] * yf;
+      j.y[k] += v[k] * yf1, j.xy[k] += dv[k] * yf1, j.yy[k] += v[k] * yf2;
     }
+    // To f + 1: (Y^(f+1))' = (f+1) Y^f, (Y^(f+1))'' = (f+1) f Y^(f-1).
+    yf2 = (f + 1) * yf1;
+    yf1 = (f + 1) * yf;
+    yf *= Y;
   }
   return j;
 }
@@ -135,12 +142,16 @@ void ConvexBound::project(double& X, double& Y) const {
   if (X + Y > 1) Y = 1 - X;  // the hypotenuse's points, rounded, inside
 }
 
-void ConvexBound::prepare(const std::vector<Point>& points, Prepared& out) const {
+void ConvexBound::prepare(const std::vector<Point>& points, Prepared& out, bool with_ranges) const {
   const std::size_t terms = monomials_.size();
   out.poly.assign(terms, Point{0, 0, 0});
+  const std::size_t side = static_cast<std::size_t>(degree_ + 1);
   for (std::size_t i = 0; i < points.size() && i < coefficients_.size(); ++i)
     for (const auto& [m, w] : coefficients_[i])
       for (int k = 0; k < 3; ++k) out.poly[m][k] += w * points[i][k];
+  out.grid.assign(side * side, Point{0, 0, 0});
+  for (std::size_t m = 0; m < terms; ++m)
+    out.grid[static_cast<std::size_t>(monomials_[m][0]) + side * static_cast<std::size_t>(monomials_[m][1])] = out.poly[m];
   out.net.assign(offset_[kOrders], Point{0, 0, 0});
   for (int k = 0; k < kOrders; ++k)
     for (std::size_t row = 0; row < bernstein_[k].size(); ++row) {
@@ -148,24 +159,27 @@ void ConvexBound::prepare(const std::vector<Point>& points, Prepared& out) const
       for (const auto& [m, w] : bernstein_[k][row])
         for (int c = 0; c < 3; ++c) v[c] += w * out.poly[m][c];
     }
-  const std::size_t seconds = offset_[kOrders] - offset_[3];
-  out.low.assign(seconds, INFINITY), out.high.assign(seconds, -INFINITY);
   for (int k = 0; k < 3; ++k) {
     out.largest[k] = 0;
-    for (std::size_t b = offset_[3 + k]; b < offset_[4 + k]; ++b) {
-      const Point& v = out.net[b];
-      out.largest[k] = std::max(out.largest[k], length(v));
-      for (std::size_t i = offset_[0]; i < offset_[1]; ++i) {
-        const double e = dot(out.net[i], v);
-        out.low[b - offset_[3]] = std::min(out.low[b - offset_[3]], e);
-        out.high[b - offset_[3]] = std::max(out.high[b - offset_[3]], e);
-      }
-    }
+    for (std::size_t b = offset_[3 + k]; b < offset_[4 + k]; ++b) out.largest[k] = std::max(out.largest[k], length(out.net[b]));
   }
+  out.low.clear(), out.high.clear();
+  if (with_ranges) ranges(out.net.data(), out.low, out.high);
 }
 
-void ConvexBound::certify(const Prepared& patch, const Jet& j, const Point& q, Result& out) const {
-  out.convex = false, out.lower = 0;
+void ConvexBound::ranges(const Point* net, std::vector<double>& low, std::vector<double>& high) const {
+  const std::size_t seconds = offset_[kOrders] - offset_[3];
+  low.assign(seconds, INFINITY), high.assign(seconds, -INFINITY);
+  for (std::size_t b = offset_[3]; b < offset_[kOrders]; ++b)
+    for (std::size_t i = offset_[0]; i < offset_[1]; ++i) {
+      const double e = dot(net[i], net[b]);
+      low[b - offset_[3]] = std::min(low[b - offset_[3]], e);
+      high[b - offset_[3]] = std::max(high[b - offset_[3]], e);
+    }
+}
+
+void ConvexBound::certify(const Prepared& patch, const Jet& j, const Point& q, double enough, Result& out) const {
+  out.convex = out.bounded = false, out.lower = 0;
   const Point r = minus(j.s, q);
   const Point* net = patch.net.data();
   const auto largest_from = [&](int k, const Point& from) {
@@ -187,33 +201,64 @@ void ConvexBound::certify(const Prepared& patch, const Jet& j, const Point& q, R
   // first between r_c dotted with the second derivatives' coefficients v, the
   // second between min_b (b - S(c)).v and max_b (b - S(c)).v over S's
   // coefficients b (a bilinear function of points of two hulls is extreme at
-  // their vertices).
+  // their vertices). S(c) lies in the hull of the b, so the second's range
+  // holds 0: without it the smallest eigenvalue below can only be larger, and
+  // where that is not positive already the sub-patch is not proved convex.
   double low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
+  const auto lambda_of = [&] {
+    const double off = std::max(std::fabs(low[1]), std::fabs(high[1]));
+    const double lambda_r = smallest_eigenvalue(low[0], off, low[2]);
+    // A margin for rounding in all of the above.
+    const double scale = lambda_j + std::fabs(lambda_r) + sigma_c * sigma_c + (length(r) + length(j.s)) * (Mxx + Mxy + Myy);
+    return lambda_j + lambda_r - 1e-12 * scale;
+  };
+  for (int k = 0; k < 3; ++k) {
+    if (offset_[4 + k] == offset_[3 + k]) continue;
+    low[k] = INFINITY, high[k] = -INFINITY;
+    for (std::size_t b = offset_[3 + k]; b < offset_[4 + k]; ++b) {
+      const double h = dot(r, net[b]);
+      low[k] = std::min(low[k], h), high[k] = std::max(high[k], h);
+    }
+  }
+  // Not convex already: the bound below, with a negative lambda, can reach
+  // `enough` only where F(c) does.
+  if (!(lambda_of() > 0) && !(0.5 * dot(r, r) > 0.5 * enough * enough)) return;
+  if (patch.low.empty()) ranges(net, patch.low, patch.high);  // made on first need (a search's own scratch patch)
+  const std::vector<double>* range_low = &patch.low;
+  const std::vector<double>* range_high = &patch.high;
   for (int k = 0; k < 3; ++k) {
     if (offset_[4 + k] == offset_[3 + k]) continue;
     low[k] = INFINITY, high[k] = -INFINITY;
     for (std::size_t b = offset_[3 + k]; b < offset_[4 + k]; ++b) {
       const double h = dot(r, net[b]), at_c = dot(j.s, net[b]);
-      low[k] = std::min(low[k], h + patch.low[b - offset_[3]] - at_c);
-      high[k] = std::max(high[k], h + patch.high[b - offset_[3]] - at_c);
+      low[k] = std::min(low[k], h + (*range_low)[b - offset_[3]] - at_c);
+      high[k] = std::max(high[k], h + (*range_high)[b - offset_[3]] - at_c);
     }
   }
-  const double off = std::max(std::fabs(low[1]), std::fabs(high[1]));
-  const double lambda_r = smallest_eigenvalue(low[0], off, low[2]);
-  // A margin for rounding in all of the above.
-  const double scale = lambda_j + std::fabs(lambda_r) + sigma_c * sigma_c +
-                       (length(r) + length(j.s)) * (Mxx + Mxy + Myy);
-  const double lambda = lambda_j + lambda_r - 1e-12 * scale;
-  if (!(lambda > 0)) return;
-  out.convex = true;
-  // F(x) >= F(c) + g.t + lambda/2 |t|^2, t = x - c, = F(c) + lambda/2 |x - c
-  // + g/lambda|^2 - |g|^2/(2 lambda): smallest over the frame at the frame's
-  // point nearest c - g/lambda.
+  const double lambda = lambda_of();
+  // F(x) >= F(c) + g.t + lambda/2 |t|^2 with t = x - c (g = grad F(c)), for
+  // every x of the frame, whatever lambda's sign.
   const double gx = dot(r, j.x), gy = dot(r, j.y);
-  double X = out.X - gx / lambda, Y = out.Y - gy / lambda;
-  project(X, Y);
-  const double tx = X - out.X, ty = Y - out.Y;
-  const double lower = 0.5 * dot(r, r) + gx * tx + gy * ty + 0.5 * lambda * (tx * tx + ty * ty);
+  double lower = 0.5 * dot(r, r);
+  if (lambda > 0) {
+    // Strongly convex: = F(c) + lambda/2 |x - c + g/lambda|^2 - |g|^2/(2
+    // lambda), smallest at the frame's point nearest c - g/lambda.
+    out.convex = true;
+    double X = out.X - gx / lambda, Y = out.Y - gy / lambda;
+    project(X, Y);
+    const double tx = X - out.X, ty = Y - out.Y;
+    lower += gx * tx + gy * ty + 0.5 * lambda * (tx * tx + ty * ty);
+  } else {
+    // Concave in t: smallest at a corner of the frame.
+    const double corners[4][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+    double least = INFINITY;
+    for (int k = 0; k < (triangle_ ? 3 : 4); ++k) {
+      const double tx = corners[k][0] - out.X, ty = corners[k][1] - out.Y;
+      least = std::min(least, gx * tx + gy * ty + 0.5 * lambda * (tx * tx + ty * ty));
+    }
+    lower += least;
+  }
+  out.bounded = true;
   // The rounding of F itself (r from points rounded at the size of the coordinates).
   const double coordinates = std::max({std::fabs(q[0]), std::fabs(q[1]), std::fabs(q[2]), std::fabs(j.s[0]), std::fabs(j.s[1]),
                                        std::fabs(j.s[2])});
@@ -221,19 +266,23 @@ void ConvexBound::certify(const Prepared& patch, const Jet& j, const Point& q, R
 }
 
 ConvexBound::Result ConvexBound::bound(const Prepared& patch, const Point& q, double enough) const {
-  const Point* poly = patch.poly.data();
+  const Point* poly = patch.grid.data();
   Result out;
   out.X = out.Y = triangle_ ? 1.0 / 3 : 0.5;
   Jet j = jet(poly, out.X, out.Y);
   Point r = minus(j.s, q);
   double F = 0.5 * dot(r, r);
-  certify(patch, j, q, out);
+  certify(patch, j, q, enough, out);
   out.point = j.s, out.distance = std::sqrt(2 * F);
-  if (out.convex && out.lower >= enough) return out;  // settled at the centre
+  if (out.bounded && out.lower >= enough) return out;  // settled at the centre
 
   // Damped Newton on F from the frame's centre, each step projected onto the frame.
   bool moved_at_all = false;
-  for (int step = 0; step < kNewtonSteps; ++step) {
+  // Where F is not convex at the centre, Newton only looks for a nearer
+  // point for the search's best (the sub-patch will be split anyway): a few steps.
+  const bool convex_here = out.convex;
+  const int steps = convex_here ? kNewtonSteps : 2, halvings = convex_here ? kHalvings : 3;
+  for (int step = 0; step < steps; ++step) {
     const double gx = dot(r, j.x), gy = dot(r, j.y);
     const double a = dot(j.x, j.x), b = dot(j.x, j.y), c = dot(j.y, j.y);
     double hxx = a + dot(r, j.xx), hxy = b + dot(r, j.xy), hyy = c + dot(r, j.yy);
@@ -258,7 +307,7 @@ ConvexBound::Result ConvexBound::bound(const Prepared& patch, const Point& q, do
     }
     bool moved = false;
     double t = 1;
-    for (int halving = 0; halving <= kHalvings; ++halving, t *= 0.5) {
+    for (int halving = 0; halving <= halvings; ++halving, t *= 0.5) {
       double X = out.X + t * sx, Y = out.Y + t * sy;
       project(X, Y);
       if (X == out.X && Y == out.Y) break;
@@ -275,7 +324,7 @@ ConvexBound::Result ConvexBound::bound(const Prepared& patch, const Point& q, do
     if (!moved) break;
   }
   out.point = j.s, out.distance = std::sqrt(2 * F);
-  if (moved_at_all) certify(patch, j, q, out);
+  if (moved_at_all) certify(patch, j, q, enough, out);
   return out;
 }
 

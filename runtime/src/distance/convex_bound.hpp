@@ -44,31 +44,40 @@ class ConvexBound {
   // points fixed) or per sub-patch.
   struct Prepared {
     std::vector<Point> poly;             // per monomial
+    std::vector<Point> grid;             // the same at e + (degree + 1) f for X^e Y^f (zero where none)
     std::vector<Point> net;              // per order, per Bernstein coefficient (offsets: ConvexBound::net_offset)
-    std::vector<double> low, high;       // per second-derivative coefficient
+    // Per second-derivative coefficient; empty until certify() first needs
+    // them, unless prepared with them (as a patch shared between threads must be).
+    mutable std::vector<double> low, high;
     double largest[3] = {0, 0, 0};       // the largest |S_XX|, |S_XY|, |S_YY| coefficient
   };
-  void prepare(const std::vector<Point>& points, Prepared& out) const;
+  // `with_ranges`: also the ranges (else certify() makes them when it needs them).
+  void prepare(const std::vector<Point>& points, Prepared& out, bool with_ranges = true) const;
 
   struct Result {
     double X = 0, Y = 0;     // the sub-patch's own coordinates of `point`
     Point point{0, 0, 0};    // a point of the surface (the nearest Newton found, or the centre)
     double distance = 0;     // |point - q|
     bool convex = false;     // whether F was proved strongly convex over the sub-patch
-    double lower = 0;        // then a lower bound on the distance from q to the sub-patch's surface
+    bool bounded = false;    // whether `lower` is a bound (always where convex)
+    double lower = 0;        // a lower bound on the distance from q to the sub-patch's surface
   };
   // The bound at the frame's centre; where that does not reach `enough`,
-  // Newton's nearest point and the bound there.
+  // Newton's nearest point and the bound there. Where F is not proved convex
+  // the second-order bound still holds with a negative lambda (its minimum is
+  // then at a corner of the frame): it is made where it could reach `enough`.
   Result bound(const Prepared& patch, const Point& q, double enough) const;
 
  private:
   struct Jet {
     Point s, x, y, xx, xy, yy;
   };
-  Jet jet(const Point* monomial_points, double X, double Y) const;
+  Jet jet(const Point* grid, double X, double Y) const;
   void project(double& X, double& Y) const;
   // The certificate at (X, Y) with its jet there: sets out.convex and out.lower.
-  void certify(const Prepared& patch, const Jet& j, const Point& q, Result& out) const;
+  void certify(const Prepared& patch, const Jet& j, const Point& q, double enough, Result& out) const;
+  // The ranges of b.v over S's coefficients b, per second-derivative coefficient v.
+  void ranges(const Point* net, std::vector<double>& low, std::vector<double>& high) const;
 
   // Sizes the bound works on the stack with (larger patches get none).
   static constexpr std::size_t kMaxTerms = 64;

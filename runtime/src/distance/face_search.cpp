@@ -352,11 +352,11 @@ void FaceSearch::run(const Point& q, FaceHit& best) {
       // distance is convex over it, a bound that settles the whole sub-patch.
       const ConvexBound::Prepared* prepared = &scratch_;
       if (node.depth == 0 && s.face < roots_.convex.size() && !roots_.convex[s.face].poly.empty()) prepared = &roots_.convex[s.face];
-      else convex_[kind].prepare(s.points, scratch_);
+      else convex_[kind].prepare(s.points, scratch_, false);
       const ConvexBound::Result r = convex_[kind].bound(*prepared, q, best.distance - tolerance_);
       const auto at = s.domain.at(r.X, r.Y);
       improve(s, at[0], at[1], r.point, 0, q, best);
-      if (r.convex && r.lower >= best.distance - tolerance_) continue;
+      if (r.bounded && r.lower >= best.distance - tolerance_) continue;
     } else {
       // The centre; where it is the nearest point so far, Gauss-Newton from there.
       const auto [cx, cy] = s.domain.centre();

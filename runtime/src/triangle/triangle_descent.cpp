@@ -241,17 +241,21 @@ SecondDerivatives TrianglePatchDescent::regular_derivatives(const std::vector<Po
   const std::size_t terms = static_cast<std::size_t>((d + 1) * (d + 2) / 2);
   const std::vector<double>& coefficients = tables_.polynomial();
   const double X = x.value, Y = y.value;
-  // pw[e] = X^e (0 for e < 0), likewise for Y.
-  const auto power = [](double t, int e) { return e < 0 ? 0.0 : std::pow(t, e); };
+  // X^e (0 for e < 0), likewise for Y: a table, not std::pow (this runs in
+  // the closest-point search's inner loop).
+  std::vector<double> px(static_cast<std::size_t>(d + 3), 0.0), py(static_cast<std::size_t>(d + 3), 0.0);
+  px[2] = py[2] = 1;
+  for (int e = 1; e <= d; ++e) px[static_cast<std::size_t>(e + 2)] = px[static_cast<std::size_t>(e + 1)] * X, py[static_cast<std::size_t>(e + 2)] = py[static_cast<std::size_t>(e + 1)] * Y;
+  const auto power = [](const std::vector<double>& p, int e) { return p[static_cast<std::size_t>(e + 2)]; };
   std::vector<double> value, dX, dY, dXX, dXY, dYY;
   for (int f = 0; f <= d; ++f)
     for (int e = 0; e + f <= d; ++e) {
-      value.push_back(power(X, e) * power(Y, f));
-      dX.push_back(e * power(X, e - 1) * power(Y, f));
-      dY.push_back(f * power(X, e) * power(Y, f - 1));
-      dXX.push_back(e * (e - 1) * power(X, e - 2) * power(Y, f));
-      dXY.push_back(e * f * power(X, e - 1) * power(Y, f - 1));
-      dYY.push_back(f * (f - 1) * power(X, e) * power(Y, f - 2));
+      value.push_back(power(px, e) * power(py, f));
+      dX.push_back(e * power(px, e - 1) * power(py, f));
+      dY.push_back(f * power(px, e) * power(py, f - 1));
+      dXX.push_back(e * (e - 1) * power(px, e - 2) * power(py, f));
+      dXY.push_back(e * f * power(px, e - 1) * power(py, f - 1));
+      dYY.push_back(f * (f - 1) * power(px, e) * power(py, f - 2));
     }
   const double xu = x.du, xv = x.dv, yu = y.du, yv = y.dv;
   SecondDerivatives out;
