@@ -266,22 +266,35 @@ void ConvexBound::certify(const Prepared& patch, const Jet& j, const Point& q, d
 }
 
 ConvexBound::Result ConvexBound::bound(const Prepared& patch, const Point& q, double enough) const {
-  const Point* poly = patch.grid.data();
   Result out;
   out.X = out.Y = triangle_ ? 1.0 / 3 : 0.5;
-  Jet j = jet(poly, out.X, out.Y);
-  Point r = minus(j.s, q);
-  double F = 0.5 * dot(r, r);
+  Jet j = jet(patch.grid.data(), out.X, out.Y);
   certify(patch, j, q, enough, out);
-  out.point = j.s, out.distance = std::sqrt(2 * F);
+  out.point = j.s, out.distance = length(minus(j.s, q));
   if (out.bounded && out.lower >= enough) return out;  // settled at the centre
-
-  // Damped Newton on F from the frame's centre, each step projected onto the frame.
-  bool moved_at_all = false;
   // Where F is not convex at the centre, Newton only looks for a nearer
   // point for the search's best (the sub-patch will be split anyway): a few steps.
   const bool convex_here = out.convex;
-  const int steps = convex_here ? kNewtonSteps : 2, halvings = convex_here ? kHalvings : 3;
+  if (newton(patch, q, convex_here ? kNewtonSteps : 2, convex_here ? kHalvings : 3, out, j)) certify(patch, j, q, enough, out);
+  return out;
+}
+
+ConvexBound::Result ConvexBound::polish(const Prepared& patch, const Point& q, double X, double Y) const {
+  Result out;
+  out.X = X, out.Y = Y;
+  project(out.X, out.Y);
+  Jet j = jet(patch.grid.data(), out.X, out.Y);
+  newton(patch, q, kNewtonSteps, kHalvings, out, j);
+  out.point = j.s, out.distance = length(minus(j.s, q));
+  return out;
+}
+
+bool ConvexBound::newton(const Prepared& patch, const Point& q, int steps, int halvings, Result& out, Jet& j) const {
+  // Damped Newton on F, each step projected onto the frame.
+  const Point* poly = patch.grid.data();
+  Point r = minus(j.s, q);
+  double F = 0.5 * dot(r, r);
+  bool moved_at_all = false;
   for (int step = 0; step < steps; ++step) {
     const double gx = dot(r, j.x), gy = dot(r, j.y);
     const double a = dot(j.x, j.x), b = dot(j.x, j.y), c = dot(j.y, j.y);
@@ -292,7 +305,7 @@ ConvexBound::Result ConvexBound::bound(const Prepared& patch, const Point& q, do
     double sx = -(hyy * gx - hxy * gy) / det, sy = -(hxx * gy - hxy * gx) / det;
     // The sides the point is on that the descent would leave by (their
     // multipliers are positive) are held, and Newton runs along what is left:
-    // so that Newton ends at the constrained minimum, where the bound below
+    // so that Newton ends at the constrained minimum, where the bound
     // is the distance. At a corner held by two sides it is there.
     const bool hold_x = (out.X <= 0 && gx > 0) || (!triangle_ && out.X >= 1 && gx < 0);
     const bool hold_y = (out.Y <= 0 && gy > 0) || (!triangle_ && out.Y >= 1 && gy < 0);
@@ -314,7 +327,13 @@ ConvexBound::Result ConvexBound::bound(const Prepared& patch, const Point& q, do
       const Jet n = jet(poly, X, Y);
       const Point nr = minus(n.s, q);
       const double nF = 0.5 * dot(nr, nr);
-      if (nF < F) {
+      // Nearer; or, where F no longer changes beyond its rounding, with a
+      // gradient at least halved (near the minimum F resolves the point only
+      // to the square root of its precision, the gradient to its precision).
+      const double ngx = dot(nr, n.x), ngy = dot(nr, n.y);
+      const bool flatter = nF <= F * (1 + 8 * std::numeric_limits<double>::epsilon()) &&
+                           ngx * ngx + ngy * ngy < 0.25 * (gx * gx + gy * gy);
+      if (nF < F || flatter) {
         moved = std::fabs(X - out.X) + std::fabs(Y - out.Y) > kConverged;
         moved_at_all = true;
         out.X = X, out.Y = Y, j = n, r = nr, F = nF;
@@ -324,8 +343,7 @@ ConvexBound::Result ConvexBound::bound(const Prepared& patch, const Point& q, do
     if (!moved) break;
   }
   out.point = j.s, out.distance = std::sqrt(2 * F);
-  if (moved_at_all) certify(patch, j, q, enough, out);
-  return out;
+  return moved_at_all;
 }
 
 }  // namespace stencil_runtime

@@ -67,6 +67,8 @@ class ConvexBound {
   // the second-order bound still holds with a negative lambda (its minimum is
   // then at a corner of the frame): it is made where it could reach `enough`.
   Result bound(const Prepared& patch, const Point& q, double enough) const;
+  // Newton from (X, Y) of the frame to the sub-patch's point nearest q (no bound).
+  Result polish(const Prepared& patch, const Point& q, double X, double Y) const;
 
  private:
   struct Jet {
@@ -74,6 +76,8 @@ class ConvexBound {
   };
   Jet jet(const Point* grid, double X, double Y) const;
   void project(double& X, double& Y) const;
+  // Damped Newton on F from out's (X, Y) with its jet j, both updated; whether it moved.
+  bool newton(const Prepared& patch, const Point& q, int steps, int halvings, Result& out, Jet& j) const;
   // The certificate at (X, Y) with its jet there: sets out.convex and out.lower.
   void certify(const Prepared& patch, const Jet& j, const Point& q, double enough, Result& out) const;
   // The ranges of b.v over S's coefficients b, per second-derivative coefficient v.

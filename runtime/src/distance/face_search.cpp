@@ -188,10 +188,25 @@ double tangent_cosine(const Derivatives& d, const Point& q) {
 
 void FaceSearch::refine(const Point& q, FaceHit& best) const {
   if (best.patch.points.empty()) return;
-  {  // Already stationary (Gauss-Newton converged where derivatives are exact anywhere)?
+  const auto stationary = [&] {  // Gauss-Newton converged where derivatives are exact anywhere?
     double x = best.x, y = best.y;
     Derivatives d;
-    if (family_.derivatives(best.patch, x, y, d) && x == best.x && y == best.y && tangent_cosine(d, q) <= kOrthogonal) return;
+    return family_.derivatives(best.patch, x, y, d) && x == best.x && y == best.y && tangent_cosine(d, q) <= kOrthogonal;
+  };
+  if (stationary()) return;
+  const std::size_t kind = static_cast<std::size_t>(best.patch.kind);
+  if (kind < convex_.size() && !convex_[kind].empty()) {
+    // A polynomial sub-patch: Newton on it to its nearest point first (far
+    // cheaper than the path below, which then has nothing left to do unless
+    // the minimum lies over the sub-patch's border).
+    ConvexBound::Prepared prepared;
+    convex_[kind].prepare(best.patch.points, prepared, false);
+    const auto l = best.patch.domain.local(best.x, best.y);
+    const ConvexBound::Result r = convex_[kind].polish(prepared, q, l[0], l[1]);
+    const auto at = best.patch.domain.at(r.X, r.Y);
+    const SubPatch s = best.patch;
+    improve(s, at[0], at[1], r.point, 0, q, best);
+    if (stationary()) return;
   }
   const auto holds = [](const SubPatch& k, double x, double y) { return k.domain.contains(x, y, 1e-14); };  // own coordinates round
   SubPatch children[kMaxSubPatchChildren];
@@ -316,6 +331,15 @@ void FaceSearch::push(double bound, int depth, SubPatch&& patch) {
 void FaceSearch::start(std::size_t face, double x, double y, const Point& q, FaceHit& best) const {
   SubPatch root;
   family_.root(face, prepared_.data(), root);
+  const std::size_t kind = static_cast<std::size_t>(root.kind);
+  if (face < roots_.convex.size() && !roots_.convex[face].poly.empty() && kind < convex_.size() && !convex_[kind].empty()) {
+    // A polynomial patch: Newton on its prepared polynomial.
+    const auto l = root.domain.local(x, y);
+    const ConvexBound::Result r = convex_[kind].polish(roots_.convex[face], q, l[0], l[1]);
+    const auto at = root.domain.at(r.X, r.Y);
+    improve(root, at[0], at[1], r.point, 0, q, best);
+    return;
+  }
   polish(root, x, y, q, best);
 }
 
