@@ -94,16 +94,11 @@ class SectorRefiner final : public ChartRefiner {
 
 }  // namespace
 
-std::size_t sector_points(const BoundarySector& s) {
-  if (s.kind != SectorKind::Cone) return SectorLayout(s).size();
-  if (s.faces < 3 || s.faces > limits::kMaxValence || s.position != 0)
-    throw Error("internal: no cone point of valence " + std::to_string(s.faces) + " with face " + std::to_string(s.position));
-  return PatchLayout(s.faces).size();
-}
-
 PatchSubdivision build_sector_subdivision(const QuadScheme& scheme, const BoundarySector& sector) {
   if (sector.kind == SectorKind::Cone) {
-    sector_points(sector);  // checks the valence
+    if (sector.faces < 3 || sector.faces > limits::kMaxValence || sector.position != 0)
+      throw Error("internal: no cone point of valence " + std::to_string(sector.faces) + " with face " +
+                  std::to_string(sector.position));
     PatchSubdivision out = build_patch_subdivision(scheme, sector.faces, VertexRule{Rational(1), Rational(0), Rational(0)});
     out.reflection.clear();  // sectors are stored whole
     return out;

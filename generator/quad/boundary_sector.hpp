@@ -83,9 +83,6 @@ class SectorLayout {
 // of face p mirrors that of face k-1-p, not itself).
 PatchSubdivision build_sector_subdivision(const QuadScheme& scheme, const BoundarySector& sector);
 
-// Its point count (2v+8 for a cone).
-std::size_t sector_points(const BoundarySector& s);
-
 // The sectors the runtime needs for boundary vertices in 1..max_faces faces:
 // every position p of k = 1 and k >= 3 (in 2 faces the patches are regular
 // boundary patches, with phantom points). With `sharp`, also the corners in

@@ -112,14 +112,13 @@ class SeamPolygons {
   std::size_t quads() const { return quad_offset_.back(); }
   std::size_t triangles() const { return tri_offset_.back(); }
   std::size_t rim_points() const { return rim_offset_.empty() ? 0 : run_offset_.back() + rim_offset_.back(); }
-  // The tessellation's points: `face_points` and the rim points after them;
-  // EvaluationError beyond limits::kMaxTessellationPoints.
-  std::size_t checked_points(std::size_t face_points) const {
+  // EvaluationError where `face_points` and the rim points after them exceed
+  // limits::kMaxTessellationPoints.
+  void check_points(std::size_t face_points) const {
     const std::size_t total = face_points + rim_points();
     if (total > limits::kMaxTessellationPoints)
       throw EvaluationError("the tessellation would have " + std::to_string(total) + " points; the limit is " +
                             std::to_string(limits::kMaxTessellationPoints) + " (lower the rates)");
-    return total;
   }
 
   // Where each rim point lies, in order; `point_offset` as for edges().

@@ -99,7 +99,7 @@ void check_vertices(const SharpCut& cut, const PolygonLinks& links, const Polygo
         valences.add_lazy(k, [&] { return who; });
       } else if (!tables.has_sector({SectorRule::Cone, k, 0})) {
         const std::string what = who + " is a cone point (infinitely sharp, on no infinitely sharp edge) of valence " + std::to_string(k);
-        if (!tables.has_sector({SectorRule::Cone, 3, 0}))  // none at all: tables from before cone points
+        if (!tables.has_sector_rule(SectorRule::Cone))  // none at all: tables from before cone points
           throw MeshError(what + "; these tables hold no patches for cone points (descent.json before version 4): "
                                  "regenerate them with this stencilgen");
         valences.add_boundary(k, what + " (tables cover those up to their largest valence)");

@@ -39,7 +39,7 @@ void QuadFamily::plan(TessellationLayout& layout, const detail::RangeRunner& run
     interior_offset[f + 1] = interior_offset[f] + (n == 0 ? 0 : (n - 1) * (n - 1));
   }
   const detail::SeamPolygons<4> seams(topology_, rates, layout.holes);
-  seams.checked_points(layout.point_offsets[nf]);
+  seams.check_points(layout.point_offsets[nf]);
   layout.rim = seams.rim_nodes(layout.point_offsets, row_cell);
   const std::size_t interior_quads = interior_offset[nf];
   layout.quads.resize(interior_quads + seams.quads());

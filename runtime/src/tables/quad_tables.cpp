@@ -367,6 +367,10 @@ const QuadTables::Sector* QuadTables::find_sector(const SectorKey& s) const {
   return it == sector_by_kind_.end() ? nullptr : &sectors_[it->second];
 }
 
+bool QuadTables::has_sector_rule(SectorRule rule) const {
+  return std::any_of(sectors_.begin(), sectors_.end(), [&](const Sector& x) { return x.key.rule == rule; });
+}
+
 std::vector<SectorKey> QuadTables::sectors() const {
   std::vector<SectorKey> out;
   for (const Sector& x : sectors_) out.push_back(x.key);
@@ -439,7 +443,7 @@ int QuadTables::checked_slot(int n) const {
 const double* QuadTables::stored_weights(const Valence& v, int slot, long i, long j, bool centre) const {
   const auto& index = centre ? v.centres[static_cast<std::size_t>(slot)] : v.nodes[static_cast<std::size_t>(slot)];
   const long side = rates_[static_cast<std::size_t>(slot)] + (centre ? 0 : 1);
-  const long at = v.reflection.empty() ? j * side + i : j * (j + 1) / 2 + i;  // every point, or i <= j
+  const long at = stored_at(!v.reflection.empty(), side, i, j);
   return v.weights.data() + static_cast<std::size_t>(index[static_cast<std::size_t>(at)]) * static_cast<std::size_t>(v.points);
 }
 
@@ -471,11 +475,9 @@ void QuadTables::centre_stencil(int valence, int n, int i, int j, double* weight
 }
 
 const double* QuadTables::centre_weights(int valence, int n, int i, int j, bool& mirrored) const {
-  const int slot = checked_slot(n);
+  checked_slot(n);
   if (i < 0 || j < 0 || i >= n || j >= n) throw EvaluationError("cell index outside 0..n-1");
-  const Valence& v = valence_data(valence);
-  mirrored = i > j && !v.reflection.empty();
-  return stored_weights(v, slot, mirrored ? j : i, mirrored ? i : j, true);
+  return centre_grid(valence, n).at(i, j, mirrored);
 }
 
 QuadTables::CentreGrid QuadTables::centre_grid(int valence, int n) const {

@@ -87,6 +87,8 @@ class QuadTables {
   static int points(int kind) { return patch_points(kind); }  // any patch kind (patch_kind.hpp)
   // The boundary sectors the tables hold (version 8 binary, descent.json version 3).
   bool has_sector(const SectorKey& s) const { return find_sector(s) != nullptr; }
+  // Whether they hold any sector of that rule (tables from before a rule was added hold none).
+  bool has_sector_rule(SectorRule rule) const;
   std::vector<SectorKey> sectors() const;
 
   // The patch subdivision (binary tables of version 4; nullptr for exact JSON
@@ -123,8 +125,7 @@ class QuadTables {
    public:
     const double* at(int i, int j, bool& mirrored) const {
       mirrored = reflected_ && i > j;
-      const long a = mirrored ? j : i, b = mirrored ? i : j;
-      const long k = reflected_ ? b * (b + 1) / 2 + a : b * side_ + a;
+      const long k = stored_at(reflected_, side_, mirrored ? j : i, mirrored ? i : j);
       return weights_ + static_cast<std::size_t>(index_[static_cast<std::size_t>(k)]) * points_;
     }
 
@@ -179,6 +180,9 @@ class QuadTables {
   void validate(const std::string& origin);
   // The stored half: stencil (i, j), i <= j, of a node or a centre.
   const double* stored_weights(const Valence& v, int slot, long i, long j, bool centre) const;
+  // Where grid point (i, j) of a grid `side` points wide is in its index: a
+  // kind with a reflection stores the points with i <= j only, by rows of j.
+  static long stored_at(bool reflected, long side, long i, long j) { return reflected ? j * (j + 1) / 2 + i : j * side + i; }
   void regular_weights_at(int slot, long a, double* w4) const;
   const Valence& valence_data(int v) const;
   // Stencil at parameter (a/g, b/g), g = 2n, a and b both even (node) or both odd (centre).

@@ -50,7 +50,7 @@ void TriangleFamily::plan(TessellationLayout& layout, const detail::RangeRunner&
     face_triangles[f + 1] = face_triangles[f] + (n == 0 ? 0 : 3 * (n - 1));
   }
   const detail::SeamPolygons<3> seams(topology_, rates, layout.holes);
-  seams.checked_points(layout.point_offsets[nf]);
+  seams.check_points(layout.point_offsets[nf]);
   layout.rim = seams.rim_nodes(layout.point_offsets, row_up);
   const std::size_t inner_quads = face_quads[nf], inner_triangles = face_triangles[nf];
   layout.quads.resize(inner_quads + seams.quads());
