@@ -145,6 +145,8 @@ void ConvexBound::project(double& X, double& Y) const {
 void ConvexBound::prepare(const std::vector<Point>& points, Prepared& out, bool with_ranges) const {
   const std::size_t terms = monomials_.size();
   out.poly.assign(terms, Point{0, 0, 0});
+  out.magnitude = 0;
+  for (const Point& p : points) out.magnitude = std::max({out.magnitude, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])});
   const std::size_t side = static_cast<std::size_t>(degree_ + 1);
   for (std::size_t i = 0; i < points.size() && i < coefficients_.size(); ++i)
     for (const auto& [m, w] : coefficients_[i])
@@ -208,9 +210,13 @@ void ConvexBound::certify(const Prepared& patch, const Jet& j, const Point& q, d
   const auto lambda_of = [&] {
     const double off = std::max(std::fabs(low[1]), std::fabs(high[1]));
     const double lambda_r = smallest_eigenvalue(low[0], off, low[2]);
-    // A margin for rounding in all of the above.
+    // A margin for rounding in all of the above: relative to the terms, and
+    // absolute for the derivatives' coefficients, sums of points rounded at
+    // the size of their coordinates (a deep sub-patch's second derivatives are
+    // far smaller than that).
     const double scale = lambda_j + std::fabs(lambda_r) + sigma_c * sigma_c + (length(r) + length(j.s)) * (Mxx + Mxy + Myy);
-    return lambda_j + lambda_r - 1e-12 * scale;
+    const double coefficients = 1024 * std::numeric_limits<double>::epsilon() * patch.magnitude;
+    return lambda_j + lambda_r - 1e-12 * scale - coefficients * (length(r) + length(j.s) + sigma_c);
   };
   for (int k = 0; k < 3; ++k) {
     if (offset_[4 + k] == offset_[3 + k]) continue;

@@ -50,6 +50,7 @@ class ConvexBound {
     // them, unless prepared with them (as a patch shared between threads must be).
     mutable std::vector<double> low, high;
     double largest[3] = {0, 0, 0};       // the largest |S_XX|, |S_XY|, |S_YY| coefficient
+    double magnitude = 0;                // the largest coordinate of the control points (for rounding margins)
   };
   // `with_ranges`: also the ranges (else certify() makes them when it needs them).
   void prepare(const std::vector<Point>& points, Prepared& out, bool with_ranges = true) const;
