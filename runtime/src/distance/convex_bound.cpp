@@ -229,7 +229,9 @@ void ConvexBound::certify(const Prepared& patch, const Jet& j, const Point& q, d
   // Not convex already: the bound below, with a negative lambda, can reach
   // `enough` only where F(c) does.
   if (!(lambda_of() > 0) && !(0.5 * dot(r, r) > 0.5 * enough * enough)) return;
-  if (patch.low.empty()) ranges(net, patch.low, patch.high);  // made on first need (a search's own scratch patch)
+  // Made on first need (a search's own scratch patch; a patch shared between
+  // threads is prepared with them, so this never writes to it).
+  if (patch.low.empty() && offset_[kOrders] > offset_[3]) ranges(net, patch.low, patch.high);
   const std::vector<double>* range_low = &patch.low;
   const std::vector<double>* range_high = &patch.high;
   for (int k = 0; k < 3; ++k) {
