@@ -1,27 +1,31 @@
 #pragma once
 // A second-order bound on the distance from a point q to a polynomial
 // sub-patch (docs/runtime.md, "Closest points"). With F(x) = |S(x) - q|^2 / 2
-// over the sub-patch's unit frame,
+// over the sub-patch's unit frame (square or triangle),
 //   Hess F = J^T J + sum_k r_k Hess S_k,   r = S - q.
-// Around any point c of the frame, with r = r_c + (S(x) - S(c)):
-//  - sigma_min(J(x)) >= sigma_min(J(c)) - |J(x) - J(c)|, and J moves by at
-//    most the second derivatives' bound times the distance to the frame's far side;
-//  - r_c . Hess S(x) has entries between the smallest and largest of r_c
-//    dotted with the Bernstein coefficients of S_XX, S_XY, S_YY (the surface's
-//    second derivatives are polynomials over the frame, and a polynomial lies in
-//    the hull of its Bernstein coefficients), and the smallest eigenvalue of a
-//    symmetric 2x2 matrix grows with its diagonal and falls with |off-diagonal|;
-//  - |S(x) - S(c)| <= the diameter of the control points' box (the surface
-//    lies in their hull), times the second derivatives' bound.
-// Where these give Hess F >= lambda I with lambda > 0 over the whole frame, F
-// is strongly convex there and F(x) >= F(c) + g.(x - c) + lambda/2 |x - c|^2
-// (g = J^T r_c), minimised over the frame's box: a lower bound that equals the
-// distance when c is the minimiser. c comes from damped Newton steps from the
-// frame's centre. Unlike the affine slab (whose slack falls as the square of
-// the sub-patch's size, so that 1e-9 of the diagonal takes about eleven levels
-// of subdivision around the nearest point), this bound is tight at any size
-// where the squared distance is convex, which holds near every point nearer
-// than the surface's focal points.
+// Around any point c of the frame, with r = r_c + (S(x) - S(c)), for every x:
+//  - sigma_min(J(x)) >= sigma_min(J(c)) - |J(x) - J(c)|, where J moves by at
+//    most the second derivatives' largest Bernstein coefficient times the
+//    distance to the frame's far side, and its columns stay in the hulls of
+//    S_X's and S_Y's Bernstein coefficients;
+//  - r_c . Hess S(x) has entries between the least and greatest of r_c
+//    dotted with the Bernstein coefficients v of S_XX, S_XY, S_YY (a
+//    polynomial lies in the hull of its Bernstein coefficients), and
+//    (S(x) - S(c)) . Hess S(x) between those of (b - S(c)) . v over S's own
+//    coefficients b (a bilinear function of points of two hulls is extreme
+//    at their vertices);
+//  - the smallest eigenvalue of a symmetric 2x2 matrix grows with its
+//    diagonal and falls with the size of its off-diagonal.
+// So Hess F >= lambda I over the whole frame, and F(x) >= F(c) + g.(x - c) +
+// lambda/2 |x - c|^2 (g = grad F(c)). Where lambda > 0, F is strongly convex
+// and the minimum of the right side over the frame is a bound that equals
+// the distance when c is the constrained minimiser (Newton's point); where
+// lambda <= 0, the right side is concave and its minimum is at a corner of
+// the frame, still a bound. Unlike the affine slab, whose slack falls as the
+// square of the sub-patch's size (so that 1e-9 of the diagonal takes about
+// eleven levels of subdivision around the nearest point), this bound is tight
+// at any size where the squared distance is convex, which holds near every
+// point nearer than the surface's focal points.
 #include <array>
 #include <utility>
 #include <vector>
@@ -45,7 +49,7 @@ class ConvexBound {
   struct Prepared {
     std::vector<Point> poly;             // per monomial
     std::vector<Point> grid;             // the same at e + (degree + 1) f for X^e Y^f (zero where none)
-    std::vector<Point> net;              // per order, per Bernstein coefficient (offsets: ConvexBound::net_offset)
+    std::vector<Point> net;              // per order (S, S_X, S_Y, S_XX, S_XY, S_YY), per Bernstein coefficient
     // Per second-derivative coefficient; empty until certify() first needs
     // them, unless prepared with them (as a patch shared between threads must be).
     mutable std::vector<double> low, high;
