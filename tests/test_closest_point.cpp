@@ -298,6 +298,24 @@ std::array<double, 2> sub_patch_point(const SubPatch& s, double X, double Y) {
   return s.domain.at(X, Y);
 }
 
+// Exact evaluations of a sub-patch at the nodes of an n x n grid of its own
+// frame (the unit square, or the unit triangle's half of it), with their own coordinates.
+struct FrameSamples {
+  std::vector<std::array<double, 2>> at;
+  std::vector<Point> points;
+};
+FrameSamples frame_samples(const Family& family, const SubPatch& s, int n, double tolerance) {
+  FrameSamples out;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= (s.domain.triangle ? n - j : n); ++i) {
+      const double X = double(i) / n, Y = double(j) / n;
+      const auto p = s.domain.at(X, Y);
+      out.at.push_back({X, Y});
+      out.points.push_back(family.evaluate(s, p[0], p[1], tolerance).point);
+    }
+  return out;
+}
+
 // The scheme, its tables and the mesh each sub-patch test runs on.
 struct SubPatchCase {
   const char* scheme;
@@ -338,13 +356,7 @@ TEST_CASE("the affine enclosure bounds every sampled sub-patch from below and ti
       const SubPatch s = random_sub_patch(surface, rng, depth);
       if (s.kind != tc.regular_kind) continue;  // only regular sub-patches have the enclosure
       ++tested;
-      constexpr int kSamples = 24;
-      std::vector<Point> samples;
-      for (int j = 0; j <= kSamples; ++j)
-        for (int i = 0; i <= (s.domain.triangle ? kSamples - j : kSamples); ++i) {
-          const auto at = s.domain.at(double(i) / kSamples, double(j) / kSamples);
-          samples.push_back(family.evaluate(s, at[0], at[1], 1e-14 * diagonal).point);
-        }
+      const std::vector<Point> samples = frame_samples(family, s, 24, 1e-14 * diagonal).points;
       const Point centre = samples[samples.size() / 2];
       for (int k = 0; k < 20; ++k) {
         const double reach = (k < 10 ? 0.01 : 0.5) * diagonal;
@@ -396,23 +408,20 @@ TEST_CASE("the convexity bound holds below dense samples of every sub-patch it c
       const SubPatch s = random_sub_patch(surface, rng, depth);
       if (s.kind != tc.regular_kind) continue;
       ++tested;
-      constexpr int kSamples = 32;
-      std::vector<Point> samples;
-      for (int j = 0; j <= kSamples; ++j)
-        for (int i = 0; i <= (s.domain.triangle ? kSamples - j : kSamples); ++i) {
-          const double X = double(i) / kSamples, Y = double(j) / kSamples;
-          const auto at = s.domain.at(X, Y);
-          samples.push_back(family.evaluate(s, at[0], at[1], 1e-14 * diagonal).point);
-          // The declared polynomial at the same own coordinates.
-          Point p{0, 0, 0};
-          for (std::size_t h = 0; h < s.points.size(); ++h)
-            for (std::size_t m = 0; m < polynomial->monomials.size(); ++m) {
-              const double w = polynomial->coefficients[h][m] * std::pow(X, polynomial->monomials[m][0]) *
-                               std::pow(Y, polynomial->monomials[m][1]);
-              for (int k = 0; k < 3; ++k) p[k] += w * s.points[h][k];
-            }
-          REQUIRE(distance(p, samples.back()) <= 1e-12 * diagonal);
-        }
+      const FrameSamples frame = frame_samples(family, s, 32, 1e-14 * diagonal);
+      const std::vector<Point>& samples = frame.points;
+      for (std::size_t n = 0; n < samples.size(); ++n) {
+        // The declared polynomial at the same own coordinates.
+        const double X = frame.at[n][0], Y = frame.at[n][1];
+        Point p{0, 0, 0};
+        for (std::size_t h = 0; h < s.points.size(); ++h)
+          for (std::size_t m = 0; m < polynomial->monomials.size(); ++m) {
+            const double w = polynomial->coefficients[h][m] * std::pow(X, polynomial->monomials[m][0]) *
+                             std::pow(Y, polynomial->monomials[m][1]);
+            for (int k = 0; k < 3; ++k) p[k] += w * s.points[h][k];
+          }
+        REQUIRE(distance(p, samples[n]) <= 1e-12 * diagonal);
+      }
       ConvexBound::Prepared prepared;
       convex.prepare(s.points, prepared);
       const Point centre = samples[samples.size() / 2];

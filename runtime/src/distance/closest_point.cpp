@@ -144,7 +144,6 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
   tolerance = options.tolerance > 0 ? options.tolerance : 1e-9 * std::max(diagonal, 1e-300);
   std::vector<SubPatch> patches(faces);
   roots.kinds.assign(faces, 0);
-  roots.has_slab.assign(faces, 0);
   roots.slabs.assign(faces, {});
   roots.convex.assign(faces, {});
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces, 256), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -157,7 +156,6 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
       roots.kinds[f] = patches[f].kind;
       if (kind < enclosures.size() && !enclosures[kind].empty()) {
         roots.slabs[f] = enclosures[kind].slab(patches[f].points);
-        roots.has_slab[f] = 1;
         // The slab's box where it is inside the control points' (both hold the surface).
         const std::array<Point, 2> slab_box = enclosures[kind].box(roots.slabs[f]);
         for (int k = 0; k < 3; ++k) a[k] = std::max(a[k], slab_box[0][k]), b[k] = std::min(b[k], slab_box[1][k]);
@@ -328,10 +326,9 @@ std::size_t ClosestPointQuery::memory_bytes() const {
   std::size_t bytes = i.prepared.capacity() * sizeof(Point) + i.boxes.capacity() * sizeof(i.boxes[0]) +
                       i.orientation.capacity() + i.seeds.points.capacity() * sizeof(Point) +
                       i.seeds.faces.capacity() * sizeof(std::size_t) + i.seeds.at.capacity() * sizeof(i.seeds.at[0]);
-  bytes += i.roots.kinds.capacity() * sizeof(int) + i.roots.has_slab.capacity() +
-           i.roots.slabs.capacity() * sizeof(AffineEnclosure::Slab);
+  bytes += i.roots.kinds.capacity() * sizeof(int) + i.roots.slabs.capacity() * sizeof(AffineEnclosure::Slab);
   for (const ConvexBound::Prepared& p : i.roots.convex)
-    bytes += sizeof(p) + (p.poly.capacity() + p.grid.capacity() + p.net.capacity()) * sizeof(Point) + (p.low.capacity() + p.high.capacity()) * sizeof(double);
+    bytes += sizeof(p) + (p.grid.capacity() + p.net.capacity()) * sizeof(Point) + (p.low.capacity() + p.high.capacity()) * sizeof(double);
   if (i.seed_tree) bytes += i.seed_tree->usedMemory(*i.seed_tree);
   // Embree's BVH over the boxes: about two nodes of 64 bytes per primitive (no API to ask).
   bytes += i.boxes.size() * 128;

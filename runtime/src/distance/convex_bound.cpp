@@ -35,11 +35,18 @@ constexpr int kOrder[6][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
 }  // namespace
 
 ConvexBound::ConvexBound(const PolynomialPatch& patch) : triangle_(patch.triangle), degree_(patch.degree) {
-  if (patch.monomials.empty() || patch.monomials.size() > kMaxTerms || patch.degree > kMaxDegree) return;  // none
-  const auto sparse = [](const std::vector<double>& row) {
-    std::vector<std::pair<std::size_t, double>> out;
-    for (std::size_t m = 0; m < row.size(); ++m)
-      if (row[m] != 0) out.push_back({m, row[m]});
+  if (patch.monomials.empty() || patch.monomials.size() > kMaxTerms || patch.degree < 0 || patch.degree > kMaxDegree) return;  // none
+  // Rows over the monomials become rows over the grid of X^e Y^f (Prepared::grid).
+  const std::size_t side = static_cast<std::size_t>(degree_ + 1);
+  std::vector<std::size_t> at;
+  for (const auto& m : patch.monomials) {
+    if (m[0] < 0 || m[1] < 0 || m[0] > degree_ || m[1] > degree_) return;  // none
+    at.push_back(static_cast<std::size_t>(m[0]) + side * static_cast<std::size_t>(m[1]));
+  }
+  const auto sparse = [&](const std::vector<double>& row) {
+    SparseRow out;
+    for (std::size_t m = 0; m < row.size() && m < at.size(); ++m)
+      if (row[m] != 0) out.push_back({at[m], row[m]});
     return out;
   };
   for (const auto& c : patch.coefficients) coefficients_.push_back(sparse(c));
@@ -89,7 +96,7 @@ ConvexBound::ConvexBound(const PolynomialPatch& patch) : triangle_(patch.triangl
     if (bernstein_[k].size() > kMaxTerms) return;  // none
     offset_[k + 1] = offset_[k] + bernstein_[k].size();
   }
-  monomials_ = patch.monomials;  // last: empty() says whether the bound is there
+  grid_size_ = side * side;  // last: empty() says whether the bound is there
 }
 
 ConvexBound::Jet ConvexBound::jet(const Point* grid, double X, double Y) const {
@@ -143,23 +150,16 @@ void ConvexBound::project(double& X, double& Y) const {
 }
 
 void ConvexBound::prepare(const std::vector<Point>& points, Prepared& out, bool with_ranges) const {
-  const std::size_t terms = monomials_.size();
-  out.poly.assign(terms, Point{0, 0, 0});
-  out.magnitude = 0;
-  for (const Point& p : points) out.magnitude = std::max({out.magnitude, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])});
-  const std::size_t side = static_cast<std::size_t>(degree_ + 1);
+  out.grid.assign(grid_size_, Point{0, 0, 0});
   for (std::size_t i = 0; i < points.size() && i < coefficients_.size(); ++i)
-    for (const auto& [m, w] : coefficients_[i])
-      for (int k = 0; k < 3; ++k) out.poly[m][k] += w * points[i][k];
-  out.grid.assign(side * side, Point{0, 0, 0});
-  for (std::size_t m = 0; m < terms; ++m)
-    out.grid[static_cast<std::size_t>(monomials_[m][0]) + side * static_cast<std::size_t>(monomials_[m][1])] = out.poly[m];
+    for (const auto& [g, w] : coefficients_[i])
+      for (int k = 0; k < 3; ++k) out.grid[g][k] += w * points[i][k];
   out.net.assign(offset_[kOrders], Point{0, 0, 0});
   for (int k = 0; k < kOrders; ++k)
     for (std::size_t row = 0; row < bernstein_[k].size(); ++row) {
       Point& v = out.net[offset_[k] + row];
-      for (const auto& [m, w] : bernstein_[k][row])
-        for (int c = 0; c < 3; ++c) v[c] += w * out.poly[m][c];
+      for (const auto& [g, w] : bernstein_[k][row])
+        for (int c = 0; c < 3; ++c) v[c] += w * out.grid[g][c];
     }
   for (int k = 0; k < 3; ++k) {
     out.largest[k] = 0;
@@ -299,7 +299,7 @@ ConvexBound::Result ConvexBound::polish(const Prepared& patch, const Point& q, d
 
 bool ConvexBound::newton(const Prepared& patch, const Point& q, int steps, int halvings, Result& out, Jet& j) const {
   // Damped Newton on F, each step projected onto the frame.
-  const Point* poly = patch.grid.data();
+  const Point* grid = patch.grid.data();
   Point r = minus(j.s, q);
   double F = 0.5 * dot(r, r);
   bool moved_at_all = false;
@@ -332,7 +332,7 @@ bool ConvexBound::newton(const Prepared& patch, const Point& q, int steps, int h
       double X = out.X + t * sx, Y = out.Y + t * sy;
       project(X, Y);
       if (X == out.X && Y == out.Y) break;
-      const Jet n = jet(poly, X, Y);
+      const Jet n = jet(grid, X, Y);
       const Point nr = minus(n.s, q);
       const double nF = 0.5 * dot(nr, nr);
       // Nearer; or, where F no longer changes beyond its rounding, with a

@@ -39,7 +39,7 @@ class ConvexBound {
   ConvexBound() = default;  // none: bound() is never asked
   explicit ConvexBound(const PolynomialPatch& patch);
 
-  bool empty() const { return monomials_.empty(); }
+  bool empty() const { return grid_size_ == 0; }
 
   // What bound() needs of one sub-patch that does not depend on the query
   // point: its polynomial, the Bernstein coefficients of S and of its first
@@ -47,8 +47,7 @@ class ConvexBound {
   // of b.v over S's coefficients b. Made once per face patch (its control
   // points fixed) or per sub-patch.
   struct Prepared {
-    std::vector<Point> poly;             // per monomial
-    std::vector<Point> grid;             // the same at e + (degree + 1) f for X^e Y^f (zero where none)
+    std::vector<Point> grid;             // the coefficient of X^e Y^f at e + (degree + 1) f (zero where none)
     std::vector<Point> net;              // per order (S, S_X, S_Y, S_XX, S_XY, S_YY), per Bernstein coefficient
     // Per second-derivative coefficient; empty until certify() first needs
     // them, unless prepared with them (as a patch shared between threads must be).
@@ -96,10 +95,10 @@ class ConvexBound {
 
   bool triangle_ = false;
   int degree_ = 0;
-  std::vector<std::array<int, 2>> monomials_;
-  std::vector<SparseRow> coefficients_;  // per control point: (monomial, coefficient)
+  std::size_t grid_size_ = 0;            // (degree + 1)^2; 0: no bound
+  std::vector<SparseRow> coefficients_;  // per control point: (grid index, coefficient)
   // The Bernstein coefficients of each order over the frame, each a row of
-  // weights over the monomials' vector coefficients; where each order's start in Prepared::net.
+  // weights over Prepared::grid; where each order's start in Prepared::net.
   std::vector<SparseRow> bernstein_[kOrders];
   std::size_t offset_[kOrders + 1] = {};
 };

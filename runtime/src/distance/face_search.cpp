@@ -80,13 +80,29 @@ double FaceSearch::hull_bound(const SubPatch& s, const Point& q) {
   return bound;
 }
 
+const AffineEnclosure* FaceSearch::enclosure_of(int kind) const {
+  const std::size_t k = static_cast<std::size_t>(kind);
+  return k < enclosures_.size() && !enclosures_[k].empty() ? &enclosures_[k] : nullptr;
+}
+
+const ConvexBound* FaceSearch::convex_of(int kind) const {
+  const std::size_t k = static_cast<std::size_t>(kind);
+  return k < convex_.size() && !convex_[k].empty() ? &convex_[k] : nullptr;
+}
+
+const ConvexBound::Prepared* FaceSearch::prepared_root(std::size_t face) const {
+  return face < roots_.convex.size() && !roots_.convex[face].grid.empty() ? &roots_.convex[face] : nullptr;
+}
+
 double FaceSearch::lower_bound(const SubPatch& s, const Point& q) const {
-  const std::size_t kind = static_cast<std::size_t>(s.kind);
-  if (kind < enclosures_.size() && !enclosures_[kind].empty()) {
-    // Measured: the hull's bound adds nothing here but its cost.
-    return enclosures_[kind].lower_bound(s.points, q);
-  }
+  // Measured: the hull's bound adds nothing to the enclosure's but its cost.
+  if (const AffineEnclosure* enclosure = enclosure_of(s.kind)) return enclosure->lower_bound(s.points, q);
   return hull_bound(s, q);
+}
+
+void FaceSearch::improve(const SubPatch& s, const ConvexBound::Result& r, const Point& q, FaceHit& best) const {
+  const auto at = s.domain.at(r.X, r.Y);
+  improve(s, at[0], at[1], r.point, 0, q, best);
 }
 
 bool FaceSearch::consider(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const {
@@ -194,18 +210,15 @@ void FaceSearch::refine(const Point& q, FaceHit& best) const {
     return family_.derivatives(best.patch, x, y, d) && x == best.x && y == best.y && tangent_cosine(d, q) <= kOrthogonal;
   };
   if (stationary()) return;
-  const std::size_t kind = static_cast<std::size_t>(best.patch.kind);
-  if (kind < convex_.size() && !convex_[kind].empty()) {
+  if (const ConvexBound* convex = convex_of(best.patch.kind)) {
     // A polynomial sub-patch: Newton on it to its nearest point first (far
     // cheaper than the path below, which then has nothing left to do unless
     // the minimum lies over the sub-patch's border).
     ConvexBound::Prepared prepared;
-    convex_[kind].prepare(best.patch.points, prepared, false);
+    convex->prepare(best.patch.points, prepared, false);
     const auto l = best.patch.domain.local(best.x, best.y);
-    const ConvexBound::Result r = convex_[kind].polish(prepared, q, l[0], l[1]);
-    const auto at = best.patch.domain.at(r.X, r.Y);
-    const SubPatch s = best.patch;
-    improve(s, at[0], at[1], r.point, 0, q, best);
+    const SubPatch s = best.patch;  // improve() replaces best.patch
+    improve(s, convex->polish(prepared, q, l[0], l[1]), q, best);
     if (stationary()) return;
   }
   const auto holds = [](const SubPatch& k, double x, double y) { return k.domain.contains(x, y, 1e-14); };  // own coordinates round
@@ -331,28 +344,24 @@ void FaceSearch::push(double bound, int depth, SubPatch&& patch) {
 void FaceSearch::start(std::size_t face, double x, double y, const Point& q, FaceHit& best) const {
   SubPatch root;
   family_.root(face, prepared_.data(), root);
-  const std::size_t kind = static_cast<std::size_t>(root.kind);
-  if (face < roots_.convex.size() && !roots_.convex[face].poly.empty() && kind < convex_.size() && !convex_[kind].empty()) {
-    // A polynomial patch: Newton on its prepared polynomial.
+  const ConvexBound* convex = convex_of(root.kind);
+  const ConvexBound::Prepared* prepared = prepared_root(face);
+  if (convex && prepared) {  // a polynomial patch: Newton on its prepared polynomial
     const auto l = root.domain.local(x, y);
-    const ConvexBound::Result r = convex_[kind].polish(roots_.convex[face], q, l[0], l[1]);
-    const auto at = root.domain.at(r.X, r.Y);
-    improve(root, at[0], at[1], r.point, 0, q, best);
+    improve(root, convex->polish(*prepared, q, l[0], l[1]), q, best);
     return;
   }
   polish(root, x, y, q, best);
 }
 
 void FaceSearch::add(std::size_t face, const Point& q, const FaceHit& best) {
-  double bound = -INFINITY;
-  if (face < roots_.has_slab.size() && roots_.has_slab[face]) {  // the slab made once: the patch is gathered only when needed
-    const std::size_t kind = static_cast<std::size_t>(roots_.kinds[face]);
-    bound = enclosures_[kind].lower_bound(roots_.slabs[face], q);
-    if (!(bound < best.distance - tolerance_)) return;
-  }
+  // Where the face's slab was made once, the patch is gathered only when the slab does not rule it out.
+  const AffineEnclosure* enclosure = face < roots_.kinds.size() ? enclosure_of(roots_.kinds[face]) : nullptr;
+  const double slab_bound = enclosure ? enclosure->lower_bound(roots_.slabs[face], q) : 0.0;
+  if (enclosure && !(slab_bound < best.distance - tolerance_)) return;
   SubPatch root;
   family_.root(face, prepared_.data(), root);
-  if (bound == -INFINITY) bound = lower_bound(root, q);
+  const double bound = enclosure ? slab_bound : lower_bound(root, q);
   if (bound < best.distance - tolerance_) push(bound, 0, std::move(root));
 }
 
@@ -370,16 +379,13 @@ void FaceSearch::run(const Point& q, FaceHit& best) {
     Node node = std::move(open_.back());
     open_.pop_back();
     const SubPatch& s = node.patch;
-    const std::size_t kind = static_cast<std::size_t>(s.kind);
-    if (kind < convex_.size() && !convex_[kind].empty()) {
+    if (const ConvexBound* convex = convex_of(s.kind)) {
       // Newton's nearest point of the sub-patch; and where the squared
       // distance is convex over it, a bound that settles the whole sub-patch.
-      const ConvexBound::Prepared* prepared = &scratch_;
-      if (node.depth == 0 && s.face < roots_.convex.size() && !roots_.convex[s.face].poly.empty()) prepared = &roots_.convex[s.face];
-      else convex_[kind].prepare(s.points, scratch_, false);
-      const ConvexBound::Result r = convex_[kind].bound(*prepared, q, best.distance - tolerance_);
-      const auto at = s.domain.at(r.X, r.Y);
-      improve(s, at[0], at[1], r.point, 0, q, best);
+      const ConvexBound::Prepared* prepared = node.depth == 0 ? prepared_root(s.face) : nullptr;
+      if (!prepared) convex->prepare(s.points, scratch_, false), prepared = &scratch_;
+      const ConvexBound::Result r = convex->bound(*prepared, q, best.distance - tolerance_);
+      improve(s, r, q, best);
       if (r.bounded && r.lower >= best.distance - tolerance_) continue;
     } else {
       // The centre; where it is the nearest point so far, Gauss-Newton from there.

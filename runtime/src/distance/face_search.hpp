@@ -32,10 +32,9 @@ struct FaceHit {
 // set of control positions: the affine slab and the convexity bound's data
 // (empty where the face's kind has none).
 struct PreparedRoots {
-  std::vector<int> kinds;        // per prepared face: its patch's kind
-  std::vector<char> has_slab;
-  std::vector<AffineEnclosure::Slab> slabs;
-  std::vector<ConvexBound::Prepared> convex;
+  std::vector<int> kinds;                     // per prepared face: its patch's kind
+  std::vector<AffineEnclosure::Slab> slabs;   // made where the kind has an affine enclosure
+  std::vector<ConvexBound::Prepared> convex;  // made where the kind has a convexity bound
 };
 
 class FaceSearch {
@@ -79,6 +78,13 @@ class FaceSearch {
   void polish(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const;
   bool consider(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const;  // true when it improved best
   bool improve(const SubPatch& s, double x, double y, const Point& point, double bound, const Point& q, FaceHit& best) const;
+  // The same with a point the convexity bound's Newton found in `s`.
+  void improve(const SubPatch& s, const ConvexBound::Result& r, const Point& q, FaceHit& best) const;
+  // The enclosure and the convexity bound of a kind, and a face's prepared
+  // whole patch; null where there is none.
+  const AffineEnclosure* enclosure_of(int kind) const;
+  const ConvexBound* convex_of(int kind) const;
+  const ConvexBound::Prepared* prepared_root(std::size_t face) const;
   void push(double bound, int depth, SubPatch&& patch);
 
   const Family& family_;
