@@ -131,3 +131,84 @@ TEST_CASE("cos2pi is exact where it is rational and refused where it is not", "[
   REQUIRE(sg::evaluate_expression("cos2pi(1/4) + cos2pi(3/2) + cos2pi(-1/3)", {}) == Rational(-3, 2));
   REQUIRE_THROWS_WITH(sg::evaluate_expression("cos2pi(1/v)", v5), Catch::Contains("cos2pi(1/5)") && Catch::Contains("irrational"));
 }
+
+// The gradient solver (derivative stencils of the regular triangle patch).
+namespace {
+
+// phi at the grid point k / n of a solution on that grid.
+Rational value_at(const sg::BivariateSolution& s, long a, long b) { return s.at(a, b); }
+
+}  // namespace
+
+TEST_CASE("Loop's gradient equals the exact one-sided derivative of its quartic pieces at every grid point", "[triangle]") {
+  // Loop's regular basis is a quartic box spline on the three-direction mesh.
+  // From a point k/n, the segment [k/n, k/n + e/n] along e_a or e_b crosses no
+  // mesh line inside, so the 5 values at spacing h = 1/(4n) (exact, on the grid
+  // 4n) fix the quartic there and f'(0) = (-25 f0 + 48 f1 - 36 f2 + 16 f3 - 3 f4) / (12 h).
+  for (long n = 1; n <= 5; ++n) {
+    const sg::BivariateGradient g = sg::solve_bivariate_gradient(loop(), n);
+    const sg::BivariateSolution fine = sg::solve_bivariate(loop(), 4 * n);
+    long checked = 0;
+    for (long a = -3 * n; a <= 3 * n; ++a)
+      for (long b = -3 * n; b <= 3 * n; ++b)
+        for (int c = 0; c < 2; ++c) {
+          const long da = c == 0 ? 1 : 0, db = c == 1 ? 1 : 0;
+          Rational f[5];
+          for (long j = 0; j < 5; ++j) f[j] = value_at(fine, 4 * a + j * da, 4 * b + j * db);
+          const Rational expected = (-25 * f[0] + 48 * f[1] - 36 * f[2] + 16 * f[3] - 3 * f[4]) * Rational(4 * n, 12);
+          INFO("n = " << n << " (" << a << "," << b << ") along " << (c == 0 ? "a" : "b"));
+          REQUIRE(g.at(c == 0 ? g.da : g.db, a, b) == expected);
+          if (expected != 0) ++checked;
+        }
+    REQUIRE(checked >= 12 * n * n);  // the support was covered, not just zeros
+  }
+}
+
+TEST_CASE("sqrt(3)'s gradient is the limit of central differences of exact values at finer rates", "[triangle]") {
+  // sqrt(3)'s regular basis is not polynomial: the difference quotients with
+  // spacing h = 1/(k n) converge to the derivative as k grows.
+  const long n = 2;
+  const sg::BivariateGradient g = sg::solve_bivariate_gradient(sqrt3(), n);
+  double scale = 0;
+  for (const auto& [k, v] : g.da) scale = std::max(scale, std::abs(sg::to_double(v)));
+  REQUIRE(scale > 0.1);
+  std::vector<double> errors;
+  for (long k : {2L, 4L, 8L}) {
+    const sg::BivariateSolution fine = sg::solve_bivariate(sqrt3(), k * n);
+    double worst = 0;
+    for (long a = -3 * n; a <= 3 * n; ++a)
+      for (long b = -3 * n; b <= 3 * n; ++b)
+        for (int c = 0; c < 2; ++c) {
+          const long da = c == 0 ? 1 : 0, db = c == 1 ? 1 : 0;
+          const Rational quotient = (fine.at(k * a + da, k * b + db) - fine.at(k * a - da, k * b - db)) * Rational(k * n, 2);
+          worst = std::max(worst, std::abs(sg::to_double(quotient - g.at(c == 0 ? g.da : g.db, a, b))));
+        }
+    errors.push_back(worst);
+  }
+  INFO("errors at k = 2, 4, 8: " << errors[0] << " " << errors[1] << " " << errors[2]);
+  REQUIRE(errors[1] < errors[0] / 2.5);  // sqrt(3) is C2: about 1/4 per halving
+  REQUIRE(errors[2] < errors[1] / 2.5);
+  REQUIRE(errors[2] < 0.01 * scale);
+}
+
+TEST_CASE("the gradient satisfies its scaling relation and has the lattice's symmetries", "[triangle]") {
+  for (const auto* mask : {&loop(), &sqrt3()})
+    for (long n : {1L, 3L, 4L}) {
+      const sg::BivariateGradient g = sg::solve_bivariate_gradient(*mask, n);
+      const long m = mask->dilation;
+      for (const auto* partial : {&g.da, &g.db})
+        for (const auto& [k, v] : *partial) {
+          Rational rhs = 0;
+          for (const auto& [i, c] : mask->coefficients)
+            rhs += c * g.at(*partial, m * k.first - n * i.first, m * k.second - n * i.second);
+          INFO("m = " << m << " n = " << n << " k = (" << k.first << "," << k.second << ")");
+          REQUIRE(v == m * rhs);
+        }
+      // The reflection (a, b) -> (b, a) swaps the partials; the point reflection negates them.
+      for (const auto& [k, v] : g.da) {
+        INFO("m = " << m << " n = " << n << " (" << k.first << "," << k.second << ")");
+        REQUIRE(g.at(g.db, k.second, k.first) == v);
+        REQUIRE(g.at(g.da, -k.first, -k.second) == -v);
+      }
+    }
+}

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <functional>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "algebra/exact_linear_system.hpp"
@@ -64,9 +66,14 @@ std::vector<Rational> matrix_times(const SparseMatrix& a, const std::vector<Rati
   return out;
 }
 
-}  // namespace
+// The normalisation of one residue cycle: equations over the members of the
+// cycle's first class (added to the system that already holds the eigen-equations).
+using CycleNormalisation = std::function<void(ExactLinearSystem&, const std::vector<LatticeIndex>& members)>;
 
-BivariateSolution solve_bivariate(const BivariateMask& mask, long n) {
+// f(k/n) = factor * sum_i s_i f((m k - n i)/n) on the grid points of the open
+// support hull, solved class by class (see the header); `what` names f in errors.
+std::map<LatticeIndex, Rational> solve_by_classes(const BivariateMask& mask, long n, const Rational& factor,
+                                                  const CycleNormalisation& normalise, const std::string& what) {
   if (n < 1) throw Error("rate must be at least 1, got " + std::to_string(n));
   const long m = mask.dilation;
   if (m < 2) throw Error("dilation must be at least 2");
@@ -116,7 +123,7 @@ BivariateSolution solve_bivariate(const BivariateMask& mask, long n) {
       const auto [a, b] = members[r][row];
       for (const auto& [i, s] : mask.coefficients) {
         const std::size_t col = slot(m * a - n * i.first, m * b - n * i.second);
-        if (col != kNone) A[row].emplace_back(col, s);
+        if (col != kNone) A[row].emplace_back(col, factor * s);
       }
     }
     return A;
@@ -156,13 +163,11 @@ BivariateSolution solve_bivariate(const BivariateMask& mask, long n) {
         }
         system.add_equation(eq, 0);
       }
-      std::vector<std::pair<std::size_t, Rational>> unity;
-      for (std::size_t col = 0; col < size; ++col) unity.emplace_back(col, Rational(1));
-      system.add_equation(unity, 1);
+      normalise(system, members[cycle[0]]);
       const LinearSolution sol = system.solve();
       if (sol.status != LinearSolution::Status::Unique)
-        throw Error("n = " + std::to_string(n) + ": the residue cycle of length " + std::to_string(cycle.size()) +
-                    " has " + sol.describe());
+        throw Error("n = " + std::to_string(n) + ": " + what + " on the residue cycle of length " +
+                    std::to_string(cycle.size()) + " has " + sol.describe());
       value[cycle[0]] = sol.values;
       known[cycle[0]] = 1;
       // Backwards around the cycle: v_{c[k]} = A_{c[k]} v_{c[k+1]}.
@@ -182,11 +187,49 @@ BivariateSolution solve_bivariate(const BivariateMask& mask, long n) {
     value[r] = matrix_times(transfer_rows(r), value[t]);
     known[r] = 1;
   };
-  BivariateSolution out;
-  out.n = n;
+  std::map<LatticeIndex, Rational> out;
   for (std::size_t r = 0; r < classes; ++r) {
     resolve(r);
-    for (std::size_t k = 0; k < members[r].size(); ++k) out.values[members[r][k]] = value[r][k];
+    for (std::size_t k = 0; k < members[r].size(); ++k) out[members[r][k]] = value[r][k];
+  }
+  return out;
+}
+
+}  // namespace
+
+BivariateSolution solve_bivariate(const BivariateMask& mask, long n) {
+  // Partition of unity on every class: sum_k phi(k/n) = 1.
+  const CycleNormalisation unity = [](ExactLinearSystem& system, const std::vector<LatticeIndex>& members) {
+    std::vector<std::pair<std::size_t, Rational>> eq;
+    for (std::size_t col = 0; col < members.size(); ++col) eq.emplace_back(col, Rational(1));
+    system.add_equation(eq, 1);
+  };
+  BivariateSolution out;
+  out.n = n;
+  out.values = solve_by_classes(mask, n, Rational(1), unity, "the scaling function");
+  return out;
+}
+
+BivariateGradient solve_bivariate_gradient(const BivariateMask& mask, long n) {
+  BivariateGradient out;
+  out.n = n;
+  for (int c = 0; c < 2; ++c) {
+    // Differentiating the reproduction of constants and of linear functions,
+    // sum_i phi(x - i) = 1 and sum_i phi(x - i) i = x + const, at x = r/n gives
+    // on the class of r: sum_k g(k) = 0 and sum_k g(k) k_d = -n [d == c].
+    const CycleNormalisation linear = [c, n](ExactLinearSystem& system, const std::vector<LatticeIndex>& members) {
+      std::vector<std::pair<std::size_t, Rational>> constant, first, second;
+      for (std::size_t col = 0; col < members.size(); ++col) {
+        constant.emplace_back(col, Rational(1));
+        if (members[col].first != 0) first.emplace_back(col, Rational(members[col].first));
+        if (members[col].second != 0) second.emplace_back(col, Rational(members[col].second));
+      }
+      system.add_equation(constant, 0);
+      system.add_equation(first, c == 0 ? Rational(-n) : Rational(0));
+      system.add_equation(second, c == 1 ? Rational(-n) : Rational(0));
+    };
+    (c == 0 ? out.da : out.db) = solve_by_classes(mask, n, Rational(mask.dilation), linear,
+                                                  c == 0 ? "the derivative along a" : "the derivative along b");
   }
   return out;
 }

@@ -32,4 +32,21 @@ struct BivariateSolution {
 // Throws sg::Error when a cycle's system has no unique solution.
 BivariateSolution solve_bivariate(const BivariateMask& mask, long n);
 
+// The gradient of phi on the same grid, in the lattice's own coordinates (a, b):
+// where phi is C1, each partial satisfies the relation with the factor m,
+// g(x) = m sum_i s_i g(m x - i), so the same classes solve it with the
+// eigenvalue m^-L on a cycle of length L; each cycle is fixed by differentiating
+// the reproduction of linear functions (the scheme must reproduce them).
+// Throws sg::Error when a cycle has no unique solution (phi not C1, or no
+// linear reproduction).
+struct BivariateGradient {
+  long n = 1;
+  std::map<LatticeIndex, Rational> da, db;  // d phi / da and d phi / db at k / n
+  Rational at(const std::map<LatticeIndex, Rational>& partial, long a, long b) const {
+    const auto it = partial.find({a, b});
+    return it == partial.end() ? Rational(0) : it->second;
+  }
+};
+BivariateGradient solve_bivariate_gradient(const BivariateMask& mask, long n);
+
 }  // namespace sg
