@@ -21,7 +21,11 @@ TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const st
   set.rates = rates;
   set.valences = valences;
   std::vector<BivariateSolution> regular(rates.size());
-  tbb::parallel_for(std::size_t(0), rates.size(), [&](std::size_t r) { regular[r] = solve_regular(scheme, 3 * rates[r]); });
+  std::vector<BivariateGradient> gradient(rates.size());
+  tbb::parallel_for(std::size_t(0), rates.size(), [&](std::size_t r) {
+    regular[r] = solve_regular(scheme, 3 * rates[r]);
+    gradient[r] = solve_regular_gradient(scheme, 3 * rates[r]);
+  });
 
   set.tables.assign(valences.size(), std::vector<TriangleTable>(rates.size()));
   const auto jobs = valence_rate_jobs(valences, rates);
@@ -32,7 +36,7 @@ TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const st
     const auto [vi, r] = jobs[k];
     const int v = valences[vi];
     const long n = rates[r];
-    TriangleTable table = solve_triangle_table(scheme, v, n, regular[r]);
+    TriangleTable table = solve_triangle_table(scheme, v, n, regular[r], v == 6 ? &gradient[r] : nullptr);
     if (!table.exact && !(table.residual < Real("1e-60")))
       throw Error("scheme '" + scheme.name + "', valence " + std::to_string(v) + ", n = " + std::to_string(n) +
                   ": the high-precision residual " + to_string(table.residual, 3) + " is too large");

@@ -89,12 +89,24 @@ const SparseRow<T>& TrianglePatch<T>::at(int region, long i, long j) const {
   return it->second;
 }
 
-BivariateSolution solve_regular(const TriangleScheme& scheme, long g) {
+namespace {
+BivariateMask regular_mask(const TriangleScheme& scheme) {
   const Rational w = *scheme.exact_neighbour_weight(6);
-  const BivariateMask mask = scheme.refinement == TriangleRefinement::Loop
-                                 ? loop_regular_mask(scheme.edge_end, scheme.edge_opposite, 1 - 6 * w, w)
-                                 : sqrt3_composite_mask(6 * w);
-  return solve_bivariate(mask, g);
+  return scheme.refinement == TriangleRefinement::Loop
+             ? loop_regular_mask(scheme.edge_end, scheme.edge_opposite, 1 - 6 * w, w)
+             : sqrt3_composite_mask(6 * w);
+}
+}  // namespace
+
+BivariateSolution solve_regular(const TriangleScheme& scheme, long g) { return solve_bivariate(regular_mask(scheme), g); }
+
+BivariateGradient solve_regular_gradient(const TriangleScheme& scheme, long g) {
+  try {
+    return solve_bivariate_gradient(regular_mask(scheme), g);
+  } catch (const Error& e) {
+    throw Error("scheme '" + scheme.name + "': the regular patch has no derivative stencils (is it C1, and does it "
+                "reproduce linear functions?): " + e.what());
+  }
 }
 
 template <>
@@ -112,7 +124,7 @@ TriangleWeights<Real> triangle_weights(const TriangleScheme& s, int valence) {
 
 template <class T>
 TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence, long g, const BivariateSolution& regular,
-                                      const std::vector<std::array<long, 3>>& band) {
+                                      const std::vector<std::array<long, 3>>& band, const BivariateGradient* gradient) {
   if (g < 1) throw Error("grid must be at least 1");
   if (regular.n != g) throw Error("internal: the regular solution is on the grid " + std::to_string(regular.n));
   const std::string context = where(scheme, valence);
@@ -167,8 +179,11 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
       }
     return collect();
   };
-  // The regular stencil at y = (ya, yb)/g (sector 0's frame, refined lattice).
-  auto regular_stencil = [&](long ya, long yb) {
+  // The regular stencil at y = (ya, yb)/g (sector 0's frame, refined lattice),
+  // of phi or (derivative stencils) of a function with phi's support.
+  // max_turns: how far round the chart a point may lie (2 for the recursion's
+  // regular children; the whole lattice for the regular patch itself).
+  auto regular_stencil_of = [&](const std::map<LatticeIndex, T>& phi, long ya, long yb, int max_turns) {
     for (long pa = ceil_div(ya - hi_a, g); pa <= floor_div(ya - lo_a, g); ++pa)
       for (long pb = ceil_div(yb - hi_b, g); pb <= floor_div(yb - lo_b, g); ++pb) {
         const auto it = phi.find({ya - g * pa, yb - g * pb});
@@ -176,7 +191,7 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
         // A regular child reaches at most two sectors round (at y = e_1, its
         // neighbour e_2); the comparisons with OpenSubdiv and with plain
         // subdivision check that the points found are the right ones.
-        const auto id = chart.index(0, pa, pb, 2);
+        const auto id = chart.index(0, pa, pb, max_turns);
         if (!id)
           throw Error("internal: " + context + ": the regular child at (" + std::to_string(ya) + "," +
                       std::to_string(yb) + ")/" + std::to_string(g) + " needs the point (" + std::to_string(pa) + "," +
@@ -185,6 +200,7 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
       }
     return collect();
   };
+  auto regular_stencil = [&](long ya, long yb) { return regular_stencil_of(phi, ya, yb, 2); };
 
   // W at the wedge point Y / g of sector 0 (0 <= Y.b <= Y.a): W(Y) = F(m Y) A,
   // F = W again while m Y stays within the irregular radius, the regular
@@ -227,6 +243,35 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
     solve(solve, ya, yb);
   }
 
+  if (gradient && valence == 6) {
+    if (gradient->n != g) throw Error("internal: the regular gradient is on the grid " + std::to_string(gradient->n));
+    // The partials have phi's support (phi is C1: both vanish on its border).
+    std::map<LatticeIndex, T> along_u, along_v;
+    auto convert = [](const Rational& x) {
+      if constexpr (std::is_same_v<T, Rational>) return x;
+      else return to_real(x);
+    };
+    for (const auto& [k, x] : gradient->da) {
+      if (x != 0) along_u.emplace(k, convert(x));
+      if (x + gradient->at(gradient->db, k.first, k.second) != 0)
+        along_v.emplace(k, convert(x + gradient->at(gradient->db, k.first, k.second)));
+    }
+    for (const auto& [k, x] : gradient->db)
+      if (x != 0 && !gradient->da.count(k)) along_v.emplace(k, convert(x));
+    for (const auto& partial : {&along_u, &along_v})
+      for (const auto& [k, x] : *partial)
+        if (k.first < lo_a || k.first > hi_a || k.second < lo_b || k.second > hi_b)
+          throw Error("internal: " + context + ": the regular gradient reaches beyond phi's support");
+    out.du.resize(out.stencils.size());
+    out.dv.resize(out.stencils.size());
+    for (long j = 0; j <= g; ++j)
+      for (long i = 0; i + j <= g; ++i) {
+        const auto at = static_cast<std::size_t>(j * (g + 1) + i);
+        out.du[at] = regular_stencil_of(along_u, i + j, j, 3);
+        out.dv[at] = regular_stencil_of(along_v, i + j, j, 3);
+      }
+  }
+
   // Residuals (exact arithmetic must give zero).
   {
     const SparseRow<T>& w0 = out.at(0, 0);
@@ -252,8 +297,8 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
 template struct TrianglePatch<Rational>;
 template struct TrianglePatch<Real>;
 template TrianglePatch<Rational> solve_triangle_patch(const TriangleScheme&, int, long, const BivariateSolution&,
-                                                      const std::vector<std::array<long, 3>>&);
+                                                      const std::vector<std::array<long, 3>>&, const BivariateGradient*);
 template TrianglePatch<Real> solve_triangle_patch(const TriangleScheme&, int, long, const BivariateSolution&,
-                                                  const std::vector<std::array<long, 3>>&);
+                                                  const std::vector<std::array<long, 3>>&, const BivariateGradient*);
 
 }  // namespace sg

@@ -42,6 +42,9 @@ struct TrianglePatch {
   // Wedge points beyond the patch (1/g units, a > g): those the recursion
   // passed through and the band points asked for.
   std::map<LatticeIndex, SparseRow<T>> beyond;
+  // The regular patch only (valence 6, given its basis's gradient): d/du and
+  // d/dv stencils at every grid point, indexed as `stencils`; empty otherwise.
+  std::vector<SparseRow<T>> du, dv;
   T eigen_residual = 0;                  // max |W(0) A - W(0)| (zero when exact)
   T unity_residual = 0;                  // max |sum W(x) - 1| over the grid (zero when exact)
   const SparseRow<T>& at(long i, long j) const { return stencils[static_cast<std::size_t>(j * (grid + 1) + i)]; }
@@ -65,6 +68,8 @@ long irregular_radius(const TriangleScheme& scheme);
 
 // The regular scaling function on (1/g)Z^2 (rational: valence 6 is).
 BivariateSolution solve_regular(const TriangleScheme& scheme, long g);
+// Its gradient there (bivariate_solver.hpp).
+BivariateGradient solve_regular_gradient(const TriangleScheme& scheme, long g);
 
 // The weights of one valence in T; for Rational, throws sg::Error when the
 // scheme's weights are irrational there.
@@ -72,9 +77,13 @@ template <class T>
 TriangleWeights<T> triangle_weights(const TriangleScheme& scheme, int valence);
 
 // Solves every grid point of region 0 and, besides, the band points (region,
-// i, j) listed in `band` (regions 1..3; patch_regions must allow them).
+// i, j) listed in `band` (regions 1..3; patch_regions must allow them). With
+// `gradient` (the regular basis's partials on the grid g) at valence 6, also
+// the derivative stencils du and dv: the patch point (u, v) lies at
+// (a, b) = (u + v, v) of the lattice, so d/du = d/da and d/dv = d/da + d/db.
 template <class T>
 TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence, long g, const BivariateSolution& regular,
-                                      const std::vector<std::array<long, 3>>& band = {});
+                                      const std::vector<std::array<long, 3>>& band = {},
+                                      const BivariateGradient* gradient = nullptr);
 
 }  // namespace sg

@@ -32,6 +32,9 @@ TriangleTable make_triangle_table(const TriangleScheme& scheme, const TrianglePa
   t.n = n;
   t.exact = std::is_same_v<T, Rational>;
   if constexpr (std::is_same_v<T, Real>) t.residual = std::max(patch.eigen_residual, patch.unity_residual);
+  t.derivatives = !patch.du.empty();
+  if constexpr (std::is_same_v<T, Real>)
+    if (t.derivatives) throw Error("internal: derivative stencils are written for the regular (rational) patch only");
   if (scheme.refinement == TriangleRefinement::Loop) {
     t.rules.edge_end = to_string(scheme.edge_end);
     t.rules.edge_opposite = to_string(scheme.edge_opposite);
@@ -57,8 +60,14 @@ TriangleTable make_triangle_table(const TriangleScheme& scheme, const TrianglePa
     TriangleTable::Region region;
     region.index = r;
     std::set<std::size_t> used;
+    const bool derivatives = r == 0 && t.derivatives;
     auto scan = [&](long gi, long gj) {
       for (const auto& [h, w] : patch.at(r, gi, gj)) used.insert(h);
+      if (derivatives) {
+        const auto at = static_cast<std::size_t>(gj * (patch.grid + 1) + gi);
+        for (const auto& [h, w] : patch.du[at]) used.insert(h);
+        for (const auto& [h, w] : patch.dv[at]) used.insert(h);
+      }
     };
     for (auto [i, j] : node_at) scan(3 * i, 3 * j);
     for (auto [i, j] : up_at) scan(3 * i + 1, 3 * j + 1);
@@ -66,14 +75,25 @@ TriangleTable make_triangle_table(const TriangleScheme& scheme, const TrianglePa
     const std::vector<std::size_t> ids(used.begin(), used.end());
     for (std::size_t h : ids) region.layout.push_back(patch.chart.point(h));
 
+    auto pick = [&](const SparseRow<T>& row) {
+      std::vector<T> picked(ids.size());
+      for (const auto& [h, w] : row) picked[static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), h) - ids.begin())] = w;
+      return picked;
+    };
     auto entry = [&](long i, long j, long gi, long gj) {
       TriangleTable::Entry e;
       e.i = i, e.j = j;
-      std::vector<T> picked(ids.size());
-      for (const auto& [h, w] : patch.at(r, gi, gj))
-        picked[static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), h) - ids.begin())] = w;
-      if constexpr (std::is_same_v<T, Rational>) e.exact = scaled_from_rationals(picked);
-      else e.approx = std::move(picked);
+      std::vector<T> picked = pick(patch.at(r, gi, gj));
+      if constexpr (std::is_same_v<T, Rational>) {
+        e.exact = scaled_from_rationals(picked);
+        if (derivatives) {
+          const auto at = static_cast<std::size_t>(gj * (patch.grid + 1) + gi);
+          e.du = scaled_from_rationals(pick(patch.du[at]));
+          e.dv = scaled_from_rationals(pick(patch.dv[at]));
+        }
+      } else {
+        e.approx = std::move(picked);
+      }
       return e;
     };
     for (auto [i, j] : node_at) region.nodes.push_back(entry(i, j, 3 * i, 3 * j));
@@ -87,7 +107,8 @@ TriangleTable make_triangle_table(const TriangleScheme& scheme, const TrianglePa
 template TriangleTable make_triangle_table(const TriangleScheme&, const TrianglePatch<Rational>&, long);
 template TriangleTable make_triangle_table(const TriangleScheme&, const TrianglePatch<Real>&, long);
 
-TriangleTable solve_triangle_table(const TriangleScheme& scheme, int valence, long n, const BivariateSolution& regular) {
+TriangleTable solve_triangle_table(const TriangleScheme& scheme, int valence, long n, const BivariateSolution& regular,
+                                   const BivariateGradient* gradient) {
   // The band points the table samples: nodes and centres of regions 1.. on the grid 3n.
   std::vector<std::array<long, 3>> band;
   for (long r = 1; r < patch_regions(scheme, valence); ++r)
@@ -95,7 +116,7 @@ TriangleTable solve_triangle_table(const TriangleScheme& scheme, int valence, lo
       for (long i = 0; i + j <= 3 * n; ++i)
         if (i % 3 == j % 3) band.push_back({r, i, j});
   return scheme.exact_neighbour_weight(valence)
-             ? make_triangle_table(scheme, solve_triangle_patch<Rational>(scheme, valence, 3 * n, regular, band), n)
+             ? make_triangle_table(scheme, solve_triangle_patch<Rational>(scheme, valence, 3 * n, regular, band, gradient), n)
              : make_triangle_table(scheme, solve_triangle_patch<Real>(scheme, valence, 3 * n, regular, band), n);
 }
 
@@ -111,6 +132,12 @@ void append_entries(std::string& out, const std::string& indent, const char* key
     ojson j;
     if (t.exact) {
       j = exact_entry_json(e.exact, x, y);
+      if (t.derivatives)
+        for (const auto& [name, d] : {std::pair{"du", &e.du}, std::pair{"dv", &e.dv}}) {
+          ojson nums = ojson::array();
+          for (const auto& v : d->num) nums.push_back(v.str());
+          j[name] = {{"denominator", d->den.str()}, {"numerators", nums}};
+        }
     } else {
       j["at"] = {to_string(x), to_string(y)};
       ojson w = ojson::array();
@@ -158,6 +185,10 @@ std::string triangle_table_to_json(const TriangleTable& t) {
   head["layout_meaning"] =
       "each control point is [sector k, a, b]: the vertex a (1,0) + b (1,1) in sector k's frame (e_k = (1,0), "
       "e_{k+1} = (1,1), a >= 1, 0 <= b < a; [0,0,0] is the extraordinary vertex)";
+  if (t.derivatives)
+    head["derivatives_meaning"] =
+        "du and dv: the derivatives of the limit point along the patch's u and v, sum of numerators[h] * P[layout[h]] / "
+        "denominator, exact (the regular basis's gradient, solved by its scaling relation)";
   if (t.regions.size() > 1)
     head["band_meaning"] =
         "the triangles of the EV's second ring, where its vertex rule still reaches (sqrt(3)): in sector 0's frame, "

@@ -24,6 +24,7 @@ struct TriangleTable {
     long i = 0, j = 0;
     ScaledVector exact;        // when the table is exact
     std::vector<Real> approx;  // otherwise
+    ScaledVector du, dv;       // the regular table's derivative stencils (when `derivatives`), exact
   };
   std::string scheme, scheme_hash, refinement;
   Bindings parameters;
@@ -31,6 +32,7 @@ struct TriangleTable {
   long n = 1;
   bool exact = true;
   Real residual = 0;  // max of the eigenvector and partition-of-unity residuals
+  bool derivatives = false;  // the regular table (valence 6): entries carry d/du and d/dv stencils
   struct Region {
     int index = 0;  // 0: the patch; 1..3: the band (triangle_patch.hpp)
     std::vector<SectorPoint> layout;
@@ -52,12 +54,15 @@ template <class T>
 TriangleTable make_triangle_table(const TriangleScheme& scheme, const TrianglePatch<T>& patch, long n);
 
 // The table of one valence and rate, solved exactly where the scheme's weights
-// are rational at the valence and in high precision otherwise.
-TriangleTable solve_triangle_table(const TriangleScheme& scheme, int valence, long n, const BivariateSolution& regular);
+// are rational at the valence and in high precision otherwise. With
+// `gradient` (the regular basis's partials on the grid 3n), the regular
+// table (valence 6) also holds derivative stencils.
+TriangleTable solve_triangle_table(const TriangleScheme& scheme, int valence, long n, const BivariateSolution& regular,
+                                   const BivariateGradient* gradient = nullptr);
 
 std::string triangle_table_to_json(const TriangleTable& table);
 
 inline constexpr const char* kTriangleTableFormat = "stencilgen-triangle-table";
-inline constexpr int kTriangleTableVersion = 2;  // 2: band regions
+inline constexpr int kTriangleTableVersion = 3;  // 2: band regions; 3: du, dv in the regular table
 
 }  // namespace sg

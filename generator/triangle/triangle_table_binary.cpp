@@ -28,6 +28,17 @@ std::vector<double> weights_over(const TriangleTable& t, const TriangleTable::Re
   return w;
 }
 
+// An exact stencil (a derivative's) over the region's layout.
+std::vector<double> exact_over(const TriangleTable::Region& region, const ScaledVector& e,
+                               const std::map<std::tuple<int, long, long>, std::size_t>& position, std::size_t size) {
+  std::vector<double> w(size, 0.0);
+  for (std::size_t h = 0; h < region.layout.size(); ++h) {
+    const SectorPoint& p = region.layout[h];
+    w[position.at({p.sector, p.a, p.b})] = to_double(Rational(e.num[h], e.den));
+  }
+  return w;
+}
+
 // The union of the rates' layouts of each valence and region, in chart order
 // (ring a, then sector, then b), with the points the children need besides.
 TriangleLayouts union_layouts(const TriangleScheme& scheme, const TriangleTableSet& set) {
@@ -85,6 +96,15 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
   put<std::uint32_t>(out, static_cast<std::uint32_t>(set.rates.size()));
   for (long n : set.rates) put<std::uint32_t>(out, static_cast<std::uint32_t>(n));
   put<std::uint32_t>(out, static_cast<std::uint32_t>(set.valences.size()));
+  // Version 6: the regular patch's derivative stencils, parallel to its
+  // stencils, where its basis is not a polynomial (sqrt(3)); Loop's polynomial serves.
+  const std::vector<SectorPoint>* regular_layout = nullptr;
+  for (const auto& [v, regions] : layouts)
+    if (v == 6) regular_layout = &regions.front();
+  if (!regular_layout) throw Error("internal: the tables hold no regular patch (valence 6)");
+  const RegularPolynomial poly = regular_polynomial(scheme, *regular_layout);
+  const bool regular_derivatives = poly.degree == 0;
+  std::vector<std::vector<double>> regular_du, regular_dv;
   for (std::size_t vi = 0; vi < set.valences.size(); ++vi) {
     const auto& tables = set.tables[vi];
     const int v = set.valences[vi];
@@ -119,7 +139,14 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
         auto intern = [&](const TriangleTable::Entry& e, long offset) {
           const Key key{reduced_fraction(3 * e.i + offset, 3 * t.n), reduced_fraction(3 * e.j + offset, 3 * t.n)};
           auto [it, fresh] = slot.emplace(key, static_cast<std::uint32_t>(stencils.size()));
-          if (fresh) stencils.push_back(weights_over(t, region, e, position, position.size()));
+          if (fresh) {
+            stencils.push_back(weights_over(t, region, e, position, position.size()));
+            if (v == 6 && g == 0 && regular_derivatives) {
+              if (!t.derivatives) throw Error("internal: the regular table of rate " + std::to_string(t.n) + " has no derivatives");
+              regular_du.push_back(exact_over(region, e.du, position, position.size()));
+              regular_dv.push_back(exact_over(region, e.dv, position, position.size()));
+            }
+          }
           index[r].push_back(it->second);
         };
         for (const auto& e : region.nodes) intern(e, 0);
@@ -148,13 +175,16 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
     }
   }
   // The regular patch's polynomial basis, where it is one (Loop).
-  for (const auto& [v, regions] : layouts)
-    if (v == 6) {
-      const RegularPolynomial poly = regular_polynomial(scheme, regions.front());
-      put<std::uint32_t>(out, static_cast<std::uint32_t>(poly.degree));
-      for (const auto& point : poly.coefficients)
-        for (double c : point) put<double>(out, c);
-    }
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(poly.degree));
+  for (const auto& point : poly.coefficients)
+    for (double c : point) put<double>(out, c);
+  put<std::uint8_t>(out, regular_derivatives ? 1 : 0);
+  if (regular_derivatives) {
+    if (regular_du.empty()) throw Error("internal: the tables hold no regular patch (valence 6)");
+    for (const auto* d : {&regular_du, &regular_dv})
+      for (const auto& w : *d)
+        for (double x : w) put_scalar(out, x, precision);
+  }
   put<std::uint64_t>(out, fmt::fnv1a64(reinterpret_cast<const unsigned char*>(out.data()), out.size()));
   return out;
 }

@@ -11,7 +11,9 @@ TriangleTableCheck verify_triangle_table(const TableDocument& table, const std::
   const int v = static_cast<int>(r.integer(r.require(table.doc, "valence", ""), "valence", scheme.min_valence, scheme.max_valence));
   const long n = r.integer(r.require(table.doc, "n", ""), "n", 1, limits::kMaxSurfaceRate);
   TriangleTableCheck check;
-  check.fresh = solve_triangle_table(scheme, v, n, solve_regular(scheme, 3 * n));
+  // The regular table (valence 6) carries the derivative stencils (version 3).
+  const BivariateGradient gradient = v == 6 ? solve_regular_gradient(scheme, 3 * n) : BivariateGradient{};
+  check.fresh = solve_triangle_table(scheme, v, n, solve_regular(scheme, 3 * n), v == 6 ? &gradient : nullptr);
   check.same = triangle_table_to_json(check.fresh) == text;
   return check;
 }

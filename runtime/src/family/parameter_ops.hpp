@@ -53,10 +53,32 @@ inline Dual scale_minus(const Dual& x, std::int64_t k, std::int64_t c) {
 }
 inline Dual from(std::int64_t c, const Dual& x) { return subtract(Dual{static_cast<double>(c), 0, 0}, x); }
 
+// The same with an exact value: a descent that must end at a parameter the
+// tables hold (sqrt(3)'s derivative stencils) finds it exactly.
+struct ExactDual {
+  Fraction value;
+  double du = 0, dv = 0;
+};
+inline double to_real(const ExactDual& x) { return x.value.to_double(); }
+inline ExactDual add(const ExactDual& a, const ExactDual& b) { return {add(a.value, b.value), a.du + b.du, a.dv + b.dv}; }
+inline ExactDual subtract(const ExactDual& a, const ExactDual& b) {
+  return {subtract(a.value, b.value), a.du - b.du, a.dv - b.dv};
+}
+inline ExactDual multiply(const ExactDual& a, std::int64_t k) {
+  const double f = static_cast<double>(k);
+  return {multiply(a.value, k), a.du * f, a.dv * f};
+}
+inline int compare(const ExactDual& a, const ExactDual& b) { return compare(a.value, b.value); }
+inline ExactDual scale_minus(const ExactDual& x, std::int64_t k, std::int64_t c) {
+  return subtract(multiply(x, k), ExactDual{Fraction{c, 1}, 0, 0});
+}
+inline ExactDual from(std::int64_t c, const ExactDual& x) { return subtract(ExactDual{Fraction{c, 1}, 0, 0}, x); }
+
 template <class P>
 P integer(std::int64_t c) {
   if constexpr (std::is_same_v<P, Fraction>) return Fraction{c, 1};
   else if constexpr (std::is_same_v<P, Dual>) return Dual{static_cast<double>(c), 0, 0};
+  else if constexpr (std::is_same_v<P, ExactDual>) return ExactDual{Fraction{c, 1}, 0, 0};
   else return static_cast<double>(c);
 }
 

@@ -173,6 +173,23 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
       c = r.get<double>();
       if (!std::isfinite(c)) r.fail("a regular polynomial coefficient is not finite");
     }
+    if (version >= 6) {  // the regular patch's derivative stencils, parallel to its weights
+      const auto flag = r.get<std::uint8_t>();
+      if (flag > 1 || (flag == 1) != (t.degree_ == 0))
+        r.fail("invalid regular derivative flag (derivative stencils go with a regular patch that is not a polynomial)");
+      if (flag == 1) {
+        Region& region = t.valences_[static_cast<std::size_t>(regular - t.valences_.data())].regions[0];
+        const std::size_t count = region.weights.size();
+        if (count > left() / scalar / 2) r.fail("truncated regular derivative stencils");
+        for (auto* d : {&region.du, &region.dv}) {
+          d->resize(count);
+          for (double& x : *d) {
+            x = scalar == 8 ? r.get<double>() : static_cast<double>(r.get<float>());
+            if (!std::isfinite(x)) r.fail("a regular derivative weight is not finite");
+          }
+        }
+      }
+    }
     // Every child's kind is a patch the tables hold, and its rows cover the kind's layout.
     for (const Valence& v : t.valences_)
       for (std::size_t g = 0; g < v.regions.size(); ++g)
@@ -257,16 +274,26 @@ TriangleTables::Grid TriangleTables::grid(int valence, int n, int region) const 
   g.points_ = v.layout.size();
   g.index_ = v.index[static_cast<std::size_t>(slot)].data();
   g.n_ = n;
+  if (!v.du.empty()) g.du_ = v.du.data(), g.dv_ = v.dv.data();
   return g;
 }
 
-const double* TriangleTables::Grid::weights(GridPoint kind, long i, long j) const {
+std::size_t TriangleTables::Grid::offset(GridPoint kind, long i, long j) const {
   // Row j of each kind holds (n + 1 - kind) - j points; rows are j-major.
   const long k = static_cast<long>(kind), side = n_ + 1 - k;  // points in row 0
   if (i < 0 || j < 0 || i + j >= side) throw EvaluationError("grid index outside the patch triangle");
   const std::size_t before = kind == GridPoint::Node ? 0 : kind == GridPoint::Up ? nodes_of(n_) : nodes_of(n_) + ups_of(n_);
   const std::size_t row = static_cast<std::size_t>(j * side - j * (j - 1) / 2);
-  return weights_ + static_cast<std::size_t>(index_[before + row + static_cast<std::size_t>(i)]) * points_;
+  return static_cast<std::size_t>(index_[before + row + static_cast<std::size_t>(i)]) * points_;
+}
+
+const double* TriangleTables::Grid::weights(GridPoint kind, long i, long j) const { return weights_ + offset(kind, i, j); }
+
+bool TriangleTables::Grid::derivative_weights(GridPoint kind, long i, long j, const double*& du, const double*& dv) const {
+  if (!du_) return false;
+  const std::size_t at = offset(kind, i, j);
+  du = du_ + at, dv = dv_ + at;
+  return true;
 }
 
 const double* TriangleTables::node_weights(int valence, int n, int i, int j) const { return grid(valence, n).weights(GridPoint::Node, i, j); }

@@ -106,10 +106,17 @@ class TriangleTables {
    public:
     // Throws EvaluationError for an index outside the patch triangle.
     const double* weights(GridPoint kind, long i, long j) const;
+    // The derivative stencils along the patch's u and v at the same point:
+    // false where the tables hold none (every patch but the regular one of a
+    // scheme whose regular basis is not a polynomial, sqrt(3); version 6).
+    bool derivative_weights(GridPoint kind, long i, long j, const double*& du, const double*& dv) const;
 
    private:
     friend class TriangleTables;
+    std::size_t offset(GridPoint kind, long i, long j) const;
     const double* weights_ = nullptr;
+    const double* du_ = nullptr;
+    const double* dv_ = nullptr;
     std::size_t points_ = 0;
     const std::uint32_t* index_ = nullptr;
     long n_ = 1;
@@ -121,6 +128,7 @@ class TriangleTables {
   struct Region {
     std::vector<ChartPoint> layout;
     std::vector<double> weights;                // stencil_count * layout.size()
+    std::vector<double> du, dv;                 // the same for the derivatives (version 6, sqrt(3)'s regular patch), or empty
     std::vector<std::vector<std::uint32_t>> index;  // per rate slot: nodes, ups, downs
     std::vector<TriangleChild> children;
   };

@@ -214,10 +214,15 @@ Approximation TrianglePatchDescent::evaluate(int valence, int region, std::vecto
   }
 }
 
-void TrianglePatchDescent::descend_to_regular(int& valence, int& region, std::vector<Point>& q, Dual& x, Dual& y) const {
+void TrianglePatchDescent::require_polynomial() const {
   if (tables_.polynomial_degree() <= 0)
-    throw EvaluationError("this triangle scheme's regular patch is not polynomial (sqrt(3)), and its tables hold no "
-                          "derivative stencils: no derivatives for it yet");
+    throw EvaluationError("this triangle scheme's regular patch is not a polynomial (sqrt(3)): its derivatives are "
+                          "exact at the parameters its tables hold (exact rationals), and it has no second derivatives "
+                          "here; at other real parameters it has none");
+}
+
+template <class P>
+void TrianglePatchDescent::descend_to_regular(int& valence, int& region, std::vector<Point>& q, P& x, P& y) const {
   const int m = tables_.dilation();
   std::vector<Point> next;
   for (int level = 0; valence != 6; ++level) {
@@ -287,8 +292,38 @@ Derivatives TrianglePatchDescent::derivatives(int valence, int region, std::vect
 }
 
 SecondDerivatives TrianglePatchDescent::second_derivatives(int valence, int region, std::vector<Point>& q, Dual x, Dual y) const {
+  require_polynomial();
   descend_to_regular(valence, region, q, x, y);
   return regular_derivatives(q, x, y);
+}
+
+Derivatives TrianglePatchDescent::derivatives(int valence, int region, std::vector<Point>& q, ExactDual x, ExactDual y) const {
+  if (tables_.polynomial_degree() > 0)
+    return derivatives(valence, region, q, Dual{to_real(x), x.du, x.dv}, Dual{to_real(y), y.du, y.dv});
+  const std::string at = "(" + x.value.str() + ", " + y.value.str() + ")";
+  descend_to_regular(valence, region, q, x, y);
+  int n = 0;
+  std::int64_t a = 0, b = 0;
+  if (!held(tables_, x.value, y.value, n, a, b))
+    throw EvaluationError("the patch parameter " + at + " reaches the regular point (" + x.value.str() + ", " +
+                          y.value.str() + "), which no stored rate holds: this scheme's derivatives (sqrt(3)) are exact "
+                          "only at parameters on the grids of its tables' rates");
+  const TriangleTables::Grid grid = tables_.grid(6, n, 0);
+  const auto kind = static_cast<TriangleTables::GridPoint>(a % 3);
+  const double *wu = nullptr, *wv = nullptr;
+  if (!grid.derivative_weights(kind, a / 3, b / 3, wu, wv))
+    throw EvaluationError("these sqrt(3) tables hold no derivative stencils (.sgt from before version 6): regenerate "
+                          "them with this stencilgen");
+  // Along the regular cell's (X, Y), then the chain rule through the affine
+  // map (u, v) -> (X, Y) that the duals carry.
+  const Point dX = combine(wu, q), dY = combine(wv, q);
+  Derivatives out;
+  out.point = combine(grid.weights(kind, a / 3, b / 3), q);
+  for (std::size_t k = 0; k < 3; ++k) {
+    out.du[k] = x.du * dX[k] + y.du * dY[k];
+    out.dv[k] = x.dv * dX[k] + y.dv * dY[k];
+  }
+  return out;
 }
 
 template Approximation TrianglePatchDescent::evaluate<Fraction>(int, int, std::vector<Point>&, Fraction, Fraction, double) const;

@@ -40,15 +40,23 @@ class TrianglePatchDescent {
   // Throws EvaluationError at the extraordinary vertex itself (no parametric
   // derivative there) and for a scheme without a polynomial regular patch.
   Derivatives derivatives(int valence, int region, std::vector<Point>& points, Dual x, Dual y) const;
+  // The same at an exact parameter, for every scheme: a regular basis that is
+  // not a polynomial (sqrt(3)) is differentiated by the tables' derivative
+  // stencils (version 6) at the grid point the descent reaches. A point of a
+  // stored grid reaches one (the cells' maps scale by m and keep the grid
+  // 1/n); other parameters may not, and get an EvaluationError saying so.
+  Derivatives derivatives(int valence, int region, std::vector<Point>& points, ExactDual x, ExactDual y) const;
   // The same with the second derivatives along (u, v) (the cells' maps are
   // affine: the chain rule has no second-order terms).
   SecondDerivatives second_derivatives(int valence, int region, std::vector<Point>& points, Dual x, Dual y) const;
 
  private:
   // Down the cells holding (x, y) until the cell is regular (valence 6);
-  // throws EvaluationError for a scheme without a polynomial regular patch and
-  // at the extraordinary vertex itself.
-  void descend_to_regular(int& valence, int& region, std::vector<Point>& points, Dual& x, Dual& y) const;
+  // throws EvaluationError at the extraordinary vertex itself.
+  template <class P>
+  void descend_to_regular(int& valence, int& region, std::vector<Point>& points, P& x, P& y) const;
+  // Throws EvaluationError for a scheme without a polynomial regular patch.
+  void require_polynomial() const;
   // The regular cell's polynomial at (x, y) with its first and second derivatives along (u, v).
   SecondDerivatives regular_derivatives(const std::vector<Point>& points, const Dual& x, const Dual& y) const;
   Approximation nearest_sample(int valence, int region, const std::vector<Point>& q, double x, double y, double& sx,

@@ -76,6 +76,8 @@ std::pair<int, std::array<P, 2>> ternary_child(const P& u, const P& v) {
   } else if constexpr (std::is_same_v<P, Dual>) {
     throw EvaluationError("parameter (" + std::to_string(u.value) + ", " + std::to_string(v.value) +
                           ") lies outside the triangle");
+  } else if constexpr (std::is_same_v<P, ExactDual>) {
+    throw EvaluationError("parameter (" + u.value.str() + ", " + v.value.str() + ") lies outside the triangle");
   } else {
     throw EvaluationError("parameter (" + u.str() + ", " + v.str() + ") lies outside the triangle");
   }
@@ -238,6 +240,13 @@ Approximation TriangleFamily::evaluate(std::size_t face, double u, double v, dou
 }
 
 Derivatives TriangleFamily::derivatives(std::size_t face, double u, double v, const Point* prepared) const {
+  if (tables_.polynomial_degree() == 0) {  // sqrt(3): exact stencils at the grid points the tables hold
+    const auto fu = exact_fraction(u), fv = exact_fraction(v);
+    if (!fu || !fv)
+      throw EvaluationError("this scheme's regular patch is not a polynomial (sqrt(3)): derivatives only at exact "
+                            "parameters its tables hold");
+    return derivatives(face, ExactParameter{*fu, *fv}, prepared);
+  }
   return second_derivatives(face, u, v, prepared);  // the regular cell's quartic gives both at once
 }
 
@@ -259,8 +268,12 @@ Point TriangleFamily::normal(std::size_t face, double u, double v, const Point* 
   const TrianglePatch& patch = patches_[pf];
   if (patch.valence == 6 || patch.region != 0 || q[0].value != 0 || q[1].value != 0)
     return derivatives(face, u, v, prepared).normal();
+  return vertex_normal(patch, q[0].du * q[1].dv - q[0].dv * q[1].du, prepared);
+}
+
+Point TriangleFamily::vertex_normal(const TrianglePatch& patch, double det, const Point* prepared) const {
   // The extraordinary vertex: t_u.P x t_v.P, turned if the map from the face
-  // to the patch turns the orientation (the Jacobian carried by the duals).
+  // to the patch turns the orientation (det: the Jacobian's determinant).
   const std::vector<double>* tu = tables_.tangent_u(patch.valence);
   const std::vector<double>* tv = tables_.tangent_v(patch.valence);
   if (!tu || !tv || tu->size() != patch.points.size())
@@ -272,7 +285,6 @@ Point TriangleFamily::normal(std::size_t face, double u, double v, const Point* 
     const Point& p = prepared[patch.points[h]];
     for (std::size_t c = 0; c < 3; ++c) tangents.du[c] += (*tu)[h] * p[c], tangents.dv[c] += (*tv)[h] * p[c];
   }
-  const double det = q[0].du * q[1].dv - q[0].dv * q[1].du;
   Point n = tangents.normal();
   if (det < 0)
     for (double& x : n) x = -x;
@@ -280,12 +292,23 @@ Point TriangleFamily::normal(std::size_t face, double u, double v, const Point* 
 }
 
 Point TriangleFamily::normal(std::size_t face, const ExactParameter& at, const Point* prepared) const {
-  return normal(face, at.u.to_double(), at.v.to_double(), prepared);
+  if (tables_.polynomial_degree() > 0) return normal(face, at.u.to_double(), at.v.to_double(), prepared);
+  const auto [pf, q] = patch_parameter(face, ExactDual{at.u, 1, 0}, ExactDual{at.v, 0, 1});
+  const TrianglePatch& patch = patches_[pf];
+  if (patch.valence == 6 || patch.region != 0 || q[0].value.num != 0 || q[1].value.num != 0)
+    return derivatives(face, at, prepared).normal();
+  return vertex_normal(patch, q[0].du * q[1].dv - q[0].dv * q[1].du, prepared);
 }
 
 Derivatives TriangleFamily::derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const {
-  // The regular patch's polynomial is evaluated in doubles either way.
-  return derivatives(face, at.u.to_double(), at.v.to_double(), prepared);
+  // Loop: the regular patch's polynomial is evaluated in doubles either way.
+  if (tables_.polynomial_degree() > 0) return derivatives(face, at.u.to_double(), at.v.to_double(), prepared);
+  const TrianglePatchDescent& descent = checked_descent();
+  const auto [pf, q] = patch_parameter(face, ExactDual{at.u, 1, 0}, ExactDual{at.v, 0, 1});
+  const TrianglePatch& patch = patches_[pf];
+  std::vector<Point> points(patch.points.size());
+  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
+  return descent.derivatives(patch.valence, patch.region, points, q[0], q[1]);
 }
 
 std::string TriangleFamily::preparation() const {

@@ -36,8 +36,9 @@ class TriangleFamily final : public Family {
   using Family::stencil;  // and at a real parameter
   Approximation evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const override;
   Approximation evaluate(std::size_t face, double u, double v, double tolerance, const Point* prepared) const override;
-  // First derivatives along the face's (u, v): Loop (polynomial regular
-  // patch) anywhere but an extraordinary vertex; sqrt(3) refused.
+  // First derivatives along the face's (u, v) anywhere but an extraordinary
+  // vertex: Loop (polynomial regular patch) at any parameter; sqrt(3) exactly
+  // at the parameters its tables' grids hold (version 6 tables), refused elsewhere.
   Derivatives derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
   Derivatives derivatives(std::size_t face, double u, double v, const Point* prepared) const override;
   // The unit normal: the derivatives' where they exist (Loop), and at an
@@ -45,7 +46,7 @@ class TriangleFamily final : public Family {
   // Loop and sqrt(3)).
   Point normal(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
   Point normal(std::size_t face, double u, double v, const Point* prepared) const override;
-  // Second derivatives along (u, v), likewise (Loop only).
+  // Second derivatives along (u, v) (Loop only; sqrt(3) refused).
   SecondDerivatives second_derivatives(std::size_t face, const ExactParameter& at, const Point* prepared) const override;
   SecondDerivatives second_derivatives(std::size_t face, double u, double v, const Point* prepared) const override;
   // Sub-patches (closest points, triangle_sub_patches.cpp): a triangle of the
@@ -68,8 +69,8 @@ class TriangleFamily final : public Family {
   std::array<double, 2> edge_node_parameter(std::size_t prepared_face, int corner, int t, int n) const override;
   void points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
               std::array<float, 3>* out) const override;
-  // Loop: the unit normal at each of those points (the descent's derivatives);
-  // sqrt(3) is refused.
+  // The unit normal at each of those points (the descent's derivatives; for
+  // sqrt(3) exact, from the tables' derivative stencils, version 6).
   void normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
                std::array<float, 3>* out) const override;
 
@@ -97,6 +98,9 @@ class TriangleFamily final : public Family {
   // A stored rate's stencil at the parameter, without descent.
   bool held_stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const;
   const TrianglePatchDescent& checked_descent() const;
+  // The normal at an extraordinary vertex from the tables' tangent stencils;
+  // det: the sign of the face-to-patch map's orientation.
+  Point vertex_normal(const TrianglePatch& patch, double det, const Point* prepared) const;
   struct Prepared;
   static Prepared prepare(const Tables& tables, const Connectivity& mesh, const MeshFeatures& sharp);
   TriangleFamily(std::shared_ptr<const Tables> tables, Prepared prepared);

@@ -147,6 +147,7 @@ std::array<double, 2> TriangleFamily::edge_node_parameter(std::size_t face, int 
 void TriangleFamily::normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
                              std::array<float, 3>* out_all) const {
   const TrianglePatchDescent& descent = checked_descent();
+  const bool polynomial = tables_.polynomial_degree() > 0;
   std::vector<Point> local;
   for (std::size_t f = begin; f != end; ++f) {
     if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
@@ -162,8 +163,12 @@ void TriangleFamily::normals(const TessellationLayout& layout, std::size_t begin
       local.resize(p.points.size());
       for (std::size_t h = 0; h < local.size(); ++h) local[h] = pos[p.points[h]];
       const double g = 3.0 * static_cast<double>(n);
-      const Point normal = descent.derivatives(p.valence, p.region, local, Dual{static_cast<double>(pa) / g, 1, 0},
-                                               Dual{static_cast<double>(pb) / g, 0, 1}).normal();
+      // sqrt(3)'s derivative stencils are found at the exact grid point the descent reaches.
+      const Point normal =
+          polynomial ? descent.derivatives(p.valence, p.region, local, Dual{static_cast<double>(pa) / g, 1, 0},
+                                           Dual{static_cast<double>(pb) / g, 0, 1}).normal()
+                     : descent.derivatives(p.valence, p.region, local, ExactDual{Fraction::make(pa, 3 * n), 1, 0},
+                                           ExactDual{Fraction::make(pb, 3 * n), 0, 1}).normal();
       *out++ = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
     };
     for (long j = 0; j < n; ++j)
