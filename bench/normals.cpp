@@ -7,7 +7,10 @@
 // Catmull-Clark, OpenSubdiv's Bfr evaluates the same points with and without
 // first derivatives in the same run (cached surfaces, per face
 // PreparePatchPoints, then Evaluate at every point), as the reference ratio.
-// Usage: bench_normals [NONPOLY.sgs] [CATMULL-CLARK.sgs]
+// Triangle tables given after them (Loop, sqrt(3)) run on the tri-mix mesh,
+// refined the same way: Loop differentiates its quartic, sqrt(3) takes its
+// regular faces' stored derivative stencils and descends on the others.
+// Usage: bench_normals [NONPOLY.sgs] [CATMULL-CLARK.sgs] [TRIANGLE.sgt ...]
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
 #include <opensubdiv/bfr/surface.h>
 #include <opensubdiv/far/topologyDescriptor.h>
@@ -84,19 +87,20 @@ struct BfrMesh {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string paths[2] = {argc > 1 ? argv[1] : "tables/nonpoly/nonpoly.sgs",
-                                argc > 2 ? argv[2] : "tables/catmull-clark/catmull-clark.sgs"};
-  const std::string mesh_path = std::string(STENCIL_SOURCE_DIR) + "/meshes/chess-piece.obj";
+  std::vector<std::string> paths = {argc > 1 ? argv[1] : "tables/nonpoly/nonpoly.sgs",
+                                    argc > 2 ? argv[2] : "tables/catmull-clark/catmull-clark.sgs"};
+  for (int k = 3; k < argc; ++k) paths.push_back(argv[k]);
+  const std::string meshes = std::string(STENCIL_SOURCE_DIR) + "/meshes/";
   std::printf("| scheme | control faces | rate | threads | points | positions (ms) | positions + normals (ms) | ratio | "
               "Bfr points (ms) | Bfr points + du, dv (ms) | Bfr ratio |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
-  for (int s = 0; s < 2; ++s) {
+  for (std::size_t s = 0; s < paths.size(); ++s) {
     const auto tables = Tables::load(paths[s]);
-    Mesh mesh = read_obj(mesh_path);
+    Mesh mesh = read_obj(meshes + (tables->family() == SchemeFamily::Triangle ? "tri-mix.obj" : "chess-piece.obj"));
     while (mesh.face_count() < 100000) mesh = subdivide(*tables, mesh);
     const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
     const Surface surface(topology, mesh.positions);
     std::unique_ptr<BfrMesh> bfr;
-    if (s == 1) bfr = std::make_unique<BfrMesh>(mesh);
+    if (tables->scheme() == "catmull-clark") bfr = std::make_unique<BfrMesh>(mesh);
     for (int rate : {4, 8, 16, 24})
       for (int threads : {1, 2}) {
         // Rates are per original face; the refined mesh needs no isolation step here.

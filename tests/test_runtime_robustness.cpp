@@ -398,10 +398,16 @@ TEST_CASE("triangle tables' children and regular polynomial are checked at load"
   const auto good = Tables::load((dir / "good.sgt").string());
   CHECK(good->triangle().has_descent());
   CHECK(good->triangle().polynomial_degree() == 4);
-  // The degree (before 15 coefficients per valence-6 layout point): a huge one
-  // is refused before any arithmetic on it (fuzzing found the overflow).
-  const std::size_t degree_at = body.size() - 8 * 15 * good->triangle().layout(6).size() - 4;
+  // The degree (before 15 coefficients per valence-6 layout point and the
+  // one-byte derivative flag): a huge one is refused before any arithmetic on
+  // it (fuzzing found the overflow).
+  const std::size_t degree_at = body.size() - 1 - 8 * 15 * good->triangle().layout(6).size() - 4;
   refused(degree_at, 0x80000001u, "degree 2147483649 is above 8");
   refused(degree_at, 9, "degree 9 is above 8");
+  // Loop's polynomial serves its derivatives: a flag claiming stored derivative stencils is refused.
+  std::string flagged = body;
+  flagged.back() = 1;
+  write_file(dir / "flag.sgt", with_checksum(flagged));
+  CHECK_THROWS_WITH(Tables::load((dir / "flag.sgt").string()), Catch::Contains("invalid regular derivative flag"));
   fs::remove_all(dir);
 }

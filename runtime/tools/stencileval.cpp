@@ -114,10 +114,11 @@ int main(int argc, char** argv) {
       "otherwise within --tolerance times the face's control-point extent, and the line before the point says\n"
       "how far it may be from the exact one. Prints the point as `x y z` on the last line.\n"
       "--derivatives adds d/du and d/dv along the face's (u, v), --normal the unit normal (du x dv, outward for\n"
-      "counter-clockwise faces); quad schemes and Loop (not sqrt(3) yet). They are exact to rounding on polynomial\n"
-      "schemes (Catmull-Clark, Loop) and, for quad schemes, at exact rationals k/n of a stored rate n. At an\n"
+      "counter-clockwise faces); every quad and triangle scheme. They are exact to rounding on polynomial schemes\n"
+      "(Catmull-Clark, Loop) and, for nonpoly and sqrt(3), at exact rationals k/n of a stored rate n (sqrt(3):\n"
+      "only there, and at the thirds its subdivision reaches from them; other parameters are refused). At an\n"
       "extraordinary vertex the surface has no parametric derivative and --derivatives is refused; --normal alone\n"
-      "still answers there (the tables' tangent stencils: subdominant left eigenvectors; sqrt(3) only there).\n"
+      "still answers there (the tables' tangent stencils: subdominant left eigenvectors).\n"
       "The last line then holds `x y z dux duy duz dvx dvy dvz` (and/or `nx ny nz`), the lines before it each\n"
       "vector by name.\n"
       "--second-derivatives adds d2/du2, d2/dudv and d2/dv2 (after du and dv, before the normal): exact to rounding\n"
@@ -157,7 +158,7 @@ int main(int argc, char** argv) {
   Columns columns;
   app.add_flag("--derivatives", columns.derivatives, "also d/du and d/dv (quad schemes)");
   app.add_flag("--second-derivatives", columns.second, "also d2/du2, d2/dudv, d2/dv2 (Catmull-Clark, Loop)");
-  app.add_flag("--normal", columns.normal, "also the unit normal (quad schemes and Loop; sqrt(3) at extraordinary vertices only)");
+  app.add_flag("--normal", columns.normal, "also the unit normal (every scheme; sqrt(3) at the parameters its tables hold)");
   return stencil_tools::run_tool(app, argc, argv, [&] {
     if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive number");
     if (batch.empty() && (face_text.empty() || uv.empty()))

@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
   boundary.add(app);
   bool with_normals = false;
   app.add_flag("--normals", with_normals,
-               "also write per-vertex unit normals of the limit surface (quad schemes and Loop; PLY nx ny nz, OBJ vn)");
+               "also write per-vertex unit normals of the limit surface (every scheme; PLY nx ny nz, OBJ vn)");
   r1->excludes(r2, r3, r4);
   r2->excludes(r3, r4);
   r3->excludes(r4);

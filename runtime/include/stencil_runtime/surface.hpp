@@ -66,7 +66,9 @@ class Surface {
   // (for an N-gon's sub-faces, along the face's own (u, v): each sub-face's
   // coordinates are the tile's doubled). Quad schemes, and Loop on triangle
   // meshes (its regular patch is polynomial: exact to rounding anywhere but an
-  // extraordinary vertex); sqrt(3) is refused. Computed by
+  // extraordinary vertex), and sqrt(3) at exact rationals whose descent reaches
+  // a stored grid (its tables' derivative stencils; other parameters are
+  // refused). Computed by
   // the scheme's own subdivision of the patch down to a regular patch: exact
   // to rounding where that patch is polynomial (Catmull-Clark), and for any
   // scheme at exact rationals whose descent reaches a stored grid (k/n of a

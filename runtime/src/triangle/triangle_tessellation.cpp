@@ -157,9 +157,20 @@ void TriangleFamily::normals(const TessellationLayout& layout, std::size_t begin
     // The same points as points(), differentiated in the patch's own
     // coordinates: the patch's rotation keeps the orientation, so du x dv
     // there points the same way as on the face.
+    // sqrt(3)'s regular faces: the stored derivative stencils at the point itself, no descent.
+    const TriangleTables::Grid grid = tables_.grid(p.valence, static_cast<int>(n), p.region);
     auto put = [&](long a, long b) {
       long pa = 0, pb = 0;
       p.to_patch(a, b, 3 * n, pa, pb);
+      const double *wu = nullptr, *wv = nullptr;
+      if (!polynomial && grid.derivative_weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3, wu, wv)) {
+        Derivatives d;
+        d.du = stencil_sum(wu, p.points.data(), p.points.size(), pos);
+        d.dv = stencil_sum(wv, p.points.data(), p.points.size(), pos);
+        const Point normal = d.normal();
+        *out++ = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
+        return;
+      }
       local.resize(p.points.size());
       for (std::size_t h = 0; h < local.size(); ++h) local[h] = pos[p.points[h]];
       const double g = 3.0 * static_cast<double>(n);
