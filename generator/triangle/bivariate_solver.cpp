@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <string>
 #include <vector>
@@ -70,10 +71,20 @@ std::vector<Rational> matrix_times(const SparseMatrix& a, const std::vector<Rati
 // cycle's first class (added to the system that already holds the eigen-equations).
 using CycleNormalisation = std::function<void(ExactLinearSystem&, const std::vector<LatticeIndex>& members)>;
 
-// f(k/n) = factor * sum_i s_i f((m k - n i)/n) on the grid points of the open
-// support hull, solved class by class (see the header); `what` names f in errors.
-std::map<LatticeIndex, Rational> solve_by_classes(const BivariateMask& mask, long n, const Rational& factor,
-                                                  const CycleNormalisation& normalise, const std::string& what) {
+// One function to solve for: f(k/n) = factor * sum_i s_i f((m k - n i)/n),
+// fixed on each cycle by `normalise`; `what` names f in errors.
+struct ClassProblem {
+  Rational factor;
+  CycleNormalisation normalise;
+  std::string what;
+};
+
+// Every problem on the grid points of the open support hull, class by class
+// (see the header). The problems share the classes, the transfer matrices and
+// the cycles' products (a factor only scales them: P_factor = factor^L P), which
+// cost most where the cycles are long.
+std::vector<std::map<LatticeIndex, Rational>> solve_by_classes(const BivariateMask& mask, long n,
+                                                               const std::vector<ClassProblem>& problems) {
   if (n < 1) throw Error("rate must be at least 1, got " + std::to_string(n));
   const long m = mask.dilation;
   if (m < 2) throw Error("dilation must be at least 2");
@@ -123,7 +134,7 @@ std::map<LatticeIndex, Rational> solve_by_classes(const BivariateMask& mask, lon
       const auto [a, b] = members[r][row];
       for (const auto& [i, s] : mask.coefficients) {
         const std::size_t col = slot(m * a - n * i.first, m * b - n * i.second);
-        if (col != kNone) A[row].emplace_back(col, factor * s);
+        if (col != kNone) A[row].emplace_back(col, s);
       }
     }
     return A;
@@ -136,8 +147,19 @@ std::map<LatticeIndex, Rational> solve_by_classes(const BivariateMask& mask, lon
     return A;
   };
 
-  std::vector<std::vector<Rational>> value(classes);
+  const std::size_t count = problems.size();
+  // value[r][p]: problem p's values on class r.
+  std::vector<std::vector<std::vector<Rational>>> value(classes, std::vector<std::vector<Rational>>(count));
   std::vector<char> known(classes, 0);
+  // f_r = factor A_r f_image for every problem, one pass over the rows.
+  auto substitute = [&](std::size_t r, std::size_t from) {
+    const SparseMatrix rows = transfer_rows(r);
+    for (std::size_t p = 0; p < count; ++p) {
+      value[r][p] = matrix_times(rows, value[from][p]);
+      if (problems[p].factor != 1)
+        for (Rational& x : value[r][p]) x *= problems[p].factor;
+    }
+  };
   // Cycles of the functional graph r -> image(r).
   std::vector<int> state(classes, 0);  // 0 unvisited, 1 on the current path, 2 done
   for (std::size_t start = 0; start < classes; ++start) {
@@ -154,26 +176,30 @@ std::map<LatticeIndex, Rational> solve_by_classes(const BivariateMask& mask, lon
       Matrix P = transfer(cycle[0]);
       for (std::size_t k = 1; k < cycle.size(); ++k) P = multiply(P, transfer(cycle[k]));
       const std::size_t size = members[cycle[0]].size();
-      ExactLinearSystem system(size);
-      for (std::size_t row = 0; row < size; ++row) {
-        std::vector<std::pair<std::size_t, Rational>> eq;
-        for (std::size_t col = 0; col < size; ++col) {
-          const Rational c = P[row][col] - (row == col ? 1 : 0);
-          if (c != 0) eq.emplace_back(col, c);
+      for (std::size_t p = 0; p < count; ++p) {
+        Rational scale = 1;
+        for (std::size_t k = 0; k < cycle.size(); ++k) scale *= problems[p].factor;
+        ExactLinearSystem system(size);
+        for (std::size_t row = 0; row < size; ++row) {
+          std::vector<std::pair<std::size_t, Rational>> eq;
+          for (std::size_t col = 0; col < size; ++col) {
+            const Rational c = scale * P[row][col] - (row == col ? 1 : 0);
+            if (c != 0) eq.emplace_back(col, c);
+          }
+          system.add_equation(eq, 0);
         }
-        system.add_equation(eq, 0);
+        problems[p].normalise(system, members[cycle[0]]);
+        const LinearSolution sol = system.solve();
+        if (sol.status != LinearSolution::Status::Unique)
+          throw Error("n = " + std::to_string(n) + ": " + problems[p].what + " on the residue cycle of length " +
+                      std::to_string(cycle.size()) + " has " + sol.describe());
+        value[cycle[0]][p] = sol.values;
       }
-      normalise(system, members[cycle[0]]);
-      const LinearSolution sol = system.solve();
-      if (sol.status != LinearSolution::Status::Unique)
-        throw Error("n = " + std::to_string(n) + ": " + what + " on the residue cycle of length " +
-                    std::to_string(cycle.size()) + " has " + sol.describe());
-      value[cycle[0]] = sol.values;
       known[cycle[0]] = 1;
-      // Backwards around the cycle: v_{c[k]} = A_{c[k]} v_{c[k+1]}.
+      // Backwards around the cycle: v_{c[k]} = factor A_{c[k]} v_{c[k+1]}.
       for (std::size_t k = cycle.size() - 1; k >= 1; --k) {
         const std::size_t c = cycle[k], next = cycle[(k + 1) % cycle.size()];
-        value[c] = matrix_times(transfer_rows(c), value[next]);
+        substitute(c, next);
         known[c] = 1;
       }
     }
@@ -184,53 +210,89 @@ std::map<LatticeIndex, Rational> solve_by_classes(const BivariateMask& mask, lon
     if (known[r]) return;
     const std::size_t t = image(r);
     resolve(t);
-    value[r] = matrix_times(transfer_rows(r), value[t]);
+    substitute(r, t);
     known[r] = 1;
   };
-  std::map<LatticeIndex, Rational> out;
+  std::vector<std::map<LatticeIndex, Rational>> out(count);
   for (std::size_t r = 0; r < classes; ++r) {
     resolve(r);
-    for (std::size_t k = 0; k < members[r].size(); ++k) out[members[r][k]] = value[r][k];
+    for (std::size_t p = 0; p < count; ++p)
+      for (std::size_t k = 0; k < members[r].size(); ++k) out[p][members[r][k]] = value[r][p][k];
   }
   return out;
 }
 
 }  // namespace
 
+namespace {
+
+// Partition of unity on every class: sum_k phi(k/n) = 1.
+ClassProblem values_problem() {
+  return {Rational(1),
+          [](ExactLinearSystem& system, const std::vector<LatticeIndex>& members) {
+            std::vector<std::pair<std::size_t, Rational>> eq;
+            for (std::size_t col = 0; col < members.size(); ++col) eq.emplace_back(col, Rational(1));
+            system.add_equation(eq, 1);
+          },
+          "the scaling function"};
+}
+
+// Component c of the gradient: differentiating the reproduction of constants
+// and of linear functions, sum_i phi(x - i) = 1 and sum_i phi(x - i) i = x +
+// const, at x = r/n gives on the class of r: sum_k g(k) = 0 and
+// sum_k g(k) k_d = -n [d == c].
+ClassProblem gradient_problem(const BivariateMask& mask, long n, int c) {
+  return {Rational(mask.dilation),
+          [c, n](ExactLinearSystem& system, const std::vector<LatticeIndex>& members) {
+            std::vector<std::pair<std::size_t, Rational>> constant, first, second;
+            for (std::size_t col = 0; col < members.size(); ++col) {
+              constant.emplace_back(col, Rational(1));
+              if (members[col].first != 0) first.emplace_back(col, Rational(members[col].first));
+              if (members[col].second != 0) second.emplace_back(col, Rational(members[col].second));
+            }
+            system.add_equation(constant, 0);
+            system.add_equation(first, c == 0 ? Rational(-n) : Rational(0));
+            system.add_equation(second, c == 1 ? Rational(-n) : Rational(0));
+          },
+          c == 0 ? "the derivative along a" : "the derivative along b"};
+}
+
+}  // namespace
+
 BivariateSolution solve_bivariate(const BivariateMask& mask, long n) {
-  // Partition of unity on every class: sum_k phi(k/n) = 1.
-  const CycleNormalisation unity = [](ExactLinearSystem& system, const std::vector<LatticeIndex>& members) {
-    std::vector<std::pair<std::size_t, Rational>> eq;
-    for (std::size_t col = 0; col < members.size(); ++col) eq.emplace_back(col, Rational(1));
-    system.add_equation(eq, 1);
-  };
   BivariateSolution out;
   out.n = n;
-  out.values = solve_by_classes(mask, n, Rational(1), unity, "the scaling function");
+  out.values = std::move(solve_by_classes(mask, n, {values_problem()}).front());
   return out;
 }
 
 BivariateGradient solve_bivariate_gradient(const BivariateMask& mask, long n) {
+  auto solved = solve_by_classes(mask, n, {gradient_problem(mask, n, 0), gradient_problem(mask, n, 1)});
   BivariateGradient out;
   out.n = n;
-  for (int c = 0; c < 2; ++c) {
-    // Differentiating the reproduction of constants and of linear functions,
-    // sum_i phi(x - i) = 1 and sum_i phi(x - i) i = x + const, at x = r/n gives
-    // on the class of r: sum_k g(k) = 0 and sum_k g(k) k_d = -n [d == c].
-    const CycleNormalisation linear = [c, n](ExactLinearSystem& system, const std::vector<LatticeIndex>& members) {
-      std::vector<std::pair<std::size_t, Rational>> constant, first, second;
-      for (std::size_t col = 0; col < members.size(); ++col) {
-        constant.emplace_back(col, Rational(1));
-        if (members[col].first != 0) first.emplace_back(col, Rational(members[col].first));
-        if (members[col].second != 0) second.emplace_back(col, Rational(members[col].second));
-      }
-      system.add_equation(constant, 0);
-      system.add_equation(first, c == 0 ? Rational(-n) : Rational(0));
-      system.add_equation(second, c == 1 ? Rational(-n) : Rational(0));
-    };
-    (c == 0 ? out.da : out.db) = solve_by_classes(mask, n, Rational(mask.dilation), linear,
-                                                  c == 0 ? "the derivative along a" : "the derivative along b");
+  out.da = std::move(solved[0]);
+  out.db = std::move(solved[1]);
+  return out;
+}
+
+std::pair<BivariateSolution, BivariateGradient> solve_bivariate_with_gradient(const BivariateMask& mask, long n) {
+  // A mask symmetric under (a, b) -> (b, a) (Loop's and sqrt(3)'s) has
+  // d phi/db (a, b) = d phi/da (b, a): one eigen-solve per cycle fewer.
+  bool symmetric = true;
+  for (const auto& [i, s] : mask.coefficients) {
+    const auto mirror = mask.coefficients.find({i.second, i.first});
+    symmetric = symmetric && mirror != mask.coefficients.end() && mirror->second == s;
   }
+  auto solved = symmetric ? solve_by_classes(mask, n, {values_problem(), gradient_problem(mask, n, 0)})
+                          : solve_by_classes(mask, n, {values_problem(), gradient_problem(mask, n, 0), gradient_problem(mask, n, 1)});
+  std::pair<BivariateSolution, BivariateGradient> out;
+  out.first.n = out.second.n = n;
+  out.first.values = std::move(solved[0]);
+  out.second.da = std::move(solved[1]);
+  if (symmetric)
+    for (const auto& [k, x] : out.second.da) out.second.db.emplace(LatticeIndex{k.second, k.first}, x);
+  else
+    out.second.db = std::move(solved[2]);
   return out;
 }
 

@@ -48,5 +48,7 @@ struct BivariateGradient {
   }
 };
 BivariateGradient solve_bivariate_gradient(const BivariateMask& mask, long n);
+// Both at once: the classes' cycle products, which cost most, are made once.
+std::pair<BivariateSolution, BivariateGradient> solve_bivariate_with_gradient(const BivariateMask& mask, long n);
 
 }  // namespace sg

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <mutex>
+#include <tuple>
 #include <tbb/parallel_for.h>
 
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "common/rate_spec.hpp"
+#include "triangle/triangle_children.hpp"
 #include "common/table_set_pipeline.hpp"
 
 namespace sg {
@@ -21,10 +23,13 @@ TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const st
   set.rates = rates;
   set.valences = valences;
   std::vector<BivariateSolution> regular(rates.size());
+  // The regular patch's derivative stencils, where its basis is not a
+  // polynomial (sqrt(3)); Loop's quartic gives its derivatives directly.
+  const bool derivatives = !regular_basis_is_polynomial(scheme);
   std::vector<BivariateGradient> gradient(rates.size());
   tbb::parallel_for(std::size_t(0), rates.size(), [&](std::size_t r) {
-    regular[r] = solve_regular(scheme, 3 * rates[r]);
-    gradient[r] = solve_regular_gradient(scheme, 3 * rates[r]);
+    if (derivatives) std::tie(regular[r], gradient[r]) = solve_regular_with_gradient(scheme, 3 * rates[r]);
+    else regular[r] = solve_regular(scheme, 3 * rates[r]);
   });
 
   set.tables.assign(valences.size(), std::vector<TriangleTable>(rates.size()));
@@ -36,7 +41,8 @@ TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const st
     const auto [vi, r] = jobs[k];
     const int v = valences[vi];
     const long n = rates[r];
-    TriangleTable table = solve_triangle_table(scheme, v, n, regular[r], v == 6 ? &gradient[r] : nullptr);
+    TriangleTable table = solve_triangle_table(scheme, v, n, regular[r], v == 6 && derivatives ? &gradient[r] : nullptr);
+    if (v == 6) gradient[r] = {};  // its only reader is done
     if (!table.exact && !(table.residual < Real("1e-60")))
       throw Error("scheme '" + scheme.name + "', valence " + std::to_string(v) + ", n = " + std::to_string(n) +
                   ": the high-precision residual " + to_string(table.residual, 3) + " is too large");

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <map>
+#include <set>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -148,6 +149,18 @@ void close_layouts(const TriangleScheme& scheme, TriangleLayouts& layouts) {
         changed = true;
       }
   }
+}
+
+bool regular_basis_is_polynomial(const TriangleScheme& scheme) {
+  // Every chart point the regular patch's stencils use, as the layout.
+  constexpr long g = 12;
+  const TrianglePatch<Rational> patch = solve_triangle_patch<Rational>(scheme, 6, g, solve_regular(scheme, g));
+  std::set<std::size_t> used;
+  for (const auto& stencil : patch.stencils)
+    for (const auto& [id, w] : stencil) used.insert(id);
+  std::vector<SectorPoint> layout;
+  for (std::size_t id : used) layout.push_back(patch.chart.point(id));
+  return regular_polynomial(scheme, layout).degree > 0;
 }
 
 RegularPolynomial regular_polynomial(const TriangleScheme& scheme, const std::vector<SectorPoint>& layout) {

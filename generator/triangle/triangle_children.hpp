@@ -61,5 +61,9 @@ struct RegularPolynomial {
   std::vector<std::vector<double>> coefficients;
 };
 RegularPolynomial regular_polynomial(const TriangleScheme& scheme, const std::vector<SectorPoint>& layout);
+// Whether the regular patch's basis is a polynomial (Loop's quartic box
+// spline): then its derivatives come from that polynomial, and the tables
+// need no derivative stencils.
+bool regular_basis_is_polynomial(const TriangleScheme& scheme);
 
 }  // namespace sg

@@ -100,9 +100,9 @@ BivariateMask regular_mask(const TriangleScheme& scheme) {
 
 BivariateSolution solve_regular(const TriangleScheme& scheme, long g) { return solve_bivariate(regular_mask(scheme), g); }
 
-BivariateGradient solve_regular_gradient(const TriangleScheme& scheme, long g) {
+std::pair<BivariateSolution, BivariateGradient> solve_regular_with_gradient(const TriangleScheme& scheme, long g) {
   try {
-    return solve_bivariate_gradient(regular_mask(scheme), g);
+    return solve_bivariate_with_gradient(regular_mask(scheme), g);
   } catch (const Error& e) {
     throw Error("scheme '" + scheme.name + "': the regular patch has no derivative stencils (is it C1, and does it "
                 "reproduce linear functions?): " + e.what());

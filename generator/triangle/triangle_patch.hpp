@@ -68,8 +68,8 @@ long irregular_radius(const TriangleScheme& scheme);
 
 // The regular scaling function on (1/g)Z^2 (rational: valence 6 is).
 BivariateSolution solve_regular(const TriangleScheme& scheme, long g);
-// Its gradient there (bivariate_solver.hpp).
-BivariateGradient solve_regular_gradient(const TriangleScheme& scheme, long g);
+// With its gradient there (bivariate_solver.hpp), in one pass.
+std::pair<BivariateSolution, BivariateGradient> solve_regular_with_gradient(const TriangleScheme& scheme, long g);
 
 // The weights of one valence in T; for Rational, throws sg::Error when the
 // scheme's weights are irrational there.

@@ -1,6 +1,7 @@
 #include "triangle/triangle_table_verify.hpp"
 
 #include "base/limits.hpp"
+#include "triangle/triangle_children.hpp"
 
 namespace sg {
 using ojson = nlohmann::ordered_json;
@@ -12,8 +13,12 @@ TriangleTableCheck verify_triangle_table(const TableDocument& table, const std::
   const long n = r.integer(r.require(table.doc, "n", ""), "n", 1, limits::kMaxSurfaceRate);
   TriangleTableCheck check;
   // The regular table (valence 6) carries the derivative stencils (version 3).
-  const BivariateGradient gradient = v == 6 ? solve_regular_gradient(scheme, 3 * n) : BivariateGradient{};
-  check.fresh = solve_triangle_table(scheme, v, n, solve_regular(scheme, 3 * n), v == 6 ? &gradient : nullptr);
+  if (v == 6 && !regular_basis_is_polynomial(scheme)) {
+    const auto [regular, gradient] = solve_regular_with_gradient(scheme, 3 * n);
+    check.fresh = solve_triangle_table(scheme, v, n, regular, &gradient);
+  } else {
+    check.fresh = solve_triangle_table(scheme, v, n, solve_regular(scheme, 3 * n));
+  }
   check.same = triangle_table_to_json(check.fresh) == text;
   return check;
 }
