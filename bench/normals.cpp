@@ -10,7 +10,7 @@
 // Triangle tables given after them (Loop, sqrt(3)) run on the tri-mix mesh,
 // refined the same way: Loop differentiates its quartic, sqrt(3) takes its
 // regular faces' stored derivative stencils and descends on the others.
-// Usage: bench_normals [NONPOLY.sgs] [CATMULL-CLARK.sgs] [TRIANGLE.sgt ...]
+// Usage: bench_normals [NONPOLY.sgs] [CATMULL-CLARK.sgs] [TRIANGLE.sgt ...] (- skips a quad set)
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
 #include <opensubdiv/bfr/surface.h>
 #include <opensubdiv/far/topologyDescriptor.h>
@@ -94,6 +94,7 @@ int main(int argc, char** argv) {
   std::printf("| scheme | control faces | rate | threads | points | positions (ms) | positions + normals (ms) | ratio | "
               "Bfr points (ms) | Bfr points + du, dv (ms) | Bfr ratio |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (std::size_t s = 0; s < paths.size(); ++s) {
+    if (paths[s] == "-") continue;  // skipped
     const auto tables = Tables::load(paths[s]);
     Mesh mesh = read_obj(meshes + (tables->family() == SchemeFamily::Triangle ? "tri-mix.obj" : "chess-piece.obj"));
     while (mesh.face_count() < 100000) mesh = subdivide(*tables, mesh);

@@ -205,6 +205,42 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
           for (double w : c.rows.weights) t.children_nonnegative_ = t.children_nonnegative_ && w >= 0;
         }
   }
+  if (t.degree_ > 0) {
+    // A polynomial regular basis (Loop): its derivative stencils at the stored
+    // grid points, made once here, so that tessellation normals on regular
+    // faces are stencil sums as the points are.
+    Region& region = t.valences_[static_cast<std::size_t>(t.find(6) - t.valences_.data())].regions[0];
+    const std::size_t points = region.layout.size(), terms = static_cast<std::size_t>((t.degree_ + 1) * (t.degree_ + 2) / 2);
+    region.du.assign(region.weights.size(), 0.0);
+    region.dv.assign(region.weights.size(), 0.0);
+    for (std::size_t slot = 0; slot < t.rates_.size(); ++slot) {
+      const long n = t.rates_[slot];
+      const std::vector<std::uint32_t>& index = region.index[slot];
+      std::size_t k = 0;
+      for (int kind = 0; kind < 3; ++kind)
+        for (long j = 0; j + kind <= n; ++j)
+          for (long i = 0; i + j + kind <= n; ++i, ++k) {
+            const double x = static_cast<double>(3 * i + kind) / (3.0 * n), y = static_cast<double>(3 * j + kind) / (3.0 * n);
+            double* du = region.du.data() + static_cast<std::size_t>(index[k]) * points;
+            double* dv = region.dv.data() + static_cast<std::size_t>(index[k]) * points;
+            // d/dx and d/dy of each monomial x^e y^f, f = 0..d, e = 0..d-f (the coefficients' order).
+            std::vector<double> px(static_cast<std::size_t>(t.degree_ + 1), 1.0), py = px, mx(terms), my(terms);
+            for (int e = 1; e <= t.degree_; ++e)
+              px[static_cast<std::size_t>(e)] = px[static_cast<std::size_t>(e - 1)] * x, py[static_cast<std::size_t>(e)] = py[static_cast<std::size_t>(e - 1)] * y;
+            std::size_t term = 0;
+            for (int f = 0; f <= t.degree_; ++f)
+              for (int e = 0; e + f <= t.degree_; ++e, ++term) {
+                mx[term] = e > 0 ? e * px[static_cast<std::size_t>(e - 1)] * py[static_cast<std::size_t>(f)] : 0.0;
+                my[term] = f > 0 ? f * px[static_cast<std::size_t>(e)] * py[static_cast<std::size_t>(f - 1)] : 0.0;
+              }
+            for (std::size_t h = 0; h < points; ++h) {
+              double wx = 0, wy = 0;
+              for (std::size_t q = 0; q < terms; ++q) wx += t.polynomial_[h * terms + q] * mx[q], wy += t.polynomial_[h * terms + q] * my[q];
+              du[h] = wx, dv[h] = wy;
+            }
+          }
+    }
+  }
   if (r.position() != bytes.size() - 8) r.fail("unexpected trailing bytes");
   if (!std::isfinite(t.edge_end_) || !std::isfinite(t.edge_opposite_)) r.fail("an edge rule weight is not finite");
   for (const Valence& v : t.valences_)

@@ -106,9 +106,9 @@ class TriangleTables {
    public:
     // Throws EvaluationError for an index outside the patch triangle.
     const double* weights(GridPoint kind, long i, long j) const;
-    // The derivative stencils along the patch's u and v at the same point:
-    // false where the tables hold none (every patch but the regular one of a
-    // scheme whose regular basis is not a polynomial, sqrt(3); version 6).
+    // The derivative stencils along the patch's u and v at the same point, for
+    // the regular patch: stored (sqrt(3), version 6) or made at load from the
+    // regular polynomial (Loop); false for the other patches and older files.
     bool derivative_weights(GridPoint kind, long i, long j, const double*& du, const double*& dv) const;
 
    private:
@@ -128,7 +128,7 @@ class TriangleTables {
   struct Region {
     std::vector<ChartPoint> layout;
     std::vector<double> weights;                // stencil_count * layout.size()
-    std::vector<double> du, dv;                 // the same for the derivatives (version 6, sqrt(3)'s regular patch), or empty
+    std::vector<double> du, dv;                 // the same for the derivatives (the regular patch), or empty
     std::vector<std::vector<std::uint32_t>> index;  // per rate slot: nodes, ups, downs
     std::vector<TriangleChild> children;
   };

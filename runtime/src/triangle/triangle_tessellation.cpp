@@ -157,13 +157,13 @@ void TriangleFamily::normals(const TessellationLayout& layout, std::size_t begin
     // The same points as points(), differentiated in the patch's own
     // coordinates: the patch's rotation keeps the orientation, so du x dv
     // there points the same way as on the face.
-    // sqrt(3)'s regular faces: the stored derivative stencils at the point itself, no descent.
+    // Regular faces: the tables' derivative stencils at the point itself, no descent.
     const TriangleTables::Grid grid = tables_.grid(p.valence, static_cast<int>(n), p.region);
     auto put = [&](long a, long b) {
       long pa = 0, pb = 0;
       p.to_patch(a, b, 3 * n, pa, pb);
       const double *wu = nullptr, *wv = nullptr;
-      if (!polynomial && grid.derivative_weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3, wu, wv)) {
+      if (grid.derivative_weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3, wu, wv)) {
         Derivatives d;
         d.du = stencil_sum(wu, p.points.data(), p.points.size(), pos);
         d.dv = stencil_sum(wv, p.points.data(), p.points.size(), pos);
