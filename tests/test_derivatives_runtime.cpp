@@ -242,7 +242,10 @@ TEST_CASE("derivatives are refused where they do not exist or are not exact, wit
   const Surface torus = surface_of(sqrt3, load("tri-torus"));
   // sqrt(3): exact derivatives at the tables' grid points (test_sqrt3_derivatives.cpp), none elsewhere.
   CHECK_NOTHROW(torus.derivatives(0, grid(1, 1, 3)));
-  CHECK_THROWS_WITH(torus.derivatives(0, 0.25, 0.25), Catch::Contains("which no stored rate holds"));
+  CHECK_THROWS_WITH(torus.derivatives(0, 0.25, 0.25), Catch::Contains("derivatives only at exact parameters on its tables' grids"));
+  CHECK_THROWS_WITH(torus.derivatives(0, 0.1, 0.2), Catch::Contains("(0.100000, 0.200000) is not one"));
+  CHECK_THROWS_WITH(torus.derivatives(0, ExactParameter{Fraction::make(1, 25), Fraction::make(1, 25)}),
+                    Catch::Contains("which no stored rate holds"));
   CHECK_THROWS_WITH(torus.second_derivatives(0, grid(1, 1, 3)), Catch::Contains("not a polynomial"));
 }
 

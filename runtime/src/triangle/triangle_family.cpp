@@ -242,10 +242,18 @@ Approximation TriangleFamily::evaluate(std::size_t face, double u, double v, dou
 Derivatives TriangleFamily::derivatives(std::size_t face, double u, double v, const Point* prepared) const {
   if (tables_.polynomial_degree() == 0) {  // sqrt(3): exact stencils at the grid points the tables hold
     const auto fu = exact_fraction(u), fv = exact_fraction(v);
-    if (!fu || !fv)
-      throw EvaluationError("this scheme's regular patch is not a polynomial (sqrt(3)): derivatives only at exact "
-                            "parameters its tables hold");
-    return derivatives(face, ExactParameter{*fu, *fv}, prepared);
+    const std::string refusal = "this scheme's regular patch is not a polynomial (sqrt(3)): derivatives only at exact "
+                                "parameters on its tables' grids (k/n of a stored rate n, given as a fraction such as "
+                                "1/3), and (" + std::to_string(u) + ", " + std::to_string(v) + ") is not one";
+    if (!fu || !fv) throw EvaluationError(refusal);
+    try {
+      return derivatives(face, ExactParameter{*fu, *fv}, prepared);
+    } catch (const ParameterOverflow&) {  // a binary fraction the descent cannot follow in 64 bits
+      throw EvaluationError(refusal);
+    } catch (const EvaluationError& e) {
+      if (std::string(e.what()).find("which no stored rate holds") != std::string::npos) throw EvaluationError(refusal);
+      throw;
+    }
   }
   return second_derivatives(face, u, v, prepared);  // the regular cell's quartic gives both at once
 }
