@@ -149,21 +149,30 @@ TEST_CASE("sqrt(3) normals next to an extraordinary vertex converge to its tange
   }
 }
 
-TEST_CASE("sqrt(3) tessellation normals equal stencileval --normal at the same parameters", "[runtime][derivatives][sqrt3][tessellation]") {
-  const fs::path table = sqrt3_tables();
-  const auto tables = Tables::load(table.string());
+TEST_CASE("sqrt(3) and Loop tessellation normals equal stencileval --normal at the same parameters",
+          "[runtime][derivatives][sqrt3][tessellation]") {
+  // Regular faces take the tables' derivative stencils (sqrt(3): stored; Loop:
+  // made at load from its polynomial), the others the descent; Surface::normal
+  // and the tool reach every point through the descent.
+  struct Case {
+    fs::path table;
+    int rate, scale;  // per original face; the preparation's step divides parameters by `scale`
+  };
+  for (const Case& c : {Case{sqrt3_tables(), 9, 3}, Case{generated_table("loop", "--valence 3-8 --n 1-8", "sgt"), 8, 2}})
   for (const char* name : {"icosahedron", "tri-mix"}) {
+    const fs::path& table = c.table;
+    const auto tables = Tables::load(table.string());
     const Mesh mesh = bundled(name);
     const Surface surface = surface_of(tables, mesh);
     const auto& family = dynamic_cast<const TriangleFamily&>(surface.topology().family());
-    const std::vector<int> rates(mesh.face_count(), 9);
+    const std::vector<int> rates(mesh.face_count(), c.rate);
     const std::vector<int> prepared = family.hierarchy().prepared_rates(rates);
     const long n = prepared.front();
     const PolygonSoup soup = tessellate(surface, rates, {}, true);
     REQUIRE(soup.normals.size() == soup.positions.size());
     REQUIRE(soup.positions.size() >= prepared.size() * static_cast<std::size_t>(n * n));
     // Prepared face pf's points: n^2 centres, the up ones then the down ones, row by row.
-    const long den = 3 * n * static_cast<long>(std::pow(3, family.refinement_steps()));
+    const long den = 3 * n * static_cast<long>(std::pow(c.scale, family.refinement_steps()));
     const fs::path dir = scratch_dir("sqrt3-tess-normals");
     std::ofstream queries(dir / "q.txt");
     std::vector<std::size_t> sample;
@@ -175,7 +184,7 @@ TEST_CASE("sqrt(3) tessellation normals equal stencileval --normal at the same p
         const ExactParameter at{Fraction::make(std::llround(o.u * den), den), Fraction::make(std::llround(o.v * den), den)};
         const auto& q = soup.positions[k];
         const auto& m = soup.normals[k];
-        INFO(name << " point " << k << ": face " << o.face << " at " << at.str());
+        INFO(table.filename() << " " << name << " point " << k << ": face " << o.face << " at " << at.str());
         REQUIRE(distance(surface.evaluate(o.face, at), {q[0], q[1], q[2]}) < 1e-6 * extent(mesh));
         REQUIRE(distance(surface.normal(o.face, at), {m[0], m[1], m[2]}) < 1e-6);
         if (k % 23 == 0) {
