@@ -5,7 +5,10 @@
 #include <unistd.h>
 
 #include "curve/curve_scheme_loader.hpp"
+#include "curve/curve_table_json.hpp"
+#include "curve/curve_table_verify.hpp"
 #include "curve/eigen_solver.hpp"
+#include "curve/generate_curve.hpp"
 #include "curve/residue_solver.hpp"
 #include "cli.hpp"
 #include "independent.hpp"
@@ -74,4 +77,59 @@ TEST_CASE("column schemes are validated: contiguous special columns, uniform col
   CHECK_THROWS_WITH(sg::load_curve_scheme(scheme_with("twice", R"({"index": 0, )" + col + R"(, {"index": 0, )" + col)),
                     Catch::Contains("listed twice"));
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("nubspline3's first derivative in x equals Cox-de Boor's derivative times dt/dx, from the right at 0, "
+          "n = 1..24") {
+  for (const std::string name : {"nubspline3", "nubspline3-columns"}) {
+    const sg::CurveScheme s = sg::load_curve_scheme(name);
+    auto knot = [](long i) { return i < 0 ? Q(2 * i) : Q(i); };
+    auto t_of = [](const Q& x) { return x < 0 ? Q(2 * x) : x; };
+    std::vector<long> rates(24);
+    for (long n = 1; n <= 24; ++n) rates[static_cast<std::size_t>(n - 1)] = n;
+    const auto tables = sg::generate_curve_tables(s, rates, sg::RouteChoice::Residue, {});
+    for (const sg::CurveTable& t : tables) {
+      REQUIRE(t.derivative_orders == 1);
+      CHECK(t.derivatives_stop.find("2 times that from the left") != std::string::npos);
+      const long n = t.n;
+      for (long j = -7; j <= 7; ++j) {
+        std::size_t type = s.types.size();
+        for (std::size_t h = 0; h < s.types.size(); ++h)
+          if (s.types[h].placed_at(j)) type = h;
+        REQUIRE(type < s.types.size());
+        const auto& d = t.functions[type].derivatives.at(0);
+        for (long k = (j - 3) * n; k <= (j + 3) * n; ++k) {
+          const Q x(k, n);
+          // Cox-de Boor's intervals are closed on the left: at t = 0 its
+          // derivative is the one from the right, where dt/dx = 1.
+          const Q expected = independent::cox_de_boor_derivative(knot, j - 2, 3, t_of(x), 1) * (x < 0 ? Q(2) : Q(1));
+          const auto it = d.find(k - j * n);
+          INFO(name << " n = " << n << " control " << j << " x = " << x.str());
+          REQUIRE((it == d.end() ? Q(0) : it->second) == expected);
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("verify checks nubspline3's derivative: a changed value, also at 0 where the relation alone is singular, fails") {
+  const sg::CurveScheme s = sg::load_curve_scheme("nubspline3");
+  const sg::CurveTable t = sg::generate_curve_tables(s, {3}, sg::RouteChoice::Both, {})[0];
+  REQUIRE(sg::verify_curve_table(t, s).empty());
+  // c0 (the column at 0) scaled at x = 0 together with c-1 and c1 along the
+  // eigenvector: the relation there still holds, the slope does not.
+  sg::CurveTable scaled = t;
+  for (auto& f : scaled.functions)
+    if (f.placement == sg::Placement::Single) {
+      const long k = -f.position * t.n;
+      if (f.derivatives[0].count(k)) f.derivatives[0][k] *= 2;
+    }
+  const auto failures = sg::verify_curve_table(scaled, s);
+  REQUIRE_FALSE(failures.empty());
+  sg::CurveTable changed = t;
+  changed.functions[2].derivatives[0].begin()->second += sg::Rational(1, 1000);
+  CHECK_FALSE(sg::verify_curve_table(changed, s).empty());
+  // The JSON keeps the derivative exactly.
+  const sg::CurveTable back = sg::curve_table_from_json(sg::curve_table_to_json(t), "nub-n3.json");
+  CHECK(back.functions[2].derivatives == t.functions[2].derivatives);
 }

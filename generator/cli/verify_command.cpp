@@ -77,7 +77,9 @@ bool verify_file(const std::string& file, const std::string& scheme_spec, const 
               << " exact values; scaling relations, partition of unity and symmetry hold exactly"
               << (curve.derivative_orders == 0 ? std::string(", no derivatives")
                                                : "; derivatives of order 1" + std::string(curve.derivative_orders > 1 ? " and 2" : "") +
-                                                     ": scaled scaling relations and polynomial moments hold exactly")
+                                                     (scheme.is_uniform()
+                                                          ? ": scaled scaling relations and polynomial moments hold exactly"
+                                                          : ": scaled scaling relations, zero sum and the slope at 0 hold exactly"))
               << ")\n";
   }
   for (const auto& f : failures) std::cout << file << ": FAIL: " << f << "\n";

@@ -55,6 +55,20 @@ void add_derivatives(CurveTable& table, const std::vector<CurveSolution>& psi, c
   table.derivatives_stop = stop;
 }
 
+void add_first_derivative(CurveTable& table, const CurveSolution& derivative, const std::string& stop) {
+  if (derivative.n != table.n || derivative.types.size() != table.functions.size())
+    throw Error("internal: a derivative solution that does not match its table");
+  for (std::size_t h = 0; h < table.functions.size(); ++h) {
+    std::map<long, Rational> values;
+    const TypeValues& tv = derivative.types[h];
+    for (long k = tv.range.first; k <= tv.range.last; ++k)
+      if (tv.at(k) != 0) values[k] = tv.at(k);
+    table.functions[h].derivatives = {std::move(values)};
+  }
+  table.derivative_orders = 1;
+  table.derivatives_stop = stop;
+}
+
 CurveSolution table_to_solution(const CurveTable& table, const CurveScheme& scheme) {
   if (table.functions.size() != scheme.types.size())
     throw Error("table has " + std::to_string(table.functions.size()) + " functions, scheme '" + scheme.name +

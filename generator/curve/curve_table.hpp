@@ -38,6 +38,9 @@ CurveTable make_table(const CurveScheme& scheme, const CurveSolution& solution);
 // Adds the derivatives of a uniform scheme's table from psi[r - 1], the solution
 // of derivative scheme r (difference_scheme.hpp) at the table's rate.
 void add_derivatives(CurveTable& table, const std::vector<CurveSolution>& psi, const std::string& stop);
+// Adds the first derivative of a non-uniform scheme's table: `derivative`
+// holds phi_h' for every type at the table's rate (nonuniform_derivative.hpp).
+void add_first_derivative(CurveTable& table, const CurveSolution& derivative, const std::string& stop);
 // Back to the dense solution form (for checks), using the scheme's supports.
 CurveSolution table_to_solution(const CurveTable& table, const CurveScheme& scheme);
 

@@ -3,6 +3,7 @@
 #include "base/error.hpp"
 #include "common/hash.hpp"
 #include "curve/difference_scheme.hpp"
+#include "curve/nonuniform_derivative.hpp"
 #include "curve/partition_of_unity.hpp"
 
 namespace sg {
@@ -75,6 +76,73 @@ void verify_derivatives(const CurveTable& table, const CurveScheme& scheme, std:
   }
 }
 
+// A non-uniform table's first derivative: zero outside each open support, the
+// relation phi_h'(k/n) = a sum c phi_g'((a k - n s)/n) at every grid point (at
+// 0 from the right on both sides), the derivatives summing to 0 everywhere, each
+// uniform type's sum_j j phi'(x - j) = 1, and at 0 the slope of the linear
+// function: sum_{j in L} xi_j B_j'(0) = 1 (linear_at_zero.hpp). The relation at
+// 0 is singular; that last equation makes the values unique.
+void verify_nonuniform_derivative(const CurveTable& table, const CurveScheme& scheme, std::vector<std::string>& failures) {
+  if (table.derivative_orders == 0) return;
+  const NonuniformDerivative plan = nonuniform_derivative_plan(scheme);
+  if (!plan.available || table.derivative_orders > 1) {
+    failures.push_back("the table has " + std::to_string(table.derivative_orders) + " derivative orders; the scheme has " +
+                       (plan.available ? "1" : "none: " + plan.stop));
+    return;
+  }
+  const long n = table.n, a = scheme.arity;
+  CurveSolution d;
+  d.n = n;
+  for (std::size_t h = 0; h < scheme.types.size(); ++h) {
+    TypeValues tv;
+    tv.range = open_support_grid(scheme.types[h], n);
+    tv.values.assign(static_cast<std::size_t>(std::max(0L, tv.range.size())), Rational(0));
+    for (const auto& [k, v] : table.functions[h].derivatives.at(0)) {
+      if (!tv.range.contains(k)) {
+        failures.push_back("the derivative of '" + scheme.types[h].name + "' is nonzero at x = " + to_string(Rational(k, n)) +
+                           ", outside its open support");
+        return;
+      }
+      tv.values[static_cast<std::size_t>(k - tv.range.first)] = v;
+    }
+    d.types.push_back(std::move(tv));
+  }
+  for (std::size_t h = 0; h < scheme.types.size(); ++h) {
+    const ScalingType& t = scheme.types[h];
+    const GridRange g = d.types[h].range;
+    for (long k = g.first - n; k <= g.last + n; ++k) {
+      Rational rhs = 0;
+      for (const Term& term : t.terms) rhs += term.coeff * d.types[term.type].at(a * k - n * term.shift);
+      rhs *= a;
+      if (rhs != d.types[h].at(k)) {
+        failures.push_back("scaling relation of the derivative of '" + t.name + "' fails at x = " + to_string(Rational(k, n)) +
+                           ": value " + excerpt(to_string(d.types[h].at(k))) + ", relation gives " + excerpt(to_string(rhs)));
+        return;
+      }
+    }
+    if (!t.translation_invariant()) continue;
+    const long j_lo = floor_to_long(-t.support_hi) - 1, j_hi = ceil_to_long(1 - t.support_lo) + 1;
+    for (long k0 = 0; k0 < n; ++k0) {
+      Rational sum = 0;
+      for (long j = j_lo; j <= j_hi; ++j) sum += Rational(j) * d.types[h].at(k0 - j * n);
+      if (sum != 1) {
+        failures.push_back("the derivative of '" + t.name + "': sum_j j phi'(x - j) at x = " + to_string(Rational(k0, n)) +
+                           " is " + excerpt(to_string(sum)) + ", not 1");
+        return;
+      }
+    }
+  }
+  if (const auto sum = check_partition_of_unity(scheme, d, 0)) failures.push_back("the derivatives' sum: " + *sum);
+  Rational slope = 0;
+  for (std::size_t i = 0; i < plan.at_zero.functions.size(); ++i) {
+    const PlacedFunction& f = plan.at_zero.functions[i];
+    slope += plan.at_zero.xi[i] * d.types[f.type].at(-f.j * n);
+  }
+  if (slope != 1)
+    failures.push_back("at x = 0 the derivatives give the linear function the slope " + excerpt(to_string(slope)) +
+                       " from the right, not 1");
+}
+
 }  // namespace
 
 std::vector<std::string> verify_curve_table(const CurveTable& table, const CurveScheme& scheme) {
@@ -111,7 +179,8 @@ std::vector<std::string> verify_curve_table(const CurveTable& table, const Curve
     }
   }
   if (const auto pou = check_partition_of_unity(scheme, sol)) failures.push_back(*pou);
-  verify_derivatives(table, scheme, failures);
+  if (scheme.is_uniform()) verify_derivatives(table, scheme, failures);
+  else verify_nonuniform_derivative(table, scheme, failures);
   // A uniform mask symmetric about its centre gives phi symmetric about (l + r) / (2 (a - 1)).
   if (scheme.is_uniform()) {
     const auto& terms = scheme.types[0].terms;

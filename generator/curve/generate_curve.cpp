@@ -12,6 +12,7 @@
 #include "curve/curve_table_verify.hpp"
 #include "curve/difference_scheme.hpp"
 #include "curve/eigen_solver.hpp"
+#include "curve/nonuniform_derivative.hpp"
 #include "curve/residue_solver.hpp"
 
 namespace sg {
@@ -21,13 +22,16 @@ std::vector<CurveTable> generate_curve_tables(const CurveScheme& scheme, const s
                                               const std::function<void(const std::string&)>& progress) {
   check_rates(rates, limits::kMaxCurveRate, "the largest rate for curve schemes");
   std::vector<CurveTable> tables(rates.size());
-  const DerivativeSchemes derivatives = derivative_schemes(scheme, kMaxDerivativeOrder);
+  const bool uniform = scheme.is_uniform();
+  const DerivativeSchemes derivatives = uniform ? derivative_schemes(scheme, kMaxDerivativeOrder) : DerivativeSchemes{};
+  const NonuniformDerivative nonuniform = uniform ? NonuniformDerivative{} : nonuniform_derivative_plan(scheme);
+  const std::size_t orders = uniform ? derivatives.schemes.size() : nonuniform.available ? 1 : 0;
+  const std::string& stop = uniform ? derivatives.stop : nonuniform.stop;
   if (progress)
     progress(scheme.name + ": " +
-             (derivatives.schemes.empty() ? std::string("values only")
-                                          : "values and derivatives of order 1" +
-                                                std::string(derivatives.schemes.size() > 1 ? " and 2" : "")) +
-             (derivatives.stop.empty() ? "" : "; " + derivatives.stop));
+             (orders == 0 ? std::string("values only")
+                          : "values and derivatives of order 1" + std::string(orders > 1 ? " and 2" : "")) +
+             (stop.empty() ? "" : "; " + stop));
   std::mutex report;
   std::size_t done = 0;
   // One scheme at one rate by the chosen route(s), both compared for exact equality.
@@ -43,8 +47,9 @@ std::vector<CurveTable> generate_curve_tables(const CurveScheme& scheme, const s
     tables[i] = make_table(scheme, solve(scheme, n));
     std::vector<CurveSolution> psi;
     for (const CurveScheme& d : derivatives.schemes) psi.push_back(solve(d, n));
-    if (scheme.is_uniform()) add_derivatives(tables[i], psi, derivatives.stop);
-    else tables[i].derivatives_stop = derivatives.stop;
+    if (uniform) add_derivatives(tables[i], psi, derivatives.stop);
+    else if (nonuniform.available) add_first_derivative(tables[i], solve_nonuniform_derivative(scheme, nonuniform, n), stop);
+    else tables[i].derivatives_stop = stop;
     const auto failures = verify_curve_table(tables[i], scheme);
     if (!failures.empty())
       throw Error("scheme '" + scheme.name + "', n = " + std::to_string(n) + ": verification failed: " + failures.front());

@@ -31,7 +31,8 @@ Rational invariant_sum_at(const CurveScheme& s, const CurveSolution& sol, long K
   return sum;
 }
 
-std::optional<std::string> check_partition_of_unity(const CurveScheme& s, const CurveSolution& sol) {
+std::optional<std::string> check_partition_of_unity(const CurveScheme& s, const CurveSolution& sol,
+                                                    const Rational& expected) {
   const long n = sol.n;
   std::vector<std::size_t> invariant, special;
   for (std::size_t h = 0; h < s.types.size(); ++h)
@@ -43,7 +44,7 @@ std::optional<std::string> check_partition_of_unity(const CurveScheme& s, const 
         const GridRange& g = sol.types[h].range;
         for (long j = ceil_div(g.first - r, n); j <= floor_div(g.last - r, n); ++j) sum += sol.types[h].at(j * n + r);
       }
-      if (sum != 1) {
+      if (sum != expected) {
         std::string names;
         for (std::size_t h : group) names += (names.empty() ? "" : "+") + s.types[h].name;
         return "partition of unity fails at x = " + std::to_string(r) + "/" + std::to_string(n) + " (mod 1) for " +
@@ -59,7 +60,7 @@ std::optional<std::string> check_partition_of_unity(const CurveScheme& s, const 
   for (long K = lo - n; K <= hi + n; ++K) {
     Rational sum = invariant_sum_at(s, sol, K);
     for (std::size_t h : special) sum += sol.types[h].at(K - n * s.types[h].position);
-    if (sum != 1)
+    if (sum != expected)
       return "partition of unity fails at x = " + to_string(Rational(K, n)) + ": the sum is " + excerpt(to_string(sum));
   }
   return std::nullopt;

@@ -18,7 +18,9 @@ std::vector<std::vector<std::size_t>> pou_groups(const CurveScheme& s, const std
 Rational invariant_sum_at(const CurveScheme& s, const CurveSolution& sol, long K);
 
 // Checks partition of unity at every residue and at every grid point near the
-// special point; returns a description of the first failure.
-std::optional<std::string> check_partition_of_unity(const CurveScheme& s, const CurveSolution& sol);
+// special point; returns a description of the first failure. With `sum` 0 and
+// the derivatives in `sol`: their sum vanishes (the derivative of 1).
+std::optional<std::string> check_partition_of_unity(const CurveScheme& s, const CurveSolution& sol,
+                                                    const Rational& sum = 1);
 
 }  // namespace sg

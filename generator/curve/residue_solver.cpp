@@ -7,6 +7,7 @@
 #include "algebra/integer_division.hpp"
 #include "base/error.hpp"
 #include "curve/partition_of_unity.hpp"
+#include "curve/special_columns.hpp"
 
 namespace sg {
 namespace {
@@ -208,57 +209,11 @@ class InvariantPart {
   std::vector<std::vector<Rational>> values_;
 };
 
-// Special (single-column) types in global coordinates X = K/n: W_h(K) = phi_h(K/n - p_h).
+// Special (single-column) types: every X = K/n but 0 along the orbits, then
+// X = 0: W(0) = A W(0) + b with partition of unity.
 void solve_special_types(const CurveScheme& s, long n, CurveSolution& sol) {
-  const long a = s.arity;
-  std::vector<std::size_t> special;
-  for (std::size_t h = 0; h < s.types.size(); ++h)
-    if (!s.types[h].translation_invariant()) special.push_back(h);
-  if (special.empty()) return;
-  auto global_value = [&](std::size_t h, long K) -> Rational {
-    return sol.types[h].at(K - n * s.types[h].position);
-  };
-  auto set_global_value = [&](std::size_t h, long K, const Rational& v) {
-    TypeValues& tv = sol.types[h];
-    tv.values[K - n * s.types[h].position - tv.range.first] = v;
-  };
-  // Right side of the relation of special h at X = K/n, split into special unknowns at aK and known values.
-  auto relation = [&](std::size_t h, long K, std::vector<std::pair<std::size_t, Rational>>& unknown_terms) {
-    const ScalingType& t = s.types[h];
-    Rational known = 0;
-    for (const Term& term : t.terms) {
-      const ScalingType& g = s.types[term.type];
-      if (g.translation_invariant()) {
-        known += term.coeff * sol.types[term.type].at(a * K - n * (a * t.position + term.shift));
-      } else {
-        if (term.shift != g.position - a * t.position)
-          throw Error(s.source + ": special column " + t.name + " is not stationary around 0");
-        unknown_terms.emplace_back(term.type, term.coeff);
-      }
-    }
-    return known;
-  };
-  long kmax = 0;
-  for (std::size_t h : special) {
-    const GridRange& g = sol.types[h].range;
-    const long p = s.types[h].position;
-    kmax = std::max({kmax, std::labs(g.first + n * p), std::labs(g.last + n * p)});
-  }
-  // Orbits K -> aK grow in modulus, so descending |K| meets every dependency first.
-  for (long mag = kmax; mag >= 1; --mag)
-    for (long K : {mag, -mag})
-      for (std::size_t h : special) {
-        const TypeValues& tv = sol.types[h];
-        if (!tv.range.contains(K - n * s.types[h].position)) continue;
-        std::vector<std::pair<std::size_t, Rational>> terms;
-        Rational v = relation(h, K, terms);
-        for (const auto& [g, c] : terms) v += c * global_value(g, a * K);
-        set_global_value(h, K, v);
-      }
-  // K = 0: W(0) = A W(0) + b with partition of unity.
-  std::vector<std::size_t> at_zero;
-  for (std::size_t h : special)
-    if (sol.types[h].range.contains(-n * s.types[h].position)) at_zero.push_back(h);
+  solve_special_orbits(s, sol, Rational(1));
+  const std::vector<std::size_t> at_zero = special_types_at_zero(s, sol);
   if (at_zero.empty()) return;
   auto index_of = [&](std::size_t h) {
     return static_cast<std::size_t>(std::find(at_zero.begin(), at_zero.end(), h) - at_zero.begin());
@@ -266,7 +221,7 @@ void solve_special_types(const CurveScheme& s, long n, CurveSolution& sol) {
   ExactLinearSystem sys(at_zero.size());
   for (std::size_t h : at_zero) {
     std::vector<std::pair<std::size_t, Rational>> terms, eq{{index_of(h), Rational(1)}};
-    const Rational known = relation(h, 0, terms);
+    const Rational known = special_relation(s, sol, h, 0, terms);
     for (const auto& [g, c] : terms)
       if (index_of(g) < at_zero.size()) eq.emplace_back(index_of(g), -c);
     sys.add_equation(eq, known);
@@ -279,7 +234,7 @@ void solve_special_types(const CurveScheme& s, long n, CurveSolution& sol) {
     throw Error("scheme '" + s.name + "', n = " + std::to_string(n) +
                 ": the scaling relations of the special columns at x = 0 with partition of unity have " +
                 result.describe());
-  for (std::size_t h : at_zero) set_global_value(h, 0, result.values[index_of(h)]);
+  for (std::size_t h : at_zero) set_global_value(s, sol, h, 0, result.values[index_of(h)]);
 }
 
 }  // namespace
