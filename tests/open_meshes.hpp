@@ -7,14 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "bundled_meshes.hpp"
 #include "stencil_runtime/mesh.hpp"
 #include "stencil_runtime/mesh_io.hpp"
 
 namespace test_meshes {
 
 using stencil_runtime::Mesh;
-
-inline const std::filesystem::path kMeshes = std::filesystem::path(STENCIL_SOURCE_DIR) / "meshes";
 
 // An open (columns x rows) grid of quads with uneven heights.
 inline Mesh open_grid(int columns, int rows) {

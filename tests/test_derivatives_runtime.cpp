@@ -203,13 +203,7 @@ TEST_CASE("nonpoly du and dv are the limits of difference quotients of exact lim
       std::vector<double> errors;
       for (int bits : {8, 12, 16}) {
         const Fraction h = Fraction::make(1, std::int64_t{1} << bits);
-        const double inv = static_cast<double>(std::int64_t{1} << bits) / 2;
-        auto quotient = [&](const ExactParameter& plus, const ExactParameter& minus) {
-          const Point a = surface.evaluate(f, plus), b = surface.evaluate(f, minus);
-          return Point{(a[0] - b[0]) * inv, (a[1] - b[1]) * inv, (a[2] - b[2]) * inv};
-        };
-        const Point qu = quotient({add(u0, h), v0}, {subtract(u0, h), v0});
-        const Point qv = quotient({u0, add(v0, h)}, {u0, subtract(v0, h)});
+        const auto [qu, qv] = central_quotients(surface, f, {u0, v0}, h, static_cast<double>(std::int64_t{1} << bits) / 2);
         errors.push_back(std::max(distance(qu, d.du), distance(qv, d.dv)) / size);
       }
       INFO(name << " face " << f << ": errors " << errors[0] << " " << errors[1] << " " << errors[2]);

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "bfr_reference.hpp"
+#include "bundled_meshes.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
@@ -17,13 +18,7 @@
 using namespace stencil_runtime;
 using namespace test_runtime;
 namespace fs = std::filesystem;
-
-namespace {
-
-const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
-Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
-
-}  // namespace
+using test_meshes::bundled;
 
 TEST_CASE("Catmull-Clark at real parameters equals OpenSubdiv at the same parameters", "[runtime][real]") {
   const auto cc = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 24", "sgs").string());

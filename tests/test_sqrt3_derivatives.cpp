@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 
+#include "bundled_meshes.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
@@ -19,14 +20,13 @@
 using namespace stencil_runtime;
 using namespace test_runtime;
 namespace fs = std::filesystem;
+using test_meshes::bundled;
+using test_meshes::kMeshes;
+using test_meshes::kTriangleMeshes;
 
 namespace {
 
-const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
-const char* kTriangleMeshes[] = {"icosahedron", "tri-torus", "tri-mix"};
-
 fs::path sqrt3_tables() { return generated_table("sqrt3", "--valence 3-8 --n 1-9", "sgt"); }
-Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
 double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // The point t/n along edge c (corner c -> c+1) of a triangle face.
@@ -98,13 +98,7 @@ TEST_CASE("sqrt(3) du and dv are the limits of difference quotients of exact lim
         for (int k : {3, 5, 7}) {
           const std::int64_t power = static_cast<std::int64_t>(std::pow(3, k));
           const Fraction h = Fraction::make(1, power);
-          const double inv = static_cast<double>(power) / 2;
-          auto quotient = [&](const ExactParameter& plus, const ExactParameter& minus) {
-            const Point a = surface.evaluate(f, plus), b = surface.evaluate(f, minus);
-            return Point{(a[0] - b[0]) * inv, (a[1] - b[1]) * inv, (a[2] - b[2]) * inv};
-          };
-          const Point qu = quotient({add(u0, h), v0}, {subtract(u0, h), v0});
-          const Point qv = quotient({u0, add(v0, h)}, {u0, subtract(v0, h)});
+          const auto [qu, qv] = central_quotients(surface, f, {u0, v0}, h, static_cast<double>(power) / 2);
           errors.push_back(std::max(distance(qu, d.du), distance(qv, d.dv)) / size);
         }
         INFO(name << " face " << f << " at (" << u0.str() << ", " << v0.str() << "): errors " << errors[0] << " " << errors[1]

@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "bundled_meshes.hpp"
 #include "cli.hpp"
 #include "runtime_checks.hpp"
 #include "sqrt3_reference.hpp"
@@ -21,16 +22,15 @@
 using namespace stencil_runtime;
 using namespace test_runtime;
 namespace fs = std::filesystem;
+using test_meshes::bundled;
+using test_meshes::kMeshes;
+using test_meshes::kTriangleMeshes;
 
 namespace {
-
-const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
-const char* kTriangleMeshes[] = {"icosahedron", "tri-torus", "tri-mix"};
 
 // sqrt(3) tables at the rates 3^j the reference reaches (and 1), once per test process.
 fs::path sqrt3_tables() { return generated_table("sqrt3", "--valence 3-8 --n 1,3,9,27", "sgt"); }
 
-Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
 
 }  // namespace
 

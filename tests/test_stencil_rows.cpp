@@ -9,6 +9,7 @@
 #include <random>
 
 #include "bfr_reference.hpp"
+#include "bundled_meshes.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
@@ -16,12 +17,9 @@
 using namespace stencil_runtime;
 using namespace test_runtime;
 namespace fs = std::filesystem;
+using test_meshes::bundled;
 
 namespace {
-
-const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
-
-Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
 
 // Grid samples of every face (every `step`-th face), in each face's domain.
 std::vector<Sample> samples_of(const SurfaceTopology& topology, std::size_t step) {

@@ -9,6 +9,7 @@
 #include <random>
 #include <type_traits>
 
+#include "bundled_meshes.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
@@ -16,13 +17,9 @@
 using namespace stencil_runtime;
 using namespace test_runtime;
 namespace fs = std::filesystem;
+using test_meshes::bundled;
 
 namespace {
-
-const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
-
-Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
-
 
 // The mesh with every vertex moved by a random offset of up to a tenth of its size.
 Mesh moved(Mesh m, unsigned seed) {

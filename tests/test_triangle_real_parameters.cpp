@@ -10,6 +10,7 @@
 #include <random>
 
 #include "bfr_reference.hpp"
+#include "bundled_meshes.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
@@ -17,14 +18,8 @@
 using namespace stencil_runtime;
 using namespace test_runtime;
 namespace fs = std::filesystem;
-
-namespace {
-
-const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
-const char* kTriangleMeshes[] = {"icosahedron", "tri-torus", "tri-mix"};
-Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
-
-}  // namespace
+using test_meshes::bundled;
+using test_meshes::kTriangleMeshes;
 
 TEST_CASE("Loop at real parameters equals OpenSubdiv at the same parameters", "[runtime][triangle][real][opensubdiv]") {
   const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 24", "sgt").string());

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "bfr_reference.hpp"
+#include "bundled_meshes.hpp"
 #include "cli.hpp"
 #include "runtime_checks.hpp"
 #include "runtime_api.hpp"
@@ -19,16 +20,15 @@
 using namespace stencil_runtime;
 using namespace test_runtime;
 namespace fs = std::filesystem;
+using test_meshes::bundled;
+using test_meshes::kMeshes;
+using test_meshes::kTriangleMeshes;
 
 namespace {
-
-const fs::path kMeshes = fs::path(STENCIL_SOURCE_DIR) / "meshes";
-const char* kTriangleMeshes[] = {"icosahedron", "tri-torus", "tri-mix"};
 
 // Loop tables as the quick start makes them, once per test process.
 fs::path loop_tables() { return generated_table("loop", "--valence 3-8 --n 24", "sgt"); }
 
-Mesh bundled(const std::string& name) { return read_obj((kMeshes / (name + ".obj")).string()); }
 
 bfr_reference::BfrLimit loop_reference(const Mesh& mesh) {
   return {mesh.positions, mesh.face_sizes, mesh.face_vertices, OpenSubdiv::Sdc::SCHEME_LOOP};

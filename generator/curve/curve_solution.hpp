@@ -27,4 +27,7 @@ struct CurveSolution {
   bool operator==(const CurveSolution& o) const;
 };
 
+// Every type of `scheme` on its open support's grid at rate n, all values zero.
+CurveSolution zero_solution(const CurveScheme& scheme, long n);
+
 }  // namespace sg

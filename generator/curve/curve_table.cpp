@@ -69,23 +69,24 @@ void add_first_derivative(CurveTable& table, const CurveSolution& derivative, co
   table.derivatives_stop = stop;
 }
 
-CurveSolution table_to_solution(const CurveTable& table, const CurveScheme& scheme) {
+CurveSolution table_to_solution(const CurveTable& table, const CurveScheme& scheme, int order) {
   if (table.functions.size() != scheme.types.size())
     throw Error("table has " + std::to_string(table.functions.size()) + " functions, scheme '" + scheme.name +
                 "' has " + std::to_string(scheme.types.size()));
-  CurveSolution sol;
-  sol.n = table.n;
+  CurveSolution sol = zero_solution(scheme, table.n);
   for (std::size_t h = 0; h < scheme.types.size(); ++h) {
-    TypeValues tv;
-    tv.range = open_support_grid(scheme.types[h], table.n);
-    tv.values.assign(static_cast<std::size_t>(std::max(0L, tv.range.size())), Rational(0));
-    for (const auto& [k, v] : table.functions[h].values) {
+    const CurveTable::Function& f = table.functions[h];
+    if (order > static_cast<int>(f.derivatives.size()))
+      throw Error("function '" + excerpt(f.name) + "' has no derivative of order " + std::to_string(order));
+    const std::map<long, Rational>& values = order == 0 ? f.values : f.derivatives[static_cast<std::size_t>(order - 1)];
+    TypeValues& tv = sol.types[h];
+    for (const auto& [k, v] : values) {
       if (!tv.range.contains(k))
-        throw Error("function '" + excerpt(table.functions[h].name) + "' has a nonzero value at x = " +
-                    to_string(Rational(k, table.n)) + ", outside its support");
-      tv.values[k - tv.range.first] = v;
+        throw Error("function '" + excerpt(f.name) + "' has a nonzero " +
+                    (order == 0 ? std::string("value") : "derivative of order " + std::to_string(order)) + " at x = " +
+                    to_string(Rational(k, table.n)) + ", outside its open support");
+      tv.values[static_cast<std::size_t>(k - tv.range.first)] = v;
     }
-    sol.types.push_back(std::move(tv));
   }
   return sol;
 }

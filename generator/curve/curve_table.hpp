@@ -41,8 +41,10 @@ void add_derivatives(CurveTable& table, const std::vector<CurveSolution>& psi, c
 // Adds the first derivative of a non-uniform scheme's table: `derivative`
 // holds phi_h' for every type at the table's rate (nonuniform_derivative.hpp).
 void add_first_derivative(CurveTable& table, const CurveSolution& derivative, const std::string& stop);
-// Back to the dense solution form (for checks), using the scheme's supports.
-CurveSolution table_to_solution(const CurveTable& table, const CurveScheme& scheme);
+// Back to the dense solution form (for checks), using the scheme's supports:
+// the values, or with `order` r >= 1 the r-th derivatives. Throws sg::Error for
+// a nonzero entry outside a function's open support, or an order it lacks.
+CurveSolution table_to_solution(const CurveTable& table, const CurveScheme& scheme, int order = 0);
 
 const char* placement_name(Placement p);
 

@@ -92,20 +92,11 @@ void verify_nonuniform_derivative(const CurveTable& table, const CurveScheme& sc
   }
   const long n = table.n, a = scheme.arity;
   CurveSolution d;
-  d.n = n;
-  for (std::size_t h = 0; h < scheme.types.size(); ++h) {
-    TypeValues tv;
-    tv.range = open_support_grid(scheme.types[h], n);
-    tv.values.assign(static_cast<std::size_t>(std::max(0L, tv.range.size())), Rational(0));
-    for (const auto& [k, v] : table.functions[h].derivatives.at(0)) {
-      if (!tv.range.contains(k)) {
-        failures.push_back("the derivative of '" + scheme.types[h].name + "' is nonzero at x = " + to_string(Rational(k, n)) +
-                           ", outside its open support");
-        return;
-      }
-      tv.values[static_cast<std::size_t>(k - tv.range.first)] = v;
-    }
-    d.types.push_back(std::move(tv));
+  try {
+    d = table_to_solution(table, scheme, 1);
+  } catch (const Error& e) {
+    failures.push_back(e.what());
+    return;
   }
   for (std::size_t h = 0; h < scheme.types.size(); ++h) {
     const ScalingType& t = scheme.types[h];

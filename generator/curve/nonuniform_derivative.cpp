@@ -59,14 +59,7 @@ NonuniformDerivative nonuniform_derivative_plan(const CurveScheme& s) {
 CurveSolution solve_nonuniform_derivative(const CurveScheme& s, const NonuniformDerivative& plan, long n) {
   if (!plan.available) throw Error("internal: no derivative plan for scheme '" + s.name + "'");
   const long a = s.arity;
-  CurveSolution d;
-  d.n = n;
-  for (const ScalingType& t : s.types) {
-    TypeValues tv;
-    tv.range = open_support_grid(t, n);
-    tv.values.assign(static_cast<std::size_t>(std::max(0L, tv.range.size())), Rational(0));
-    d.types.push_back(std::move(tv));
-  }
+  CurveSolution d = zero_solution(s, n);
   // Invariant types: phi'(x) = psi(x) - psi(x - 1).
   for (std::size_t h = 0; h < s.types.size(); ++h) {
     if (!plan.psi[h]) continue;
@@ -85,24 +78,15 @@ CurveSolution solve_nonuniform_derivative(const CurveScheme& s, const Nonuniform
   // x = 0: G_h = a (known_h + sum c G_g), with sum_{j in L} xi_j B_j'(0+) = 1.
   const std::vector<std::size_t> at_zero = special_types_at_zero(s, d);
   if (at_zero.empty()) return d;
-  auto index_of = [&](std::size_t h) {
-    return static_cast<std::size_t>(std::find(at_zero.begin(), at_zero.end(), h) - at_zero.begin());
-  };
   ExactLinearSystem system(at_zero.size());
-  for (std::size_t h : at_zero) {
-    std::vector<std::pair<std::size_t, Rational>> terms, eq{{index_of(h), Rational(1)}};
-    const Rational known = special_relation(s, d, h, 0, terms);
-    for (const auto& [g, c] : terms)
-      if (index_of(g) < at_zero.size()) eq.emplace_back(index_of(g), -a * c);
-    system.add_equation(eq, a * known);
-  }
+  add_relations_at_zero(s, d, at_zero, Rational(a), system);
   std::vector<std::pair<std::size_t, Rational>> scale;
   Rational rest = 1;
   const LinearAtZero& l = plan.at_zero;
   for (std::size_t i = 0; i < l.functions.size(); ++i) {
     const PlacedFunction& f = l.functions[i];
     if (s.types[f.type].translation_invariant()) rest -= l.xi[i] * d.types[f.type].at(-f.j * n);
-    else if (index_of(f.type) < at_zero.size()) scale.emplace_back(index_of(f.type), l.xi[i]);
+    else if (position_in(at_zero, f.type) < at_zero.size()) scale.emplace_back(position_in(at_zero, f.type), l.xi[i]);
   }
   system.add_equation(scale, rest);
   const LinearSolution result = system.solve();
@@ -110,7 +94,7 @@ CurveSolution solve_nonuniform_derivative(const CurveScheme& s, const Nonuniform
     throw Error("scheme '" + s.name + "', n = " + std::to_string(n) +
                 ": the differentiated relations of the special columns at x = 0 with the linear function's slope have " +
                 result.describe());
-  for (std::size_t h : at_zero) set_global_value(s, d, h, 0, result.values[index_of(h)]);
+  for (std::size_t i = 0; i < at_zero.size(); ++i) set_global_value(s, d, at_zero[i], 0, result.values[i]);
   return d;
 }
 

@@ -215,40 +215,24 @@ void solve_special_types(const CurveScheme& s, long n, CurveSolution& sol) {
   solve_special_orbits(s, sol, Rational(1));
   const std::vector<std::size_t> at_zero = special_types_at_zero(s, sol);
   if (at_zero.empty()) return;
-  auto index_of = [&](std::size_t h) {
-    return static_cast<std::size_t>(std::find(at_zero.begin(), at_zero.end(), h) - at_zero.begin());
-  };
   ExactLinearSystem sys(at_zero.size());
-  for (std::size_t h : at_zero) {
-    std::vector<std::pair<std::size_t, Rational>> terms, eq{{index_of(h), Rational(1)}};
-    const Rational known = special_relation(s, sol, h, 0, terms);
-    for (const auto& [g, c] : terms)
-      if (index_of(g) < at_zero.size()) eq.emplace_back(index_of(g), -c);
-    sys.add_equation(eq, known);
-  }
+  add_relations_at_zero(s, sol, at_zero, Rational(1), sys);
   std::vector<std::pair<std::size_t, Rational>> pou;
-  for (std::size_t h : at_zero) pou.emplace_back(index_of(h), 1);
+  for (std::size_t i = 0; i < at_zero.size(); ++i) pou.emplace_back(i, 1);
   sys.add_equation(pou, 1 - invariant_sum_at(s, sol, 0));
   const LinearSolution result = sys.solve();
   if (result.status != LinearSolution::Status::Unique)
     throw Error("scheme '" + s.name + "', n = " + std::to_string(n) +
                 ": the scaling relations of the special columns at x = 0 with partition of unity have " +
                 result.describe());
-  for (std::size_t h : at_zero) set_global_value(s, sol, h, 0, result.values[index_of(h)]);
+  for (std::size_t i = 0; i < at_zero.size(); ++i) set_global_value(s, sol, at_zero[i], 0, result.values[i]);
 }
 
 }  // namespace
 
 CurveSolution solve_by_residues(const CurveScheme& s, long n) {
   if (n < 1) throw Error("rate n must be at least 1, got " + std::to_string(n));
-  CurveSolution sol;
-  sol.n = n;
-  for (const ScalingType& t : s.types) {
-    TypeValues tv;
-    tv.range = open_support_grid(t, n);
-    tv.values.assign(static_cast<std::size_t>(std::max(0L, tv.range.size())), Rational(0));
-    sol.types.push_back(std::move(tv));
-  }
+  CurveSolution sol = zero_solution(s, n);
   InvariantPart(s, n, sol).solve();
   solve_special_types(s, n, sol);
   if (const auto failure = check_partition_of_unity(s, sol))

@@ -65,4 +65,19 @@ std::vector<std::size_t> special_types_at_zero(const CurveScheme& s, const Curve
   return at_zero;
 }
 
+std::size_t position_in(const std::vector<std::size_t>& types, std::size_t h) {
+  return static_cast<std::size_t>(std::find(types.begin(), types.end(), h) - types.begin());
+}
+
+void add_relations_at_zero(const CurveScheme& s, const CurveSolution& sol, const std::vector<std::size_t>& at_zero,
+                           const Rational& factor, ExactLinearSystem& system) {
+  for (std::size_t h : at_zero) {
+    std::vector<std::pair<std::size_t, Rational>> terms, eq{{position_in(at_zero, h), Rational(1)}};
+    const Rational known = special_relation(s, sol, h, 0, terms);
+    for (const auto& [g, c] : terms)
+      if (position_in(at_zero, g) < at_zero.size()) eq.emplace_back(position_in(at_zero, g), -factor * c);
+    system.add_equation(eq, factor * known);
+  }
+}
+
 }  // namespace sg

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "algebra/exact_linear_system.hpp"
 #include "curve/curve_solution.hpp"
 
 namespace sg {
@@ -28,6 +29,16 @@ void solve_special_orbits(const CurveScheme& s, CurveSolution& sol, const Ration
 
 // The special types whose open support contains X = 0 (the unknowns there).
 std::vector<std::size_t> special_types_at_zero(const CurveScheme& s, const CurveSolution& sol);
+
+// Index of type h among `types` (types.size() when absent).
+std::size_t position_in(const std::vector<std::size_t>& types, std::size_t h);
+
+// The relations at X = 0 of the special types `at_zero` (special_types_at_zero)
+// as equations over those unknowns: G_h - factor sum c G_g = factor known_h.
+// Singular on their own (A has the eigenvalue 1, and 1/a for the derivative):
+// the caller adds the equation that fixes the solution.
+void add_relations_at_zero(const CurveScheme& s, const CurveSolution& sol, const std::vector<std::size_t>& at_zero,
+                           const Rational& factor, ExactLinearSystem& system);
 
 // Sets the global value of type h at X = K/n (inside its support).
 void set_global_value(const CurveScheme& s, CurveSolution& sol, std::size_t h, long K, const Rational& v);

@@ -151,21 +151,18 @@ void close_layouts(const TriangleScheme& scheme, TriangleLayouts& layouts) {
   }
 }
 
-bool regular_basis_is_polynomial(const TriangleScheme& scheme) {
-  // Every chart point the regular patch's stencils use, as the layout.
-  constexpr long g = 12;
-  const TrianglePatch<Rational> patch = solve_triangle_patch<Rational>(scheme, 6, g, solve_regular(scheme, g));
-  std::set<std::size_t> used;
-  for (const auto& stencil : patch.stencils)
-    for (const auto& [id, w] : stencil) used.insert(id);
-  std::vector<SectorPoint> layout;
-  for (std::size_t id : used) layout.push_back(patch.chart.point(id));
-  return regular_polynomial(scheme, layout).degree > 0;
+namespace {
+
+constexpr long kPolynomialGrid = 12;  // holds the nodes of degrees 1, 2, 3, 4 and 6
+
+TrianglePatch<Rational> regular_patch_on_polynomial_grid(const TriangleScheme& scheme) {
+  return solve_triangle_patch<Rational>(scheme, 6, kPolynomialGrid, solve_regular(scheme, kPolynomialGrid));
 }
 
-RegularPolynomial regular_polynomial(const TriangleScheme& scheme, const std::vector<SectorPoint>& layout) {
-  constexpr long g = 12;  // holds the nodes of degrees 1, 2, 3, 4 and 6
-  const TrianglePatch<Rational> patch = solve_triangle_patch<Rational>(scheme, 6, g, solve_regular(scheme, g));
+// The interpolating polynomials of `patch` (the regular patch on the grid
+// kPolynomialGrid) over `layout`, or degree 0.
+RegularPolynomial interpolate_regular_patch(const TrianglePatch<Rational>& patch, const std::vector<SectorPoint>& layout) {
+  constexpr long g = kPolynomialGrid;
   // values[h][(i, j)]: point h's weight at (i/g, j/g)
   std::map<std::size_t, std::size_t> position;
   for (std::size_t h = 0; h < layout.size(); ++h) position.emplace(patch.chart.index(layout[h]), h);
@@ -209,6 +206,23 @@ RegularPolynomial regular_polynomial(const TriangleScheme& scheme, const std::ve
     if (all) return out;
   }
   return {};
+}
+
+}  // namespace
+
+bool regular_basis_is_polynomial(const TriangleScheme& scheme) {
+  // Every chart point the regular patch's stencils use, as the layout.
+  const TrianglePatch<Rational> patch = regular_patch_on_polynomial_grid(scheme);
+  std::set<std::size_t> used;
+  for (const auto& stencil : patch.stencils)
+    for (const auto& [id, w] : stencil) used.insert(id);
+  std::vector<SectorPoint> layout;
+  for (std::size_t id : used) layout.push_back(patch.chart.point(id));
+  return interpolate_regular_patch(patch, layout).degree > 0;
+}
+
+RegularPolynomial regular_polynomial(const TriangleScheme& scheme, const std::vector<SectorPoint>& layout) {
+  return interpolate_regular_patch(regular_patch_on_polynomial_grid(scheme), layout);
 }
 
 }  // namespace sg

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "family/parameter_ops.hpp"
+#include "family/stencil_sum.hpp"
 #include "mesh/polygon_links.hpp"
 #include "quad_creases.hpp"
 #include "family/sharp_cut.hpp"
@@ -411,8 +412,7 @@ Approximation QuadFamily::descend(std::size_t face, P u, P v, double tolerance, 
   const QuadPatchDescent& descent = checked_descent();
   const auto [pf, q] = patch_parameter(face, u, v);
   const QuadPatch& patch = patches_[pf];
-  std::vector<Point> points(patch.points.size());
-  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
+  std::vector<Point> points = gather_points(patch.points, prepared);
   return descent.evaluate(patch.valence, points, q[0], q[1], tolerance);
 }
 
@@ -447,8 +447,7 @@ void QuadFamily::root(std::size_t prepared_face, const Point* prepared, SubPatch
   const QuadPatch& patch = patches_[prepared_face];
   out.face = prepared_face;
   out.kind = patch.valence;
-  out.points.resize(patch.points.size());
-  for (std::size_t h = 0; h < out.points.size(); ++h) out.points[h] = prepared[patch.points[h]];
+  gather_points(patch.points, prepared, out.points);
   out.domain = SubDomain::unit(false);
 }
 

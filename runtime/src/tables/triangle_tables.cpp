@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "binary_reader.hpp"
+#include "monomial_jet.hpp"
 #include "stencil_runtime/limits.hpp"
 
 namespace stencil_runtime {
@@ -223,19 +224,10 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
             const double x = static_cast<double>(3 * i + kind) / (3.0 * n), y = static_cast<double>(3 * j + kind) / (3.0 * n);
             double* du = region.du.data() + static_cast<std::size_t>(index[k]) * points;
             double* dv = region.dv.data() + static_cast<std::size_t>(index[k]) * points;
-            // d/dx and d/dy of each monomial x^e y^f, f = 0..d, e = 0..d-f (the coefficients' order).
-            std::vector<double> px(static_cast<std::size_t>(t.degree_ + 1), 1.0), py = px, mx(terms), my(terms);
-            for (int e = 1; e <= t.degree_; ++e)
-              px[static_cast<std::size_t>(e)] = px[static_cast<std::size_t>(e - 1)] * x, py[static_cast<std::size_t>(e)] = py[static_cast<std::size_t>(e - 1)] * y;
-            std::size_t term = 0;
-            for (int f = 0; f <= t.degree_; ++f)
-              for (int e = 0; e + f <= t.degree_; ++e, ++term) {
-                mx[term] = e > 0 ? e * px[static_cast<std::size_t>(e - 1)] * py[static_cast<std::size_t>(f)] : 0.0;
-                my[term] = f > 0 ? f * px[static_cast<std::size_t>(e)] * py[static_cast<std::size_t>(f - 1)] : 0.0;
-              }
+            const MonomialJet m(t.degree_, x, y);
             for (std::size_t h = 0; h < points; ++h) {
               double wx = 0, wy = 0;
-              for (std::size_t q = 0; q < terms; ++q) wx += t.polynomial_[h * terms + q] * mx[q], wy += t.polynomial_[h * terms + q] * my[q];
+              for (std::size_t q = 0; q < terms; ++q) wx += t.polynomial_[h * terms + q] * m.dx[q], wy += t.polynomial_[h * terms + q] * m.dy[q];
               du[h] = wx, dv[h] = wy;
             }
           }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "family/parameter_ops.hpp"
+#include "tables/monomial_jet.hpp"
 
 namespace stencil_runtime {
 
@@ -85,18 +86,12 @@ TrianglePatchDescent::TrianglePatchDescent(const TriangleTables& tables) : table
 Point TrianglePatchDescent::polynomial(const std::vector<Point>& q, double x, double y) const {
   const int d = tables_.polynomial_degree();
   const std::size_t terms = static_cast<std::size_t>((d + 1) * (d + 2) / 2);
-  std::vector<double> monomials;
-  monomials.reserve(terms);
-  double yf = 1;
-  for (int f = 0; f <= d; ++f, yf *= y) {
-    double t = yf;
-    for (int e = 0; e + f <= d; ++e, t *= x) monomials.push_back(t);
-  }
+  const MonomialJet m(d, x, y);
   const std::vector<double>& c = tables_.polynomial();
   Point out{0, 0, 0};
   for (std::size_t h = 0; h < q.size(); ++h) {
     double w = 0;
-    for (std::size_t k = 0; k < terms; ++k) w += c[h * terms + k] * monomials[k];
+    for (std::size_t k = 0; k < terms; ++k) w += c[h * terms + k] * m.value[k];
     for (std::size_t k = 0; k < 3; ++k) out[k] += w * q[h][k];
   }
   return out;
@@ -245,31 +240,15 @@ SecondDerivatives TrianglePatchDescent::regular_derivatives(const std::vector<Po
   const int d = tables_.polynomial_degree();
   const std::size_t terms = static_cast<std::size_t>((d + 1) * (d + 2) / 2);
   const std::vector<double>& coefficients = tables_.polynomial();
-  const double X = x.value, Y = y.value;
-  // X^e (0 for e < 0), likewise for Y: a table, not std::pow (this runs in
-  // the closest-point search's inner loop).
-  std::vector<double> px(static_cast<std::size_t>(d + 3), 0.0), py(static_cast<std::size_t>(d + 3), 0.0);
-  px[2] = py[2] = 1;
-  for (int e = 1; e <= d; ++e) px[static_cast<std::size_t>(e + 2)] = px[static_cast<std::size_t>(e + 1)] * X, py[static_cast<std::size_t>(e + 2)] = py[static_cast<std::size_t>(e + 1)] * Y;
-  const auto power = [](const std::vector<double>& p, int e) { return p[static_cast<std::size_t>(e + 2)]; };
-  std::vector<double> value, dX, dY, dXX, dXY, dYY;
-  for (int f = 0; f <= d; ++f)
-    for (int e = 0; e + f <= d; ++e) {
-      value.push_back(power(px, e) * power(py, f));
-      dX.push_back(e * power(px, e - 1) * power(py, f));
-      dY.push_back(f * power(px, e) * power(py, f - 1));
-      dXX.push_back(e * (e - 1) * power(px, e - 2) * power(py, f));
-      dXY.push_back(e * f * power(px, e - 1) * power(py, f - 1));
-      dYY.push_back(f * (f - 1) * power(px, e) * power(py, f - 2));
-    }
+  const MonomialJet m(d, x.value, y.value);
   const double xu = x.du, xv = x.dv, yu = y.du, yv = y.dv;
   SecondDerivatives out;
   for (std::size_t h = 0; h < q.size(); ++h) {
     double w = 0, wx = 0, wy = 0, wxx = 0, wxy = 0, wyy = 0;
     for (std::size_t k = 0; k < terms; ++k) {
       const double c = coefficients[h * terms + k];
-      w += c * value[k], wx += c * dX[k], wy += c * dY[k];
-      wxx += c * dXX[k], wxy += c * dXY[k], wyy += c * dYY[k];
+      w += c * m.value[k], wx += c * m.dx[k], wy += c * m.dy[k];
+      wxx += c * m.dxx[k], wxy += c * m.dxy[k], wyy += c * m.dyy[k];
     }
     const double wu = wx * xu + wy * yu, wv = wx * xv + wy * yv;
     const double wuu = wxx * xu * xu + 2 * wxy * xu * yu + wyy * yu * yu;
@@ -305,7 +284,7 @@ Derivatives TrianglePatchDescent::derivatives(int valence, int region, std::vect
   int n = 0;
   std::int64_t a = 0, b = 0;
   if (!held(tables_, x.value, y.value, n, a, b))
-    throw EvaluationError("the patch parameter " + at + " reaches the regular point (" + x.value.str() + ", " +
+    throw OffGridDerivative("the patch parameter " + at + " reaches the regular point (" + x.value.str() + ", " +
                           y.value.str() + "), which no stored rate holds: this scheme's derivatives (sqrt(3)) are exact "
                           "only at parameters on the grids of its tables' rates");
   const TriangleTables::Grid grid = tables_.grid(6, n, 0);

@@ -23,6 +23,12 @@
 
 namespace stencil_runtime {
 
+// A parameter whose descent reaches a regular point no stored grid holds, where
+// a non-polynomial regular patch (sqrt(3)) has no exact derivative stencil.
+struct OffGridDerivative : EvaluationError {
+  using EvaluationError::EvaluationError;
+};
+
 class TrianglePatchDescent {
  public:
   // Throws EvaluationError when the tables hold no patch subdivision (version 2).
@@ -44,7 +50,7 @@ class TrianglePatchDescent {
   // not a polynomial (sqrt(3)) is differentiated by the tables' derivative
   // stencils (version 6) at the grid point the descent reaches. A point of a
   // stored grid reaches one (the cells' maps scale by m and keep the grid
-  // 1/n); other parameters may not, and get an EvaluationError saying so.
+  // 1/n); other parameters may not, and get an OffGridDerivative saying so.
   Derivatives derivatives(int valence, int region, std::vector<Point>& points, ExactDual x, ExactDual y) const;
   // The same with the second derivatives along (u, v) (the cells' maps are
   // affine: the chain rule has no second-order terms).

@@ -186,8 +186,7 @@ Approximation TriangleFamily::descend(std::size_t face, P u, P v, double toleran
   const TrianglePatchDescent& descent = checked_descent();
   const auto [pf, q] = patch_parameter(face, u, v);
   const TrianglePatch& patch = patches_[pf];
-  std::vector<Point> points(patch.points.size());
-  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
+  std::vector<Point> points = gather_points(patch.points, prepared);
   return descent.evaluate(patch.valence, patch.region, points, q[0], q[1], tolerance);
 }
 
@@ -250,9 +249,8 @@ Derivatives TriangleFamily::derivatives(std::size_t face, double u, double v, co
       return derivatives(face, ExactParameter{*fu, *fv}, prepared);
     } catch (const ParameterOverflow&) {  // a binary fraction the descent cannot follow in 64 bits
       throw EvaluationError(refusal);
-    } catch (const EvaluationError& e) {
-      if (std::string(e.what()).find("which no stored rate holds") != std::string::npos) throw EvaluationError(refusal);
-      throw;
+    } catch (const OffGridDerivative&) {
+      throw EvaluationError(refusal);
     }
   }
   return second_derivatives(face, u, v, prepared);  // the regular cell's quartic gives both at once
@@ -262,8 +260,7 @@ SecondDerivatives TriangleFamily::second_derivatives(std::size_t face, double u,
   const TrianglePatchDescent& descent = checked_descent();
   const auto [pf, q] = patch_parameter(face, Dual{u, 1, 0}, Dual{v, 0, 1});
   const TrianglePatch& patch = patches_[pf];
-  std::vector<Point> points(patch.points.size());
-  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
+  std::vector<Point> points = gather_points(patch.points, prepared);
   return descent.second_derivatives(patch.valence, patch.region, points, q[0], q[1]);
 }
 
@@ -314,8 +311,7 @@ Derivatives TriangleFamily::derivatives(std::size_t face, const ExactParameter& 
   const TrianglePatchDescent& descent = checked_descent();
   const auto [pf, q] = patch_parameter(face, ExactDual{at.u, 1, 0}, ExactDual{at.v, 0, 1});
   const TrianglePatch& patch = patches_[pf];
-  std::vector<Point> points(patch.points.size());
-  for (std::size_t h = 0; h < points.size(); ++h) points[h] = prepared[patch.points[h]];
+  std::vector<Point> points = gather_points(patch.points, prepared);
   return descent.derivatives(patch.valence, patch.region, points, q[0], q[1]);
 }
 

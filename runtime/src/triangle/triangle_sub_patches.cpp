@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "family/stencil_sum.hpp"
 #include "tables/sparse_rows.hpp"
 #include "triangle_family.hpp"
 #include "triangle_steps.hpp"
@@ -42,8 +43,7 @@ void TriangleFamily::root(std::size_t prepared_face, const Point* prepared, SubP
   const TrianglePatch& patch = patches_[prepared_face];
   out.face = prepared_face;
   out.kind = kind_of(patch.valence, patch.region);
-  out.points.resize(patch.points.size());
-  for (std::size_t h = 0; h < out.points.size(); ++h) out.points[h] = prepared[patch.points[h]];
+  gather_points(patch.points, prepared, out.points);
   out.domain = SubDomain::unit(true);
 }
 

@@ -94,9 +94,7 @@ void TriangleFamily::points(const TessellationLayout& layout, std::size_t begin,
     if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
     const TrianglePatch& p = patches_[f];
     const long n = layout.rates[f];
-    const std::size_t m = p.points.size();
-    local.resize(m);
-    for (std::size_t h = 0; h < m; ++h) local[h] = pos[p.points[h]];
+    gather_points(p.points, pos, local);
     const TriangleTables::Grid grid = tables_.grid(p.valence, static_cast<int>(n), p.region);
     std::array<float, 3>* out = out_all + layout.point_offsets[f];
     auto put = [&](long a, long b) {
@@ -104,7 +102,7 @@ void TriangleFamily::points(const TessellationLayout& layout, std::size_t begin,
       p.to_patch(a, b, 3 * n, pa, pb);
       const double* w = grid.weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3);
       double x = 0, y = 0, z = 0;
-      for (std::size_t h = 0; h < m; ++h) x += w[h] * local[h][0], y += w[h] * local[h][1], z += w[h] * local[h][2];
+      for (std::size_t h = 0, m = local.size(); h < m; ++h) x += w[h] * local[h][0], y += w[h] * local[h][1], z += w[h] * local[h][2];
       *out++ = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
     };
     for (long j = 0; j < n; ++j)
@@ -147,7 +145,6 @@ std::array<double, 2> TriangleFamily::edge_node_parameter(std::size_t face, int 
 void TriangleFamily::normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
                              std::array<float, 3>* out_all) const {
   const TrianglePatchDescent& descent = checked_descent();
-  const bool polynomial = tables_.polynomial_degree() > 0;
   std::vector<Point> local;
   for (std::size_t f = begin; f != end; ++f) {
     if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
@@ -171,15 +168,11 @@ void TriangleFamily::normals(const TessellationLayout& layout, std::size_t begin
         *out++ = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
         return;
       }
-      local.resize(p.points.size());
-      for (std::size_t h = 0; h < local.size(); ++h) local[h] = pos[p.points[h]];
-      const double g = 3.0 * static_cast<double>(n);
-      // sqrt(3)'s derivative stencils are found at the exact grid point the descent reaches.
-      const Point normal =
-          polynomial ? descent.derivatives(p.valence, p.region, local, Dual{static_cast<double>(pa) / g, 1, 0},
-                                           Dual{static_cast<double>(pb) / g, 0, 1}).normal()
-                     : descent.derivatives(p.valence, p.region, local, ExactDual{Fraction::make(pa, 3 * n), 1, 0},
-                                           ExactDual{Fraction::make(pb, 3 * n), 0, 1}).normal();
+      gather_points(p.points, pos, local);
+      // Exact parameters: sqrt(3)'s derivative stencils are found at the grid
+      // point the descent reaches; Loop's polynomial takes them as doubles.
+      const Point normal = descent.derivatives(p.valence, p.region, local, ExactDual{Fraction::make(pa, 3 * n), 1, 0},
+                                               ExactDual{Fraction::make(pb, 3 * n), 0, 1}).normal();
       *out++ = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
     };
     for (long j = 0; j < n; ++j)
