@@ -3,8 +3,9 @@
 // store: a quad scheme's polygon step when the mesh has other polygons (every
 // face becomes quads), else its quad step (1 to 4); a triangle scheme's Loop
 // step (1 to 4) or double sqrt(3) step (1 to 9). The limit surface does not change.
-// A quad mesh may have boundaries: OpenSubdiv's boundary rules, with the
-// mesh's `interpolateboundary` tag (edge-only unless it says edge-and-corner).
+// A quad or Loop mesh may have boundaries: OpenSubdiv's boundary rules, with
+// the mesh's `interpolateboundary` tag (edge-only unless it says
+// edge-and-corner); sqrt(3) refuses them (it has no rule along a boundary).
 #include "mesh.hpp"
 #include "tables.hpp"
 

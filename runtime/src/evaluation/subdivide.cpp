@@ -26,9 +26,17 @@ Mesh subdivide(const Tables& tables, const Mesh& mesh) {
     next = std::move(step.mesh);
     steps.push_back(std::move(step.step));
   } else {
-    const TriangleTopology topology(c);
-    TriangleStep step = tables.triangle().refinement() == TriangleRefinement::Loop ? loop_step(topology, tables.triangle())
-                                                                                    : sqrt3_double_step(topology, tables.triangle());
+    const TriangleTables& t = tables.triangle();
+    const PolygonLinks links = link_polygons(c, true);
+    BoundaryRules boundary;  // OpenSubdiv's, with the mesh's interpolation tag and the scheme's crease curve
+    if (links.has_boundary) {
+      const CurveCreaseRule crease = triangle_crease_rule(t, tables.scheme(), "meshes with boundaries");
+      boundary = {crease.centre, crease.neighbour, mesh.tags.boundary == BoundaryInterpolation::EdgeAndCorner};
+    }
+    const TriangleTopology topology(c, links);
+    TriangleStep step = t.refinement() == TriangleRefinement::Loop
+                            ? loop_step(topology, t, links.has_boundary ? &boundary : nullptr)
+                            : sqrt3_double_step(topology, t);
     next = std::move(step.mesh);
     steps = std::move(step.steps);
   }

@@ -15,16 +15,6 @@ MeshError no_boundary_rules() {
   return MeshError("internal: a subdivision step on a mesh with boundaries was given no boundary rules");
 }
 
-// A boundary vertex's row: itself alone (a corner) or the crease curve's mask
-// over its neighbours along the boundary, `after` (across its outgoing boundary
-// edge) and `before` (across its incoming one).
-void boundary_row(SparseEntries& row, std::uint32_t v, std::uint32_t after, std::uint32_t before, int faces,
-                  const BoundaryRules& rules) {
-  row.assign(1, {v, 1.0});
-  if (rules.corners && faces == 1) return;
-  row.assign({{v, rules.centre}, {after, rules.neighbour}, {before, rules.neighbour}});
-}
-
 }  // namespace
 
 QuadStep subdivide_quads(const QuadTopology& topo, const QuadTables& t, const BoundaryRules* boundary) {

@@ -3,6 +3,7 @@
 // gives the refined connectivity and the sparse matrix that computes its
 // vertices from the vertices before (refinement.hpp), with the rules stored
 // in the tables. The limit surface does not change.
+#include "family/boundary_rules.hpp"
 #include "family/refinement.hpp"
 #include "mesh/connectivity.hpp"
 #include "mesh/polygon_links.hpp"
@@ -14,15 +15,6 @@ namespace stencil_runtime {
 struct QuadStep {
   Connectivity mesh;  // every face a quad
   RefinementStep step;
-};
-
-// The rules on a mesh's boundary (OpenSubdiv's): a boundary edge's point is
-// its midpoint, a boundary vertex follows the crease curve's vertex mask over
-// its two boundary neighbours, and with `corners` (edge-and-corner) a
-// boundary vertex in one face stays where it is.
-struct BoundaryRules {
-  double centre = 0, neighbour = 0;  // the crease curve's vertex mask
-  bool corners = false;
 };
 
 // One step of the scheme's quad rules. New vertices: the vertex points (same

@@ -95,19 +95,6 @@ std::vector<int> loop_step_edge_points(const Connectivity& parent, const Connect
   return out;
 }
 
-// The crease rule of the tables, or a MeshError saying why there is none.
-CurveCreaseRule triangle_crease_rule(const Tables& tables) {
-  const TriangleTables& t = tables.triangle();
-  if (t.refinement() == TriangleRefinement::Sqrt3)
-    throw MeshError("the scheme " + tables.scheme() +
-                    " refines by sqrt(3), which splits no edges, so it has no crease rule: creases and corners are refused");
-  if (!t.crease())
-    throw MeshError("these " + tables.scheme() +
-                    " tables carry no crease rule (the scheme names no crease_curve, or the tables predate format 5): "
-                    "regenerate them with this stencilgen");
-  return {t.crease()->centre, t.crease()->neighbour};
-}
-
 }  // namespace
 
 TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Connectivity& mesh, const MeshFeatures& features) {
@@ -124,7 +111,7 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
   out.mesh = mesh;
   LevelSharpness sharpness = LevelSharpness::of(mesh, features);
   if (!sharpness.smooth()) {
-    const CurveCreaseRule crease = triangle_crease_rule(tables);
+    const CurveCreaseRule crease = triangle_crease_rule(t, tables.scheme(), "creases and corners");
     check_crease_steps(mesh.face_count(), 4 * mesh.face_count(), sharpness.max());
     // Loop steps with the sharp rules until every sharpness has decayed.
     while (!sharpness.smooth()) {

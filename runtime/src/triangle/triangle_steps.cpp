@@ -12,17 +12,30 @@ std::uint32_t head(const TriangleTopology& t, std::uint32_t h) {
   return static_cast<std::uint32_t>(t.vertex(TriangleTopology::face_of(h), TriangleTopology::corner_of(h) + 1));
 }
 
-// The vertex rule at every vertex, as rows [0, nv): (1 - valence w) p + w (sum of the neighbours).
-void relax_vertices(const TriangleTopology& topo, const TriangleTables& t, RefinementStep& step) {
+// The vertex rule at every vertex, as rows [0, nv): (1 - valence w) p + w (sum
+// of the neighbours); on a boundary, `boundary`'s rules.
+void relax_vertices(const TriangleTopology& topo, const TriangleTables& t, RefinementStep& step,
+                    const BoundaryRules* boundary = nullptr) {
   const std::size_t nv = topo.vertices();
+  // One outgoing half-edge per vertex; on the boundary, the boundary one (its fan's first).
   std::vector<std::uint32_t> first_out(nv, UINT32_MAX);
   for (std::uint32_t h = 0; h < 3 * topo.faces(); ++h) {
     const auto v = static_cast<std::size_t>(topo.vertex(TriangleTopology::face_of(h), TriangleTopology::corner_of(h)));
-    if (first_out[v] == UINT32_MAX) first_out[v] = h;
+    if (first_out[v] == UINT32_MAX || topo.twin(h) == TriangleTopology::kNoTwin) first_out[v] = h;
   }
   SparseEntries row;
   for (std::size_t v = 0; v < nv; ++v) {
     const int valence = topo.valence(static_cast<int>(v));
+    if (topo.on_boundary(static_cast<int>(v))) {
+      if (!boundary) throw MeshError("internal: a Loop step on a mesh with boundaries was given no boundary rules");
+      std::uint32_t e = first_out[v], last = e;
+      for (; e != TriangleTopology::kNoTwin; e = topo.turn_ccw(e)) last = e;
+      boundary_row(row, static_cast<std::uint32_t>(v), head(topo, first_out[v]),
+                   static_cast<std::uint32_t>(topo.vertex(TriangleTopology::face_of(last), TriangleTopology::corner_of(last) + 2)),
+                   valence, *boundary);
+      step.add_row(row);
+      continue;
+    }
     double w = 0;
     if (!t.neighbour_weight(valence, w))
       throw MeshError("vertex " + std::to_string(v) + " has valence " + std::to_string(valence) +
@@ -126,7 +139,18 @@ TriangleStep sqrt3_double_step(const TriangleTopology& topo, const TriangleTable
   return out;
 }
 
-TriangleStep loop_step(const TriangleTopology& topo, const TriangleTables& t) {
+CurveCreaseRule triangle_crease_rule(const TriangleTables& t, const std::string& scheme, const std::string& refused) {
+  if (t.refinement() == TriangleRefinement::Sqrt3)
+    throw MeshError("the scheme " + scheme + " refines by sqrt(3), which splits no edges, so it has no crease rule: " + refused +
+                    " are refused");
+  if (!t.crease())
+    throw MeshError("these " + scheme +
+                    " tables carry no crease rule (the scheme names no crease_curve, or the tables predate format 5): " +
+                    refused + " are refused; regenerate the tables with this stencilgen");
+  return {t.crease()->centre, t.crease()->neighbour};
+}
+
+TriangleStep loop_step(const TriangleTopology& topo, const TriangleTables& t, const BoundaryRules* boundary) {
   const std::size_t nf = topo.faces(), nv = topo.vertices(), nh = 3 * nf;
   std::vector<std::uint32_t> edge_point(nh, 0);
   std::vector<std::uint32_t> edge_owner;
@@ -142,10 +166,17 @@ TriangleStep loop_step(const TriangleTopology& topo, const TriangleTables& t) {
   TriangleStep out;
   RefinementStep step;
   step.input_vertices = nv;
-  relax_vertices(topo, t, step);
+  relax_vertices(topo, t, step, boundary);
   SparseEntries row;
   auto at = [&](std::size_t f, int c) { return static_cast<std::uint32_t>(topo.vertex(f, c)); };
   for (std::uint32_t h : edge_owner) {
+    if (topo.twin(h) == TriangleTopology::kNoTwin) {  // a boundary edge: its midpoint
+      const std::size_t f = TriangleTopology::face_of(h);
+      const int c = TriangleTopology::corner_of(h);
+      row.assign({{at(f, c), 0.5}, {at(f, c + 1), 0.5}});
+      step.add_row(row);
+      continue;
+    }
     const std::size_t f = TriangleTopology::face_of(h), g = TriangleTopology::face_of(topo.twin(h));
     const int c = TriangleTopology::corner_of(h), d = TriangleTopology::corner_of(topo.twin(h));
     row.assign({{at(f, c), t.edge_end()}, {at(f, c + 1), t.edge_end()}, {at(f, c + 2), t.edge_opposite()}, {at(g, d + 2), t.edge_opposite()}});
