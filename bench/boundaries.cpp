@@ -12,12 +12,16 @@
 // tessellation (plan and points, as bench_tessellation) in triangles per
 // second, and the per-frame update of the prepared points (set_positions).
 // OpenSubdiv 3.5's Bfr tessellates the same meshes in the same run.
-// Usage: bench_boundaries [CATMULL-CLARK.sgs]
+// With Loop tables (second argument; - skips the Catmull-Clark pairs): a
+// triangulated torus against the tube of the same grid (every rim vertex in
+// three faces: regular boundary patches with phantom points).
+// Usage: bench_boundaries [CATMULL-CLARK.sgs|-] [LOOP.sgt]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -53,52 +57,74 @@ Mesh ring_grid(int around, int rows, bool closed) {
   return m;
 }
 
+// The same grid with each quad split into two triangles along one diagonal.
+Mesh triangulated(const Mesh& quads) {
+  Mesh m;
+  m.positions = quads.positions;
+  for (std::size_t f = 0; f < quads.face_count(); ++f) {
+    const int* q = &quads.face_vertices[4 * f];
+    m.face_sizes.insert(m.face_sizes.end(), {3, 3});
+    m.face_vertices.insert(m.face_vertices.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+  }
+  return m;
+}
+
 struct Row {
   double ours = 0, osd = 0;
 };
 
 }  // namespace
 
+struct Pair {
+  std::string name;
+  Mesh closed, open;
+  std::shared_ptr<const Tables> tables;
+};
+
 int run(int argc, char** argv) {
   const std::string cc_path = argc > 1 ? argv[1] : "tables/catmull-clark/catmull-clark.sgs";
-  const auto tables = Tables::load(cc_path);
-  Mesh cube = read_obj(std::string(STENCIL_SOURCE_DIR) + "/meshes/cube.obj");
-  Mesh open_box = cube;
-  open_box.face_sizes.erase(open_box.face_sizes.begin());
-  open_box.face_vertices.erase(open_box.face_vertices.begin(), open_box.face_vertices.begin() + 4);
-  // Without two adjacent faces: the two vertices of their common edge are in one face each, and four more
-  // rim vertices in three (boundary sectors: patches of their own, not regular ones with phantom points).
-  Mesh notched = open_box;
-  notched.face_sizes.erase(notched.face_sizes.begin());
-  notched.face_vertices.erase(notched.face_vertices.begin(), notched.face_vertices.begin() + 4);
-  while (cube.face_count() < 40000) cube = subdivide(*tables, cube);
-  while (open_box.face_count() < 40000) open_box = subdivide(*tables, open_box);
-  Mesh notched_closed = read_obj(std::string(STENCIL_SOURCE_DIR) + "/meshes/cube.obj");
-  // The notched box refined by one step first, so that its sector vertices are not all that is there: then alike.
-  notched = subdivide(*tables, notched);
-  while (notched.face_count() < 30000) notched = subdivide(*tables, notched);
-  while (notched_closed.face_count() < 30000) notched_closed = subdivide(*tables, notched_closed);
-  struct Pair {
-    const char* name;
-    Mesh closed, open;
-  };
-  const Pair pairs[] = {{"torus / tube 256x224", ring_grid(256, 224, true), ring_grid(256, 224, false)},
-                        {"cube / open box", cube, open_box},
-                        {"cube / box without two faces", notched_closed, notched}};
+  std::vector<Pair> pairs;
+  if (cc_path != "-") {
+    const auto tables = Tables::load(cc_path);
+    Mesh cube = read_obj(std::string(STENCIL_SOURCE_DIR) + "/meshes/cube.obj");
+    Mesh open_box = cube;
+    open_box.face_sizes.erase(open_box.face_sizes.begin());
+    open_box.face_vertices.erase(open_box.face_vertices.begin(), open_box.face_vertices.begin() + 4);
+    // Without two adjacent faces: the two vertices of their common edge are in one face each, and four more
+    // rim vertices in three (boundary sectors: patches of their own, not regular ones with phantom points).
+    Mesh notched = open_box;
+    notched.face_sizes.erase(notched.face_sizes.begin());
+    notched.face_vertices.erase(notched.face_vertices.begin(), notched.face_vertices.begin() + 4);
+    while (cube.face_count() < 40000) cube = subdivide(*tables, cube);
+    while (open_box.face_count() < 40000) open_box = subdivide(*tables, open_box);
+    Mesh notched_closed = read_obj(std::string(STENCIL_SOURCE_DIR) + "/meshes/cube.obj");
+    // The notched box refined by one step first, so that its sector vertices are not all that is there: then alike.
+    notched = subdivide(*tables, notched);
+    while (notched.face_count() < 30000) notched = subdivide(*tables, notched);
+    while (notched_closed.face_count() < 30000) notched_closed = subdivide(*tables, notched_closed);
+    pairs.push_back({"torus / tube 256x224", ring_grid(256, 224, true), ring_grid(256, 224, false), tables});
+    pairs.push_back({"cube / open box", cube, open_box, tables});
+    pairs.push_back({"cube / box without two faces", notched_closed, notched, tables});
+  }
+  if (argc > 2) {
+    const auto loop = Tables::load(argv[2]);
+    pairs.push_back({"Loop: torus / tube 256x112, triangulated", triangulated(ring_grid(256, 112, true)),
+                     triangulated(ring_grid(256, 112, false)), loop});
+  }
   std::printf("| meshes | mesh | faces | rate | threads | triangles | ours (M tri/s) | ours / closed | Bfr (M tri/s) | Bfr / closed | positions update (ms) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Pair& pair : pairs) {
     std::vector<Row> closed_rows;
     for (int open = 0; open < 2; ++open) {
       const Mesh& mesh = open ? pair.open : pair.closed;
-      const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
+      const auto topology = SurfaceTopology::create(pair.tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
       Surface surface(topology, mesh.positions);
       const double update_ms = 1e3 * bench_timing::median3([&] {
         const auto s = Clock::now();
         surface.set_positions(mesh.positions);
         return std::chrono::duration<double>(Clock::now() - s).count();
       });
-      osd_bench::Input input{&mesh.positions, &mesh.face_sizes, &mesh.face_vertices, false};
+      osd_bench::Input input{&mesh.positions, &mesh.face_sizes, &mesh.face_vertices, pair.tables->family() == SchemeFamily::Triangle};
       osd_bench::BfrTessellator osd(input);
       std::size_t row = 0;
       for (int rate : {8, 16, 0}) {
@@ -118,7 +144,7 @@ int run(int argc, char** argv) {
           const Row now{triangles / ours / 1e6, osd_triangles / theirs / 1e6};
           if (!open) closed_rows.push_back(now);
           const Row& base = closed_rows[row++];
-          std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | %.2f | %.1f | %.2f | %.2f |\n", pair.name,
+          std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | %.2f | %.1f | %.2f | %.2f |\n", pair.name.c_str(),
                       open ? "open" : "closed", mesh.face_count(), rate ? std::to_string(rate).c_str() : "mix 1..24",
                       threads, triangles, now.ours, now.ours / base.ours, now.osd, now.osd / base.osd, update_ms);
           std::fflush(stdout);

@@ -67,6 +67,22 @@ void Refinement::apply(const Point* control, std::vector<std::vector<Point>>& le
   }
 }
 
+RefinementStep append_rows(std::size_t vertices, const std::vector<std::vector<std::pair<int, double>>>& extra) {
+  RefinementStep step;
+  step.input_vertices = vertices;
+  SparseEntries row;
+  for (std::size_t v = 0; v < vertices; ++v) {
+    row.assign(1, {static_cast<std::uint32_t>(v), 1.0});
+    step.add_row(row);
+  }
+  for (const auto& p : extra) {
+    row.clear();
+    for (const auto& [v, w] : p) row.emplace_back(static_cast<std::uint32_t>(v), w);
+    step.add_row(row);
+  }
+  return step;
+}
+
 void Refinement::fold(SparseEntries& row) const {
   SparseEntries next;
   for (std::size_t s = steps_.size(); s-- > 0;) {

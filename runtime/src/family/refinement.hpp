@@ -31,6 +31,10 @@ struct RefinementStep {
   void apply(const Point* in, Point* out) const;
 };
 
+// A step that keeps every one of `vertices` and appends `extra` rows over them
+// (phantom points beyond a boundary, copies of vertices on a sharp crease).
+RefinementStep append_rows(std::size_t vertices, const std::vector<std::vector<std::pair<int, double>>>& extra);
+
 class Refinement {
  public:
   explicit Refinement(std::size_t control_vertices = 0) : control_(control_vertices) {}

@@ -127,22 +127,6 @@ SharpCut cut_of(const Connectivity& mesh, const LevelSharpness& sharpness, bool 
   return cut_along_sharp_edges(mesh, link_polygons(mesh, true), sharpness, edge_and_corner);
 }
 
-// A step that keeps every vertex and appends `extra` rows over them.
-RefinementStep appended(std::size_t vertices, const std::vector<std::vector<std::pair<int, double>>>& extra) {
-  RefinementStep step;
-  step.input_vertices = vertices;
-  SparseEntries row;
-  for (std::size_t v = 0; v < vertices; ++v) {
-    row.assign(1, {static_cast<std::uint32_t>(v), 1.0});
-    step.add_row(row);
-  }
-  for (const auto& p : extra) {
-    row.clear();
-    for (const auto& [v, w] : p) row.emplace_back(static_cast<std::uint32_t>(v), w);
-    step.add_row(row);
-  }
-  return step;
-}
 
 // Child c of a face split into quadrants (subdivide_quads) and the parameter
 // there: c is the quadrant of (u, v), the child's u axis along the parent's
@@ -269,7 +253,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   if (cut.cut) {
     std::vector<std::vector<std::pair<int, double>>> copies;
     for (std::size_t v = out.mesh.vertex_count; v < cut.mesh.vertex_count; ++v) copies.push_back({{cut.origin[v], 1.0}});
-    out.refinement.add(appended(out.mesh.vertex_count, copies));
+    out.refinement.add(append_rows(out.mesh.vertex_count, copies));
   }
   std::vector<std::vector<std::pair<int, double>>> phantoms;
   out.patches.resize(patch_topo.faces());
@@ -283,7 +267,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     else if (c >= 0) out.patches[f] = gather_sector_patch(patch_topo, f, c, cut.rule);
     else out.patches[f] = gather_boundary_patch(patch_topo, f, cut.mesh.vertex_count, phantoms);
   }
-  if (!phantoms.empty()) out.refinement.add(appended(cut.mesh.vertex_count, phantoms));
+  if (!phantoms.empty()) out.refinement.add(append_rows(cut.mesh.vertex_count, phantoms));
   return out;
 }
 

@@ -7,6 +7,8 @@
 #include "family/crease_step.hpp"
 #include "family/parameter_ops.hpp"
 #include "family/stencil_sum.hpp"
+#include "boundary_patch.hpp"
+#include "mesh/polygon_links.hpp"
 #include "triangle_steps.hpp"
 
 namespace stencil_runtime {
@@ -16,22 +18,63 @@ struct TriangleFamily::Prepared {
   FaceHierarchy hierarchy;
   int steps = 0;
   int crease_steps = 0;  // of the steps, those that still had sharp features
+  bool boundary = false;
   Connectivity mesh;
   std::vector<TrianglePatch> patches;  // as the last isolation check found them
+  PhantomPoints phantoms;              // the points beyond the boundary those patches use
 };
 
 namespace {
 
-// Every face's patch, or false when one cannot be gathered.
-bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, std::vector<TrianglePatch>& patches) {
+bool touches_boundary(const TriangleTopology& topo, std::size_t f) {
+  for (int c = 0; c < 3; ++c)
+    if (topo.on_boundary(topo.vertex(f, c))) return true;
+  return false;
+}
+
+// Every face's patch, or false when one cannot be gathered. On a mesh with
+// boundaries, faces whose corners are all regular take the regular patch with
+// phantoms (boundary_patch.hpp); the others need the tables' chart walks, which
+// stop at the boundary.
+bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, std::vector<TrianglePatch>& patches,
+                    PhantomPoints& phantoms) {
   patches.clear();
   patches.reserve(topo.faces());
+  phantoms = PhantomPoints{};
+  phantoms.first = topo.vertices();
   for (std::size_t f = 0; f < topo.faces(); ++f) {
-    auto patch = find_triangle_patch(topo, f, tables);
+    std::optional<TrianglePatch> patch;
+    if (topo.has_boundary() && (touches_boundary(topo, f) || (regular_loop_vertex(topo, topo.vertex(f, 0)) &&
+                                                               regular_loop_vertex(topo, topo.vertex(f, 1)) &&
+                                                               regular_loop_vertex(topo, topo.vertex(f, 2)))))
+      patch = regular_boundary_patch(topo, f, tables, phantoms);
+    else
+      patch = find_triangle_patch(topo, f, tables);
     if (!patch) return false;
     patches.push_back(std::move(*patch));
   }
   return true;
+}
+
+// The boundary rules of a Loop mesh with boundaries, after checking that the
+// runtime evaluates it: every boundary vertex in three faces (the regular
+// boundary patch; docs/runtime.md says what the others need), no sharp features.
+BoundaryRules loop_boundary_rules(const Tables& tables, const TriangleTopology& topo, const MeshFeatures& features) {
+  const CurveCreaseRule crease = triangle_crease_rule(tables.triangle(), tables.scheme(), "meshes with boundaries");
+  const auto sharp = [](const auto& feature) { return feature.sharpness > 0; };
+  if (std::any_of(features.edges.begin(), features.edges.end(), sharp) ||
+      std::any_of(features.vertices.begin(), features.vertices.end(), sharp))
+    throw MeshError("creases and corners on a " + tables.scheme() +
+                    " mesh with boundaries are not evaluated yet (Loop boundaries are; docs/runtime.md)");
+  if (features.boundary != BoundaryInterpolation::None)
+    for (std::size_t v = 0; v < topo.vertices(); ++v)
+      if (topo.on_boundary(static_cast<int>(v)) && topo.valence(static_cast<int>(v)) != 3)
+        throw MeshError("vertex " + std::to_string(v) + " is on the boundary in " + std::to_string(topo.valence(static_cast<int>(v))) +
+                        " faces: " + tables.scheme() +
+                        " meshes with boundaries are evaluated where every boundary vertex is in three faces (a tube, "
+                        "an annulus); the patches at boundary vertices in other numbers of faces are not built yet "
+                        "(docs/runtime.md, \"Loop with boundaries\")");
+  return {crease.centre, crease.neighbour, features.boundary == BoundaryInterpolation::EdgeAndCorner};
 }
 
 // Child of a face split by a Loop step (loop_step) holding (u, v), and the parameter there.
@@ -102,10 +145,15 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
   TriangleFamily::Prepared out;
   out.refinement = Refinement(mesh.vertex_count);
   out.hierarchy.original_faces = mesh.face_count();
-  TriangleTopology topo(mesh);  // a closed manifold of triangles (names the face, edge or vertex)
+  // A manifold of triangles, closed or with boundaries (names the face, edge or vertex).
+  TriangleTopology topo(mesh, link_polygons(mesh, true));
+  out.boundary = topo.has_boundary();
+  std::optional<BoundaryRules> boundary;
+  if (out.boundary) boundary = loop_boundary_rules(tables, topo, features);
   ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 6);
   for (std::size_t v = 0; v < topo.vertices(); ++v)
-    valences.add_lazy(topo.valence(static_cast<int>(v)), [&] { return "vertex " + std::to_string(v); });
+    if (!topo.on_boundary(static_cast<int>(v)))
+      valences.add_lazy(topo.valence(static_cast<int>(v)), [&] { return "vertex " + std::to_string(v); });
   valences.finish();
   const bool sqrt3 = t.refinement() == TriangleRefinement::Sqrt3;
   out.mesh = mesh;
@@ -125,18 +173,21 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
       topo = TriangleTopology(out.mesh);
     }
   }
-  while (!gather_patches(topo, t, out.patches)) {
+  while (!gather_patches(topo, t, out.patches, out.phantoms)) {
     if (out.steps - out.crease_steps == limits::kMaxRefinementSteps)
-      throw MeshError("extraordinary vertices are still too close after " + std::to_string(limits::kMaxRefinementSteps) + " " +
+      throw MeshError("extraordinary vertices are still too close " + std::string(out.boundary ? "to each other or to the boundary " : "") +
+                      "after " + std::to_string(limits::kMaxRefinementSteps) + " " +
                       (sqrt3 ? "double sqrt(3) steps" : "subdivision steps"));
-    TriangleStep step = sqrt3 ? sqrt3_double_step(topo, t) : loop_step(topo, t);
+    TriangleStep step = sqrt3 ? sqrt3_double_step(topo, t) : loop_step(topo, t, boundary ? &*boundary : nullptr);
     if (sqrt3) out.hierarchy.add_uniform(9, 3);
     else out.hierarchy.add_uniform(4, 2);
     for (RefinementStep& s : step.steps) out.refinement.add(std::move(s));
     out.mesh = std::move(step.mesh);
     ++out.steps;
-    topo = TriangleTopology(out.mesh);
+    topo = TriangleTopology(out.mesh, out.boundary);
   }
+  // The phantoms are prepared points after the mesh's own.
+  if (!out.phantoms.rows.empty()) out.refinement.add(append_rows(out.mesh.vertex_count, out.phantoms.rows));
   return out;
 }
 
@@ -149,7 +200,7 @@ TriangleFamily::TriangleFamily(std::shared_ptr<const Tables> tables, Prepared pr
       tables_(holder_->triangle()),
       steps_(prepared.steps),
       crease_steps_(prepared.crease_steps),
-      topology_(prepared.mesh),
+      topology_(prepared.mesh, prepared.boundary),
       patches_(std::move(prepared.patches)) {
   if (tables_.has_descent()) descent_.emplace(tables_);
   refinement_ = std::move(prepared.refinement);

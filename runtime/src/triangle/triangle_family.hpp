@@ -30,6 +30,8 @@ class TriangleFamily final : public Family {
   TriangleFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const MeshFeatures& sharp = {});
 
   std::string preparation() const override;
+  bool has_boundary() const override { return topology_.has_boundary(); }
+  bool on_boundary(int vertex) const override { return topology_.on_boundary(vertex); }
   int refinement_steps() const override { return steps_; }
   FaceDomain domain(std::size_t face) const override;
   bool stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const override;

@@ -1,0 +1,184 @@
+// Loop meshes with boundaries where every boundary vertex is in three faces
+// (regular boundary patches: the box spline with affine phantoms,
+// triangle/boundary_patch.hpp), against OpenSubdiv's Bfr with the same
+// boundary option: uniformly triangulated tubes (every vertex regular) and a
+// tube with extraordinary vertices next to its rims (isolation steps near the
+// boundary). Also: tessellations with one rim per boundary loop, and the
+// refusals that remain (a boundary vertex in other than three faces, sqrt(3)).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "bfr_reference.hpp"
+#include "cli.hpp"
+#include "runtime_api.hpp"
+#include "runtime_checks.hpp"
+#include "stencil_runtime/closest_point.hpp"
+#include "stencil_runtime/tessellation.hpp"
+
+using namespace stencil_runtime;
+using namespace test_runtime;
+
+namespace {
+
+// A tube of `around` x `rows` quads, each split into two triangles along the
+// same diagonal: every inner vertex of valence 6, every rim vertex in three faces.
+Mesh triangle_tube(int around, int rows) {
+  Mesh m;
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double a = 2 * M_PI * (i + 0.5 * j) / around, r = 1 + 0.15 * std::cos(2.0 * j + i);
+      m.positions.push_back({r * std::cos(a), r * std::sin(a), 0.6 * j + 0.05 * (i % 3)});
+    }
+  auto at = [&](int i, int j) { return j * around + (i % around); };
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < around; ++i) {
+      m.face_sizes.insert(m.face_sizes.end(), {3, 3});
+      m.face_vertices.insert(m.face_vertices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
+}
+
+// The same tube with the diagonal of one quad in its first row flipped: two
+// inner vertices of valence 5 and 7 next to the rim (and the rim vertices of
+// that quad still in three faces... one in two, one in four: see the caller).
+Mesh tube_with_flip(int around, int rows, int row) {
+  Mesh m = triangle_tube(around, rows);
+  const std::size_t f = 2 * static_cast<std::size_t>(row * around);  // quad (0, row): faces f, f + 1
+  const int a = m.face_vertices[3 * f], b = m.face_vertices[3 * f + 1], c = m.face_vertices[3 * f + 2],
+            d = m.face_vertices[3 * f + 5];
+  // (a, b, c), (a, c, d) -> (a, b, d), (b, c, d)
+  const int flipped[6] = {a, b, d, b, c, d};
+  std::copy(flipped, flipped + 6, m.face_vertices.begin() + static_cast<long>(3 * f));
+  return m;
+}
+
+Surface loop_surface(const std::shared_ptr<const Tables>& tables, const Mesh& m, BoundaryInterpolation boundary) {
+  MeshFeatures features;
+  features.boundary = boundary;
+  return Surface(SurfaceTopology::create(tables, m.vertex_count(), m.face_sizes, m.face_vertices, {}, features), m.positions);
+}
+
+bfr_reference::Creasing osd_boundary(BoundaryInterpolation b) {
+  bfr_reference::Creasing c;
+  c.boundary_corners = b == BoundaryInterpolation::EdgeAndCorner;
+  c.boundary_none = b == BoundaryInterpolation::None;
+  return c;
+}
+
+// Largest differences to Bfr over the mesh size: every node of every face with
+// a surface at rates 1..8 (positions), and d/du, d/dv at four parameters per face.
+std::pair<double, double> bfr_difference(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, BoundaryInterpolation b) {
+  const Surface surface = loop_surface(tables, mesh, b);
+  bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices, bfr_reference::osd::Sdc::SCHEME_LOOP, {},
+                                    osd_boundary(b));
+  const double size = extent(mesh);
+  double positions = 0, derivatives = 0;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    REQUIRE(reference.has_surface(static_cast<int>(f)) == !surface.topology().is_hole(f));
+    if (surface.topology().is_hole(f)) continue;
+    for (long n = 1; n <= 8; ++n)
+      for (long j = 0; j <= n; ++j)
+        for (long i = 0; i + j <= n; ++i) {
+          const Point ours = surface.evaluate(f, grid(i, j, n));
+          const auto ref = reference.evaluate(static_cast<int>(f), static_cast<double>(i) / n, static_cast<double>(j) / n);
+          positions = std::max(positions, distance(ours, ref) / size);
+        }
+    for (const auto& [u, v] : {std::pair{0.25, 0.25}, {0.6, 0.1}, {0.1, 0.7}, {0.4, 0.4}}) {
+      const Derivatives d = surface.derivatives(f, u, v);
+      const auto ref = reference.derivatives(static_cast<int>(f), u, v);
+      derivatives = std::max({derivatives, distance(d.du, ref[1]) / size, distance(d.dv, ref[2]) / size});
+    }
+  }
+  return {positions, derivatives};
+}
+
+std::shared_ptr<const Tables> loop_tables() { return Tables::load(generated_table("loop", "--valence 3-8 --n 1-8", "sgt").string()); }
+
+}  // namespace
+
+TEST_CASE("Loop boundaries: tubes whose rim vertices are in three faces equal OpenSubdiv's Bfr, every option",
+          "[runtime][boundaries][loop][opensubdiv]") {
+  const auto tables = loop_tables();
+  for (const auto& [name, mesh] : {std::pair<std::string, Mesh>{"tube 8x3", triangle_tube(8, 3)},
+                                   {"tube 6x1", triangle_tube(6, 1)},
+                                   {"tube 7x4 with a flipped diagonal inside", tube_with_flip(7, 4, 2)}})
+    for (BoundaryInterpolation b : {BoundaryInterpolation::EdgeOnly, BoundaryInterpolation::EdgeAndCorner, BoundaryInterpolation::None}) {
+      INFO(name << ", boundary option " << static_cast<int>(b));
+      if (b == BoundaryInterpolation::None && name == "tube 6x1") {  // every face at the rim: no surface left
+        CHECK_THROWS_WITH(loop_surface(tables, mesh, b), Catch::Contains("the mesh has no surface"));
+        continue;
+      }
+      const auto [positions, derivatives] = bfr_difference(tables, mesh, b);
+      CHECK(positions < 1e-14);
+      CHECK(derivatives < 1e-13);
+    }
+}
+
+TEST_CASE("Loop boundaries: tessellations have one rim per boundary loop and the tube's Euler characteristic",
+          "[runtime][boundaries][loop][tessellation]") {
+  const auto tables = loop_tables();
+  std::mt19937 rng(20261127u);
+  for (const Mesh& mesh : {triangle_tube(8, 3), tube_with_flip(7, 4, 2)}) {
+    const Surface surface = loop_surface(tables, mesh, BoundaryInterpolation::EdgeOnly);
+    for (int trial = 0; trial < 4; ++trial) {
+      std::vector<int> rates(mesh.face_count());
+      for (int& r : rates) r = std::uniform_int_distribution<int>(1, 8)(rng);
+      INFO("trial " << trial);
+      check_rimmed_manifold(tessellate(surface, rates), 2, 0);
+    }
+  }
+}
+
+TEST_CASE("Loop boundaries: what is not evaluated yet is refused, naming the vertex or the reason", "[runtime][boundaries][loop]") {
+  const auto tables = loop_tables();
+  // The flip next to the rim: rim vertices in two and four faces.
+  CHECK_THROWS_WITH(loop_surface(tables, tube_with_flip(7, 4, 0), BoundaryInterpolation::EdgeOnly),
+                    Catch::Contains("is on the boundary in") && Catch::Contains("every boundary vertex is in three faces"));
+  Mesh m = triangle_tube(6, 2);
+  MeshFeatures sharp;
+  sharp.edges.push_back({m.face_vertices[0], m.face_vertices[1], 1.5});
+  CHECK_THROWS_WITH(Surface(SurfaceTopology::create(tables, m.vertex_count(), m.face_sizes, m.face_vertices, {}, sharp), m.positions),
+                    Catch::Contains("creases and corners on a loop mesh with boundaries"));
+  const auto sqrt3 = Tables::load(generated_table("sqrt3", "--valence 3-8 --n 3", "sgt").string());
+  CHECK_THROWS_WITH(loop_surface(sqrt3, triangle_tube(6, 2), BoundaryInterpolation::EdgeOnly),
+                    Catch::Contains("sqrt(3), which splits no edges") && Catch::Contains("meshes with boundaries are refused"));
+}
+
+TEST_CASE("Loop boundaries: closest points on an open tube are on the surface and no farther than dense exact samples",
+          "[runtime][boundaries][loop][distance]") {
+  const auto tables = loop_tables();
+  const Mesh mesh = tube_with_flip(7, 4, 2);
+  const Surface surface = loop_surface(tables, mesh, BoundaryInterpolation::EdgeOnly);
+  const double size = extent(mesh);
+  // Dense exact samples: every node at rate 8 of every face (the rim included).
+  std::vector<Point> samples;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f)
+    for (long j = 0; j <= 8; ++j)
+      for (long i = 0; i + j <= 8; ++i) samples.push_back(surface.evaluate(f, grid(i, j, 8)));
+  const ClosestPointQuery query(surface);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> box(-1.6, 1.6), height(-0.5, 2.9);
+  for (int k = 0; k < 200; ++k) {
+    const Point q{box(rng), box(rng), height(rng)};
+    const ClosestPoint c = query.find(q);
+    REQUIRE(c.found);
+    double nearest = 1e300;
+    for (const Point& s : samples) nearest = std::min(nearest, distance(q, s));
+    INFO("query " << k);
+    CHECK(c.distance <= nearest + 1e-9 * size);
+    CHECK(distance(surface.evaluate(c.face, c.u, c.v, 1e-12).point, c.point) < 1e-9 * size);
+    CHECK(std::abs(distance(q, c.point) - c.distance) < 1e-9 * size);
+    // Inside a face (not on its edges, where the minimum may be a kink or the
+    // rim), the residual is orthogonal to the tangent plane.
+    if (c.u > 1e-6 && c.v > 1e-6 && c.u + c.v < 1 - 1e-6) {
+      const Derivatives d = surface.derivatives(c.face, c.u, c.v);
+      const Point r{q[0] - c.point[0], q[1] - c.point[1], q[2] - c.point[2]};
+      auto cosine = [&](const Point& t) {
+        return std::abs(r[0] * t[0] + r[1] * t[1] + r[2] * t[2]) / (std::max(c.distance, 1e-300) * std::hypot(t[0], t[1], t[2]));
+      };
+      if (c.distance > 1e-6 * size) CHECK(std::max(cosine(d.du), cosine(d.dv)) < 1e-6);
+    }
+  }
+}
