@@ -70,7 +70,7 @@ BoundaryRules loop_boundary_rules(const Tables& tables, const TriangleTopology& 
     for (std::size_t v = 0; v < topo.vertices(); ++v)
       if (topo.on_boundary(static_cast<int>(v)) && topo.valence(static_cast<int>(v)) != 3)
         throw MeshError("vertex " + std::to_string(v) + " is on the boundary in " + std::to_string(topo.valence(static_cast<int>(v))) +
-                        " faces: " + tables.scheme() +
+                        (topo.valence(static_cast<int>(v)) == 1 ? " face: " : " faces: ") + tables.scheme() +
                         " meshes with boundaries are evaluated where every boundary vertex is in three faces (a tube, "
                         "an annulus); the patches at boundary vertices in other numbers of faces are not built yet "
                         "(docs/runtime.md, \"Loop with boundaries\")");
