@@ -58,14 +58,9 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
 
 // The boundary rules of a Loop mesh with boundaries, after checking that the
 // runtime evaluates it: every boundary vertex in three faces (the regular
-// boundary patch; docs/runtime.md says what the others need), no sharp features.
+// boundary patch; docs/runtime.md says what the others need).
 BoundaryRules loop_boundary_rules(const Tables& tables, const TriangleTopology& topo, const MeshFeatures& features) {
   const CurveCreaseRule crease = triangle_crease_rule(tables.triangle(), tables.scheme(), "meshes with boundaries");
-  const auto sharp = [](const auto& feature) { return feature.sharpness > 0; };
-  if (std::any_of(features.edges.begin(), features.edges.end(), sharp) ||
-      std::any_of(features.vertices.begin(), features.vertices.end(), sharp))
-    throw MeshError("creases and corners on a " + tables.scheme() +
-                    " mesh with boundaries are not evaluated yet (Loop boundaries are; docs/runtime.md)");
   if (features.boundary != BoundaryInterpolation::None)
     for (std::size_t v = 0; v < topo.vertices(); ++v)
       if (topo.on_boundary(static_cast<int>(v)) && topo.valence(static_cast<int>(v)) != 3)
@@ -163,14 +158,16 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
     check_crease_steps(mesh.face_count(), 4 * mesh.face_count(), sharpness.max());
     // Loop steps with the sharp rules until every sharpness has decayed.
     while (!sharpness.smooth()) {
-      TriangleStep step = loop_step(topo, t);
-      sharpness = sharpen_step(out.mesh, sharpness, crease, loop_step_edge_points(out.mesh, step.mesh), step.steps.front());
+      TriangleStep step = loop_step(topo, t, boundary ? &*boundary : nullptr);
+      // On a mesh with boundaries its boundary edges count as infinitely sharp (OpenSubdiv).
+      sharpness = sharpen_step(out.mesh, sharpness, crease, loop_step_edge_points(out.mesh, step.mesh), step.steps.front(),
+                               boundary && boundary->corners);
       out.hierarchy.add_uniform(4, 2);
       out.refinement.add(std::move(step.steps.front()));
       out.mesh = std::move(step.mesh);
       ++out.steps;
       ++out.crease_steps;
-      topo = TriangleTopology(out.mesh);
+      topo = TriangleTopology(out.mesh, out.boundary);
     }
   }
   while (!gather_patches(topo, t, out.patches, out.phantoms)) {
