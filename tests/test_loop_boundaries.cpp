@@ -173,6 +173,16 @@ TEST_CASE("Loop boundaries: tessellations have one rim per boundary loop and the
   }
 }
 
+TEST_CASE("Loop boundaries, `none`: any boundary vertex is accepted, faces at the boundary have no surface, the others equal Bfr",
+          "[runtime][boundaries][loop][opensubdiv]") {
+  const auto tables = loop_tables();
+  // Rim vertices in two and four faces next to the flipped diagonal.
+  const Mesh mesh = tube_with_flip(7, 4, 0);
+  const auto [positions, derivatives] = bfr_difference(tables, mesh, BoundaryInterpolation::None);
+  CHECK(positions < 1e-14);
+  CHECK(derivatives < 1e-13);
+}
+
 TEST_CASE("Loop boundaries: what is not evaluated yet is refused, naming the vertex or the reason", "[runtime][boundaries][loop]") {
   const auto tables = loop_tables();
   // The flip next to the rim: rim vertices in two and four faces.

@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
       "Meshes with boundaries (quad schemes): every boundary vertex, in any number of faces, with --boundary\n"
       "edge-only (the default), edge-and-corner (or `t interpolateboundary 1/0/0 1`: corners in one face stay put)\n"
       "or none (the faces at boundary vertices are left out: no surface, like holes). Loop: meshes whose boundary\n"
-      "vertices are all in three faces (a tube, an annulus); others are refused naming the vertex.\n"
+      "vertices are all in three faces (a tube, an annulus), or any with none; others are refused naming the vertex.\n"
       "The output reaches the surface's edge: its rim is the limit curve along the boundary (and round holes).\n\n"
       "  stenciltess --tables tables/nonpoly --mesh meshes/chess-piece.obj --rate 8 --out piece.ply\n"
       "  stenciltess --tables tables/nonpoly --mesh meshes/torus-3-5.obj --tolerance 1e-3 --out torus.obj\n"

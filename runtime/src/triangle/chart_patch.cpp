@@ -114,7 +114,7 @@ std::optional<TrianglePatch> find_triangle_patch(const TriangleTopology& t, std:
     do {
       const int x = head(t, h);
       const int valence = t.valence(x);
-      if (valence != 6 && x != ev && tables.regions(valence) > 1) {
+      if (valence != 6 && x != ev && !t.on_boundary(x) && tables.regions(valence) > 1) {
         if (ev >= 0 || (near >= 0 && near != x)) return std::nullopt;
         near = x;
         to_x[static_cast<std::size_t>(c)] = h;

@@ -35,9 +35,11 @@ bool touches_boundary(const TriangleTopology& topo, std::size_t f) {
 // Every face's patch, or false when one cannot be gathered. On a mesh with
 // boundaries, faces whose corners are all regular take the regular patch with
 // phantoms (boundary_patch.hpp); the others need the tables' chart walks, which
-// stop at the boundary.
+// stop at the boundary. With `no_boundary_surface` (OpenSubdiv's `none`) a
+// face at a boundary vertex has no surface: where it has no regular patch it
+// gets a placeholder that is never evaluated.
 bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, std::vector<TrianglePatch>& patches,
-                    PhantomPoints& phantoms) {
+                    PhantomPoints& phantoms, bool no_boundary_surface) {
   patches.clear();
   patches.reserve(topo.faces());
   phantoms = PhantomPoints{};
@@ -47,8 +49,13 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
     if (topo.has_boundary() && (touches_boundary(topo, f) || (regular_loop_vertex(topo, topo.vertex(f, 0)) &&
                                                                regular_loop_vertex(topo, topo.vertex(f, 1)) &&
                                                                regular_loop_vertex(topo, topo.vertex(f, 2)))))
+    {
       patch = regular_boundary_patch(topo, f, tables, phantoms);
-    else
+      if (!patch && no_boundary_surface && touches_boundary(topo, f)) {
+        patch.emplace();
+        patch->points.assign(tables.layout(6).size(), topo.vertex(f, 0));  // a hole: never evaluated
+      }
+    } else
       patch = find_triangle_patch(topo, f, tables);
     if (!patch) return false;
     patches.push_back(std::move(*patch));
@@ -170,7 +177,8 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
       topo = TriangleTopology(out.mesh, out.boundary);
     }
   }
-  while (!gather_patches(topo, t, out.patches, out.phantoms)) {
+  const bool no_boundary_surface = out.boundary && features.boundary == BoundaryInterpolation::None;
+  while (!gather_patches(topo, t, out.patches, out.phantoms, no_boundary_surface)) {
     if (out.steps - out.crease_steps == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices are still too close " + std::string(out.boundary ? "to each other or to the boundary " : "") +
                       "after " + std::to_string(limits::kMaxRefinementSteps) + " " +
