@@ -9,6 +9,7 @@
 #include "curve/curve_table_verify.hpp"
 #include "curve/eigen_solver.hpp"
 #include "curve/generate_curve.hpp"
+#include "curve/linear_at_zero.hpp"
 #include "curve/residue_solver.hpp"
 #include "cli.hpp"
 #include "independent.hpp"
@@ -132,4 +133,21 @@ TEST_CASE("verify checks nubspline3's derivative: a changed value, also at 0 whe
   // The JSON keeps the derivative exactly.
   const sg::CurveTable back = sg::curve_table_from_json(sg::curve_table_to_json(t), "nub-n3.json");
   CHECK(back.functions[2].derivatives == t.functions[2].derivatives);
+}
+
+TEST_CASE("nubspline3's linear function at 0 is t itself: slope 1 right of 0, 2 left of it, checked on a grid prime to 2") {
+  for (const std::string name : {"nubspline3", "nubspline3-columns"}) {
+    const sg::CurveScheme s = sg::load_curve_scheme(name);
+    const sg::LinearAtZero l = sg::linear_at_zero(s);
+    CHECK(l.left_linear);
+    CHECK(l.left_slope == 2);
+    // l = sum xi_j B_j is the knot parameter t (2x left of 0, x right), so xi
+    // holds the Greville abscissae (t_{j-1} + t_j + t_{j+1}) / 3 in t.
+    auto knot = [](long i) { return i < 0 ? Q(2 * i) : Q(i); };
+    for (std::size_t i = 0; i < l.functions.size(); ++i) {
+      const long j = l.functions[i].j;
+      INFO(name << " control " << j);
+      CHECK(l.xi[i] == (knot(j - 1) + knot(j) + knot(j + 1)) / 3);
+    }
+  }
 }

@@ -48,7 +48,14 @@ std::vector<CurveTable> generate_curve_tables(const CurveScheme& scheme, const s
     std::vector<CurveSolution> psi;
     for (const CurveScheme& d : derivatives.schemes) psi.push_back(solve(d, n));
     if (uniform) add_derivatives(tables[i], psi, derivatives.stop);
-    else if (nonuniform.available) add_first_derivative(tables[i], solve_nonuniform_derivative(scheme, nonuniform, n), stop);
+    else if (nonuniform.available) {
+      // A rate whose relations at 0 have no unique solution keeps its values, with the reason.
+      try {
+        add_first_derivative(tables[i], solve_nonuniform_derivative(scheme, nonuniform, n), stop);
+      } catch (const Error& e) {
+        tables[i].derivatives_stop = std::string("no derivative tables at this rate: ") + e.what();
+      }
+    }
     else tables[i].derivatives_stop = stop;
     const auto failures = verify_curve_table(tables[i], scheme);
     if (!failures.empty())

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cstdlib>
 #include <map>
+#include <numeric>
+
+#include <Eigen/Eigenvalues>
 
 #include "algebra/exact_linear_system.hpp"
 #include "base/error.hpp"
@@ -38,8 +41,12 @@ LinearAtZero linear_at_zero(const CurveScheme& s) {
       if (out.functions[i].j == j) return i;
     return std::nullopt;
   };
-  // A rate whose grid has points in (0, right_end] and [left_end, 0).
-  const long r = std::max(1L, ceil_to_long(Rational(1) / std::min(right_end, Rational(-left_end))));
+  // A rate whose grid has at least three points in (0, right_end] and in
+  // [left_end, 0), prime to the arity: then the points are not all tied to the
+  // one that fixes the scale by the homogeneity l(a x) = a l(x), and the
+  // linearity checks below can fail.
+  long r = 3 * std::max(1L, ceil_to_long(Rational(1) / std::min(right_end, Rational(-left_end))));
+  while (std::gcd(r, a) != 1) ++r;
   const CurveSolution values = solve_by_residues(s, r);
   auto l_at = [&](const std::vector<Rational>& xi, long K) {  // l(K / r)
     Rational sum = 0;
@@ -50,6 +57,8 @@ LinearAtZero linear_at_zero(const CurveScheme& s) {
   // (S_LL - I / a) xi = 0, one row per fine function k in L, and l(1/r) = 1/r.
   ExactLinearSystem system(out.functions.size());
   std::map<std::size_t, std::vector<std::pair<std::size_t, Rational>>> rows;
+  const auto m = static_cast<Eigen::Index>(out.functions.size());
+  Eigen::MatrixXd local = Eigen::MatrixXd::Zero(m, m);  // S_LL in doubles, for its spectrum
   for (std::size_t i = 0; i < out.functions.size(); ++i) rows[i].emplace_back(i, Rational(-1, a));
   for (std::size_t c = 0; c < out.functions.size(); ++c) {
     const PlacedFunction& f = out.functions[c];
@@ -58,7 +67,10 @@ LinearAtZero linear_at_zero(const CurveScheme& s) {
       if (type_at(s, k) != term.type)
         throw Error(s.source + ": the refinement of control point " + std::to_string(f.j) + " puts type '" +
                     s.types[term.type].name + "' at fine point " + std::to_string(k) + ", where another type is placed");
-      if (const auto row = index_of(k)) rows[*row].emplace_back(c, term.coeff);
+      if (const auto row = index_of(k)) {
+        rows[*row].emplace_back(c, term.coeff);
+        local(static_cast<Eigen::Index>(*row), static_cast<Eigen::Index>(c)) += to_double(term.coeff);
+      }
     }
   }
   for (const auto& [row, entries] : rows) system.add_equation(entries, 0);
@@ -71,13 +83,29 @@ LinearAtZero linear_at_zero(const CurveScheme& s) {
     throw Error("the eigenvalue 1/" + std::to_string(a) + " of the subdivision at 0 has " + xi.describe() +
                 " with l(1/" + std::to_string(r) + ") = 1/" + std::to_string(r) + " (no unique linear function there)");
   out.xi = xi.values;
+  // A one-sided derivative needs 1/a to be the subdominant eigenvalue: every
+  // other eigenvalue of S_LL but 1 smaller in modulus (in doubles, with a margin).
+  {
+    const Eigen::VectorXcd eigenvalues = Eigen::EigenSolver<Eigen::MatrixXd>(local, false).eigenvalues();
+    std::vector<double> moduli;
+    for (Eigen::Index i = 0; i < eigenvalues.size(); ++i) moduli.push_back(std::abs(eigenvalues[i]));
+    std::sort(moduli.rbegin(), moduli.rend());
+    const double sub = 1.0 / static_cast<double>(a);
+    if (moduli.size() < 2 || std::abs(moduli[0] - 1) > 1e-9 || std::abs(moduli[1] - sub) > 1e-9 ||
+        (moduli.size() > 2 && moduli[2] > sub * (1 - 1e-9)))
+      throw Error("the subdivision at 0 has the eigenvalue moduli " + [&] {
+        std::string list;
+        for (std::size_t i = 0; i < std::min<std::size_t>(moduli.size(), 4); ++i) list += (i ? ", " : "") + std::to_string(moduli[i]);
+        return list;
+      }() + "...: 1/" + std::to_string(a) + " is not its simple subdominant eigenvalue, so no one-sided derivative there is shown");
+  }
   if (l_at(out.xi, 0) != 0) throw Error("the linear function at 0 is not 0 there");
   for (long K = 1; Rational(K, r) <= right_end; ++K)
     if (l_at(out.xi, K) != Rational(K, r))
       throw Error("the homogeneous function at 0 is not linear right of 0 (l(" + to_string(Rational(K, r)) + ") = " +
                   excerpt(to_string(l_at(out.xi, K))) + ")");
   out.left_slope = -l_at(out.xi, -1) * r;
-  out.left_linear = true;
+  out.left_linear = Rational(-2, r) >= left_end;  // at least one more point to check it by
   for (long K = -1; Rational(K, r) >= left_end; --K)
     if (l_at(out.xi, K) != out.left_slope * Rational(K, r)) out.left_linear = false;
   return out;

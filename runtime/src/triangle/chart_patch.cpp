@@ -25,7 +25,9 @@ namespace {
 std::optional<int> walk(const TriangleTopology& t, std::uint32_t first, long straight, int turns, long after) {
   std::uint32_t e = first;
   for (long step = 1; step < straight + after; ++step) {
-    if (t.valence(head(t, e)) != 6) return std::nullopt;
+    // Only a regular inner vertex is walked through (a boundary vertex in six
+    // faces is not: its fan is open, turning round it would leave the mesh).
+    if (t.valence(head(t, e)) != 6 || t.on_boundary(head(t, e))) return std::nullopt;
     // From the way back (+180 degrees): straight on is 3 turns.
     e = turn(t, t.twin(e), step == straight ? turns : 3);
   }
