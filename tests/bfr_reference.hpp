@@ -5,6 +5,7 @@
 // test_quad_opensubdiv.cpp for the measurements behind this choice).
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
 #include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>
 
@@ -63,6 +64,45 @@ inline constexpr int kApproxLevel = 10;
 // The limit surface of a mesh under `scheme` (Catmull-Clark or Loop); a face's
 // (u, v) is Bfr's: for a quad, u along v0->v1 and v along v0->v3; for a
 // triangle, u along v0->v1 and v along v0->v2.
+// Far's vertices after `level` levels of uniform refinement (in double), and,
+// with `limit`, their limit points (Far's limit masks; every sharpness must
+// have decayed by then).
+inline std::vector<std::array<double, 3>> far_points(const std::vector<std::array<double, 3>>& positions,
+                                                     const std::vector<int>& sizes, const std::vector<int>& indices,
+                                                     osd::Sdc::SchemeType scheme, const Creasing& creasing, int level,
+                                                     bool limit) {
+  struct Primvar {
+    double p[3];
+    void Clear() { p[0] = p[1] = p[2] = 0; }
+    void AddWithWeight(const Primvar& s, double w) {
+      for (int k = 0; k < 3; ++k) p[k] += w * s.p[k];
+    }
+  };
+  auto refiner = make_refiner(static_cast<int>(positions.size()), sizes, indices, scheme, {}, creasing);
+  if (!refiner) throw std::runtime_error("OpenSubdiv refused the mesh");
+  osd::Far::TopologyRefiner::UniformOptions options(level);
+  options.fullTopologyInLastLevel = true;  // the limit masks need it
+  refiner->RefineUniform(options);
+  std::vector<Primvar> points(static_cast<std::size_t>(refiner->GetNumVerticesTotal()));
+  for (std::size_t v = 0; v < positions.size(); ++v)
+    for (std::size_t k = 0; k < 3; ++k) points[v].p[k] = positions[v][k];
+  osd::Far::PrimvarRefinerReal<double> primvars(*refiner);
+  Primvar* src = points.data();
+  for (int l = 1; l <= level; ++l) {
+    Primvar* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
+    primvars.Interpolate(l, src, dst);
+    src = dst;
+  }
+  std::vector<Primvar> last(src, src + refiner->GetLevel(level).GetNumVertices());
+  if (limit) {
+    Primvar* destination = last.data();
+    primvars.Limit(src, destination);
+  }
+  std::vector<std::array<double, 3>> out;
+  for (const Primvar& q : last) out.push_back({q.p[0], q.p[1], q.p[2]});
+  return out;
+}
+
 class BfrLimit {
  public:
   BfrLimit(const std::vector<std::array<double, 3>>& positions, const std::vector<int>& sizes,

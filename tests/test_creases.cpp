@@ -7,7 +7,6 @@
 // Bfr 3.5 does not follow Far's Chaikin rule where a semi-sharp edge of
 // sharpness < 1 meets a sharper one (it differs from Far's own refinement by
 // 0.8% of the size on the cube below), so Chaikin is checked against Far only.
-#include <opensubdiv/far/primvarRefiner.h>
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -115,42 +114,11 @@ double bfr_difference(const std::shared_ptr<const Tables>& tables, const Mesh& m
   return worst;
 }
 
-struct Primvar {
-  double p[3];
-  void Clear() { p[0] = p[1] = p[2] = 0; }
-  void AddWithWeight(const Primvar& s, double w) {
-    for (int k = 0; k < 3; ++k) p[k] += w * s.p[k];
-  }
-};
-
 // Far's vertices of uniform refinement level `level` (in double), and, with
 // `limit`, their limit points (every sharpness having decayed by then).
 std::vector<Point> far_points(const Mesh& mesh, const Features& f, int level, bfr_reference::osd::Sdc::SchemeType scheme,
                               bool with_limit) {
-  namespace osd = bfr_reference::osd;
-  auto refiner = bfr_reference::make_refiner(static_cast<int>(mesh.vertex_count()), mesh.face_sizes, mesh.face_vertices,
-                                             scheme, {}, f.osd);
-  osd::Far::TopologyRefiner::UniformOptions options(level);
-  options.fullTopologyInLastLevel = true;  // the limit masks need it
-  refiner->RefineUniform(options);
-  std::vector<Primvar> points(static_cast<std::size_t>(refiner->GetNumVerticesTotal()));
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
-    for (std::size_t k = 0; k < 3; ++k) points[v].p[k] = mesh.positions[v][k];
-  osd::Far::PrimvarRefinerReal<double> primvars(*refiner);
-  Primvar* src = points.data();
-  for (int l = 1; l <= level; ++l) {
-    Primvar* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
-    primvars.Interpolate(l, src, dst);
-    src = dst;
-  }
-  std::vector<Primvar> limit(src, src + refiner->GetLevel(level).GetNumVertices());
-  if (with_limit) {
-    Primvar* destination = limit.data();
-    primvars.Limit(src, destination);
-  }
-  std::vector<Point> out;
-  for (const Primvar& q : limit) out.push_back({q.p[0], q.p[1], q.p[2]});
-  return out;
+  return bfr_reference::far_points(mesh.positions, mesh.face_sizes, mesh.face_vertices, scheme, f.osd, level, with_limit);
 }
 
 // Largest distance, over the mesh size, from our surface at every node of rate

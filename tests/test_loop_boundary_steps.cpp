@@ -6,13 +6,13 @@
 // icosahedron without one face or without a fan round a vertex, and fans of
 // 1..8 faces round a boundary vertex.
 #include <catch2/catch.hpp>
-#include <opensubdiv/far/primvarRefiner.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "bfr_reference.hpp"
 #include "bundled_meshes.hpp"
+#include "open_meshes.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
@@ -24,23 +24,20 @@ using test_meshes::bundled;
 
 namespace {
 
-// (columns x rows) quads with uneven heights, each split into two triangles
-// along alternating diagonals: its corners are in one or two faces, its other
-// boundary vertices in two or three.
+// test_meshes::open_grid (quads with uneven heights), each quad split into
+// two triangles along alternating diagonals: its corners are in one or two
+// faces, its other boundary vertices in two or three.
 Mesh triangulated_grid(int columns, int rows) {
+  const Mesh quads = test_meshes::open_grid(columns, rows);
   Mesh m;
-  for (int j = 0; j <= rows; ++j)
-    for (int i = 0; i <= columns; ++i)
-      m.positions.push_back({i + 0.1 * std::sin(3.0 * j), j + 0.07 * i * i / columns, 0.3 * std::sin(1.3 * i + 0.7 * j)});
-  auto at = [&](int i, int j) { return j * (columns + 1) + i; };
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < columns; ++i) {
-      const int a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-      const bool flip = (i + j) % 2 == 1;
-      m.face_sizes.insert(m.face_sizes.end(), {3, 3});
-      if (flip) m.face_vertices.insert(m.face_vertices.end(), {a, b, d, b, c, d});
-      else m.face_vertices.insert(m.face_vertices.end(), {a, b, c, a, c, d});
-    }
+  m.positions = quads.positions;
+  for (std::size_t f = 0; f < quads.face_count(); ++f) {
+    const int* q = &quads.face_vertices[4 * f];  // (i, j), (i+1, j), (i+1, j+1), (i, j+1)
+    const bool flip = (f % static_cast<std::size_t>(columns) + f / static_cast<std::size_t>(columns)) % 2 == 1;
+    m.face_sizes.insert(m.face_sizes.end(), {3, 3});
+    if (flip) m.face_vertices.insert(m.face_vertices.end(), {q[0], q[1], q[3], q[1], q[2], q[3]});
+    else m.face_vertices.insert(m.face_vertices.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+  }
   return m;
 }
 
@@ -80,35 +77,12 @@ Mesh icosahedron_without(int v) {
   return m;
 }
 
-struct Primvar {
-  double p[3];
-  void Clear() { p[0] = p[1] = p[2] = 0; }
-  void AddWithWeight(const Primvar& s, double w) {
-    for (int k = 0; k < 3; ++k) p[k] += w * s.p[k];
-  }
-};
-
 // Far's vertices after `level` uniform Loop steps with the boundary option.
 std::vector<Point> far_loop_points(const Mesh& mesh, bool corners, int level) {
-  namespace osd = bfr_reference::osd;
   bfr_reference::Creasing options;
   options.boundary_corners = corners;
-  auto refiner = bfr_reference::make_refiner(static_cast<int>(mesh.vertex_count()), mesh.face_sizes, mesh.face_vertices,
-                                             osd::Sdc::SCHEME_LOOP, {}, options);
-  refiner->RefineUniform(osd::Far::TopologyRefiner::UniformOptions(level));
-  std::vector<Primvar> points(static_cast<std::size_t>(refiner->GetNumVerticesTotal()));
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
-    for (std::size_t k = 0; k < 3; ++k) points[v].p[k] = mesh.positions[v][k];
-  osd::Far::PrimvarRefinerReal<double> primvars(*refiner);
-  Primvar* src = points.data();
-  for (int l = 1; l <= level; ++l) {
-    Primvar* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
-    primvars.Interpolate(l, src, dst);
-    src = dst;
-  }
-  std::vector<Point> out;
-  for (int i = 0; i < refiner->GetLevel(level).GetNumVertices(); ++i) out.push_back({src[i].p[0], src[i].p[1], src[i].p[2]});
-  return out;
+  return bfr_reference::far_points(mesh.positions, mesh.face_sizes, mesh.face_vertices, bfr_reference::osd::Sdc::SCHEME_LOOP,
+                                   options, level, false);
 }
 
 // Largest distance from one of `ours` to the nearest of `reference`, and back

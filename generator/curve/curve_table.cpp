@@ -40,16 +40,8 @@ void add_derivatives(CurveTable& table, const std::vector<CurveSolution>& psi, c
   CurveTable::Function& f = table.functions[0];
   f.derivatives.assign(psi.size(), {});
   for (std::size_t r = 1; r <= psi.size(); ++r) {
-    const TypeValues& p = psi[r - 1].types.at(0);
     if (psi[r - 1].n != table.n) throw Error("derivative scheme solved at another rate than the table's");
-    const std::vector<long> w = difference_weights(static_cast<int>(r));
-    // phi^(r)(k/n) = sum_i w_i psi_r(k/n - i): psi_r's grid shifted by i n.
-    const long n = table.n, last_shift = static_cast<long>(r) * n;
-    for (long k = p.range.first; k <= p.range.last + last_shift; ++k) {
-      Rational value = 0;
-      for (std::size_t i = 0; i < w.size(); ++i) value += w[i] * p.at(k - static_cast<long>(i) * n);
-      if (value != 0) f.derivatives[r - 1][k] = value;
-    }
+    f.derivatives[r - 1] = derivative_from_difference(psi[r - 1].types.at(0), static_cast<int>(r), table.n);
   }
   table.derivative_orders = static_cast<int>(psi.size());
   table.derivatives_stop = stop;

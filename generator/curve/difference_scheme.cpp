@@ -101,6 +101,18 @@ std::vector<long> difference_weights(int r) {
   return w;
 }
 
+std::map<long, Rational> derivative_from_difference(const TypeValues& psi, int r, long n) {
+  const std::vector<long> w = difference_weights(r);
+  // phi^(r)(k/n) = sum_i w_i psi_r(k/n - i): psi_r's grid shifted by i n.
+  std::map<long, Rational> out;
+  for (long k = psi.range.first; k <= psi.range.last + static_cast<long>(r) * n; ++k) {
+    Rational value = 0;
+    for (std::size_t i = 0; i < w.size(); ++i) value += w[i] * psi.at(k - static_cast<long>(i) * n);
+    if (value != 0) out[k] = value;
+  }
+  return out;
+}
+
 DerivativeSchemes derivative_schemes(const CurveScheme& scheme, int max_order) {
   DerivativeSchemes out;
   if (!scheme.is_uniform() || scheme.types[0].placement != Placement::Everywhere) {

@@ -46,4 +46,8 @@ CurveTable table_with_derivatives(const CurveScheme& scheme, const CurveSolution
 // (-1)^i C(r, i), i = 0..r: phi^(r)(x) = sum_i weights[i] psi_r(x - i).
 std::vector<long> difference_weights(int r);
 
+// The nonzero values of phi^(r) on (1/n)Z from psi_r's there (`psi`: the
+// solution of derivative scheme r at rate n), keyed by grid index.
+std::map<long, Rational> derivative_from_difference(const TypeValues& psi, int r, long n);
+
 }  // namespace sg

@@ -63,11 +63,8 @@ CurveSolution solve_nonuniform_derivative(const CurveScheme& s, const Nonuniform
   // Invariant types: phi'(x) = psi(x) - psi(x - 1).
   for (std::size_t h = 0; h < s.types.size(); ++h) {
     if (!plan.psi[h]) continue;
-    const TypeValues psi = solve_by_residues(*plan.psi[h], n).types.at(0);
     TypeValues& tv = d.types[h];
-    for (long k = psi.range.first; k <= psi.range.last + n; ++k) {
-      const Rational v = psi.at(k) - psi.at(k - n);
-      if (v == 0) continue;
+    for (const auto& [k, v] : derivative_from_difference(solve_by_residues(*plan.psi[h], n).types.at(0), 1, n)) {
       if (!tv.range.contains(k))
         throw Error("scheme '" + s.name + "', n = " + std::to_string(n) + ": the derivative of '" + s.types[h].name +
                     "' is nonzero at " + to_string(Rational(k, n)) + ", outside its open support");

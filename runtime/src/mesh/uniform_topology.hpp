@@ -38,6 +38,14 @@ class UniformTopology {
   static std::uint32_t half_edge(std::size_t f, int c) {
     return static_cast<std::uint32_t>(K * f + static_cast<std::size_t>((c + K) % K));
   }
+  // The vertex half-edge h points to (its face's next corner).
+  int head(std::uint32_t h) const { return vertex(face_of(h), corner_of(h) + 1); }
+  // Whether a corner of face f is on the boundary.
+  bool touches_boundary(std::size_t f) const {
+    for (int c = 0; c < K && has_boundary_; ++c)
+      if (on_boundary(vertex(f, c))) return true;
+    return false;
+  }
   // The next half-edge leaving the same vertex, counter-clockwise (faces are
   // counter-clockwise seen from outside); kNoTwin past a boundary vertex's last face.
   std::uint32_t turn_ccw(std::uint32_t h) const { return twin_[half_edge(face_of(h), corner_of(h) + K - 1)]; }

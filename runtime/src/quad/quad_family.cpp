@@ -28,12 +28,6 @@ struct QuadFamily::Prepared {
 
 namespace {
 
-bool touches_boundary(const QuadTopology& topo, std::size_t f) {
-  for (int c = 0; c < 4; ++c)
-    if (topo.on_boundary(topo.vertex(f, c))) return true;
-  return false;
-}
-
 // Whether face f has a corner at a vertex marked in `no_surface` (per vertex, or empty).
 bool without_surface(const QuadTopology& topo, std::size_t f, const std::vector<char>& no_surface) {
   if (no_surface.empty()) return false;
@@ -71,7 +65,7 @@ int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<Sec
 // surface (empty: none).
 bool isolated(const QuadTopology& topo, const std::vector<SectorRule>& corner, const std::vector<char>& no_surface) {
   for (std::size_t f = 0; f < topo.faces(); ++f) {
-    if (topo.has_boundary() && touches_boundary(topo, f)) {
+    if (topo.touches_boundary(f)) {
       if (without_surface(topo, f, no_surface)) continue;
       const int c = sector_corner(topo, f, corner);
       if (c >= 0 ? !sector_patch_ready(topo, f, c, corner) : !boundary_patch_ready(topo, f, corner)) return false;
@@ -258,7 +252,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   std::vector<std::vector<std::pair<int, double>>> phantoms;
   out.patches.resize(patch_topo.faces());
   for (std::size_t f = 0; f < patch_topo.faces(); ++f) {
-    if (!patch_topo.has_boundary() || !touches_boundary(patch_topo, f)) {
+    if (!patch_topo.touches_boundary(f)) {
       out.patches[f] = gather_quad_patch(patch_topo, f, cut.rule);
       continue;
     }

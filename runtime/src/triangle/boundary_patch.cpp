@@ -48,22 +48,18 @@ class Unfolding {
   std::vector<std::pair<int, Lattice>> points_;
 };
 
-int head(const TriangleTopology& t, std::uint32_t h) {
-  return t.vertex(TriangleTopology::face_of(h), TriangleTopology::corner_of(h) + 1);
-}
-
 // Places the faces round vertex `v` (already placed with one neighbour along
 // half-edge `from`), turning both ways until the boundary or back to `from`.
 bool unfold_fan(const TriangleTopology& t, std::uint32_t from, Unfolding& u) {
   const int v = t.vertex(TriangleTopology::face_of(from), TriangleTopology::corner_of(from));
   const Lattice centre = *u.where(v);
-  const Lattice first = minus(*u.where(head(t, from)), centre);
+  const Lattice first = minus(*u.where(t.head(from)), centre);
   const std::size_t k = static_cast<std::size_t>(std::find(kDirections.begin(), kDirections.end(), first) - kDirections.begin());
   if (k == kDirections.size()) return false;
   // Counter-clockwise: each outgoing half-edge is the next direction.
   std::uint32_t h = from;
   for (std::size_t step = 0; step < 6; ++step) {
-    if (!u.place(head(t, h), plus(centre, kDirections[(k + step) % 6]))) return false;
+    if (!u.place(t.head(h), plus(centre, kDirections[(k + step) % 6]))) return false;
     // The face of h also holds the vertex before v (its third corner).
     const std::size_t f = TriangleTopology::face_of(h);
     if (!u.place(t.vertex(f, TriangleTopology::corner_of(h) + 2), plus(centre, kDirections[(k + step + 1) % 6]))) return false;
@@ -78,7 +74,7 @@ bool unfold_fan(const TriangleTopology& t, std::uint32_t from, Unfolding& u) {
     if (back == TriangleTopology::kNoTwin) break;
     h = TriangleTopology::half_edge(TriangleTopology::face_of(back), TriangleTopology::corner_of(back) + 1);
     if (h == from) break;
-    if (!u.place(head(t, h), plus(centre, kDirections[(k + 6 - step) % 6]))) return false;
+    if (!u.place(t.head(h), plus(centre, kDirections[(k + 6 - step) % 6]))) return false;
   }
   return true;
 }

@@ -11,10 +11,6 @@ std::uint32_t turn(const TriangleTopology& t, std::uint32_t h, int times) {
   return h;
 }
 
-int head(const TriangleTopology& t, std::uint32_t h) {
-  return t.vertex(TriangleTopology::face_of(h), TriangleTopology::corner_of(h) + 1);
-}
-
 }  // namespace
 
 namespace {
@@ -27,11 +23,11 @@ std::optional<int> walk(const TriangleTopology& t, std::uint32_t first, long str
   for (long step = 1; step < straight + after; ++step) {
     // Only a regular inner vertex is walked through (a boundary vertex in six
     // faces is not: its fan is open, turning round it would leave the mesh).
-    if (t.valence(head(t, e)) != 6 || t.on_boundary(head(t, e))) return std::nullopt;
+    if (t.valence(t.head(e)) != 6 || t.on_boundary(t.head(e))) return std::nullopt;
     // From the way back (+180 degrees): straight on is 3 turns.
     e = turn(t, t.twin(e), step == straight ? turns : 3);
   }
-  return head(t, e);
+  return t.head(e);
 }
 
 }  // namespace
@@ -75,21 +71,21 @@ bool band_position(const TriangleTopology& t, std::size_t f, const std::array<st
     const int r = to_x[0] ? (to_x[1] ? 1 : 0) : 2;  // the corner after r is the one not adjacent
     e_k = t.twin(*to_x[r]);
     patch.region = 2, patch.rotation = r;
-    return head(t, t.turn_ccw(e_k)) == t.vertex(f, r + 2);
+    return t.head(t.turn_ccw(e_k)) == t.vertex(f, r + 2);
   }
   if (adjacent != 1) return false;
   const int r = to_x[0] ? 0 : to_x[1] ? 1 : 2;
   const std::uint32_t to_p = t.twin(*to_x[r]);          // x -> the corner next to it
   const std::uint32_t beyond = turn(t, t.twin(to_p), 3);  // straight on through that corner
   patch.rotation = r;
-  if (head(t, beyond) == t.vertex(f, r + 1)) {
+  if (t.head(beyond) == t.vertex(f, r + 1)) {
     // Region 1, corners (1,0), (2,0), (2,1): the corner is e_k.
     patch.region = 1, e_k = to_p;
     return true;
   }
-  if (head(t, beyond) == t.vertex(f, r + 2)) {
+  if (t.head(beyond) == t.vertex(f, r + 2)) {
     // Region 3, corners (1,1), (2,1), (2,2): the corner is e_{k+1}.
-    patch.region = 3, e_k = turn(t, to_p, t.valence(head(t, t.twin(to_p))) - 1);
+    patch.region = 3, e_k = turn(t, to_p, t.valence(t.head(t.twin(to_p))) - 1);
     return true;
   }
   return false;
@@ -114,7 +110,7 @@ std::optional<TrianglePatch> find_triangle_patch(const TriangleTopology& t, std:
     const std::uint32_t first = TriangleTopology::half_edge(f, c);
     std::uint32_t h = first;
     do {
-      const int x = head(t, h);
+      const int x = t.head(h);
       const int valence = t.valence(x);
       if (valence != 6 && x != ev && !t.on_boundary(x) && tables.regions(valence) > 1) {
         if (ev >= 0 || (near >= 0 && near != x)) return std::nullopt;

@@ -26,12 +26,6 @@ struct TriangleFamily::Prepared {
 
 namespace {
 
-bool touches_boundary(const TriangleTopology& topo, std::size_t f) {
-  for (int c = 0; c < 3; ++c)
-    if (topo.on_boundary(topo.vertex(f, c))) return true;
-  return false;
-}
-
 // Every face's patch, or false when one cannot be gathered. On a mesh with
 // boundaries, faces whose corners are all regular take the regular patch with
 // phantoms (boundary_patch.hpp); the others need the tables' chart walks, which
@@ -45,18 +39,18 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
   phantoms = PhantomPoints{};
   phantoms.first = topo.vertices();
   for (std::size_t f = 0; f < topo.faces(); ++f) {
+    const bool at_boundary = topo.touches_boundary(f);
     std::optional<TrianglePatch> patch;
-    if (topo.has_boundary() && (touches_boundary(topo, f) || (regular_loop_vertex(topo, topo.vertex(f, 0)) &&
-                                                               regular_loop_vertex(topo, topo.vertex(f, 1)) &&
-                                                               regular_loop_vertex(topo, topo.vertex(f, 2)))))
-    {
+    if (at_boundary || (topo.has_boundary() && regular_loop_vertex(topo, topo.vertex(f, 0)) &&
+                        regular_loop_vertex(topo, topo.vertex(f, 1)) && regular_loop_vertex(topo, topo.vertex(f, 2)))) {
       patch = regular_boundary_patch(topo, f, tables, phantoms);
-      if (!patch && no_boundary_surface && touches_boundary(topo, f)) {
+      if (!patch && at_boundary && no_boundary_surface) {
         patch.emplace();
         patch->points.assign(tables.layout(6).size(), topo.vertex(f, 0));  // a hole: never evaluated
       }
-    } else
+    } else {
       patch = find_triangle_patch(topo, f, tables);
+    }
     if (!patch) return false;
     patches.push_back(std::move(*patch));
   }

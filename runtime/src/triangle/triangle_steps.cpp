@@ -8,10 +8,6 @@ namespace stencil_runtime {
 
 namespace {
 
-std::uint32_t head(const TriangleTopology& t, std::uint32_t h) {
-  return static_cast<std::uint32_t>(t.vertex(TriangleTopology::face_of(h), TriangleTopology::corner_of(h) + 1));
-}
-
 // The vertex rule at every vertex, as rows [0, nv): (1 - valence w) p + w (sum
 // of the neighbours); on a boundary, `boundary`'s rules.
 void relax_vertices(const TriangleTopology& topo, const TriangleTables& t, RefinementStep& step,
@@ -30,7 +26,7 @@ void relax_vertices(const TriangleTopology& topo, const TriangleTables& t, Refin
       if (!boundary) throw MeshError("internal: a Loop step on a mesh with boundaries was given no boundary rules");
       std::uint32_t e = first_out[v], last = e;
       for (; e != TriangleTopology::kNoTwin; e = topo.turn_ccw(e)) last = e;
-      boundary_row(row, static_cast<std::uint32_t>(v), head(topo, first_out[v]),
+      boundary_row(row, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(topo.head(first_out[v])),
                    static_cast<std::uint32_t>(topo.vertex(TriangleTopology::face_of(last), TriangleTopology::corner_of(last) + 2)),
                    valence, *boundary);
       step.add_row(row);
@@ -43,7 +39,7 @@ void relax_vertices(const TriangleTopology& topo, const TriangleTables& t, Refin
     row.assign(1, {static_cast<std::uint32_t>(v), 1 - valence * w});
     std::uint32_t e = first_out[v];
     do {
-      row.emplace_back(head(topo, e), w);
+      row.emplace_back(static_cast<std::uint32_t>(topo.head(e)), w);
       e = topo.turn_ccw(e);
     } while (e != first_out[v]);
     step.add_row(row);
