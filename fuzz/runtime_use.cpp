@@ -188,7 +188,27 @@ void use_tables(const std::shared_ptr<const rt::Tables>& shared) {
   }
 }
 
-void use_mesh(const rt::Mesh& mesh) {
+// Semi-sharp features take one whole-mesh step (4x the faces) per unit of
+// sharpness: a few lines of tags can ask for millions of faces, legitimately
+// (the library refuses only beyond its stated limit) and for seconds under the
+// sanitizers. Clamps them to what keeps the prepared mesh near 8192 faces, so
+// one input stays within milliseconds; infinitely sharp ones (>= 10) and
+// invalid values (which the checks must refuse) are kept.
+rt::Mesh within_budget(const rt::Mesh& mesh) {
+  constexpr std::size_t kPreparedFaces = 8192;
+  double cap = 1;
+  for (std::size_t faces = std::max<std::size_t>(mesh.face_count(), 1) * 16; faces <= kPreparedFaces; faces *= 4) cap += 1;
+  rt::Mesh out = mesh;
+  auto clamp = [&](double& s) {
+    if (s > cap && s < 10) s = cap;
+  };
+  for (auto& c : out.tags.creases) clamp(c.sharpness);
+  for (auto& c : out.tags.corners) clamp(c.sharpness);
+  return out;
+}
+
+void use_mesh(const rt::Mesh& input) {
+  const rt::Mesh mesh = within_budget(input);
   auto fixture = [](const char* name) {
     try {
       return rt::Tables::load((fixtures_dir() / name).string());
