@@ -191,7 +191,7 @@ TEST_CASE("normals at extraordinary vertices: the derivatives' normals converge 
   }
 }
 
-TEST_CASE("Loop normals at extraordinary vertices equal OpenSubdiv's exact limit tangents; sqrt(3)'s agree round each vertex",
+TEST_CASE("Loop normals at extraordinary vertices equal OpenSubdiv's exact limit tangents, and sqrt(3)'s agree round each vertex",
           "[runtime][derivatives][opensubdiv]") {
   const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4", "sgt").string());
   const auto sqrt3 = Tables::load(generated_table("sqrt3", "--valence 3-8 --n 3", "sgt").string());

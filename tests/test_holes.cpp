@@ -132,7 +132,7 @@ TEST_CASE("holes: tessellations leave them out, with one rim per hole and the Eu
   }
 }
 
-TEST_CASE("holes from OBJ tags: evaluated round, refused in, left out of stenciltess; stencildist refuses --signed",
+TEST_CASE("holes from OBJ tags: evaluated round, refused in, left out of stenciltess, and stencildist refuses --signed",
           "[runtime][holes][tags]") {
   const fs::path dir = scratch_dir("holes-cli");
   {
@@ -150,7 +150,9 @@ TEST_CASE("holes from OBJ tags: evaluated round, refused in, left out of stencil
   r = run_stenciltess("--tables " + tables + " --mesh " + mesh + " --rate 4 --out " + (dir / "t.obj").string());
   REQUIRE(r.status == 0);
   const Mesh out = read_obj((dir / "t.obj").string());
-  CHECK(out.vertex_count() == 5 * 4 * 4);  // five faces of 4 prepared faces at rate 2 (4 / 2; the hole's four left out)
+  // Five faces of 4 prepared faces at rate 2 (4 / 2; the hole's four left out), one point per grid cell, and the
+  // rim: the limit curve at the grid nodes of the hole's 8 prepared edges (2 per edge, the ends shared).
+  CHECK(out.vertex_count() == 5 * 4 * 4 + 8 * 2);
   std::ofstream(dir / "points.xyz") << "0 0 0\n1 2 3\n";
   r = run_command(STENCILDIST_EXE, "--tables " + tables + " --mesh " + mesh + " --points " + (dir / "points.xyz").string() + " --signed");
   CHECK(r.status == 1);

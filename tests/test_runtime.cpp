@@ -283,7 +283,7 @@ TEST_CASE("the runtime loads the exact JSON tables too, with the same stencils a
   fs::remove_all(dir);
 }
 
-TEST_CASE("meshes with triangles get the scheme's polygon step; Catmull-Clark then equals OpenSubdiv", "[runtime][opensubdiv]") {
+TEST_CASE("meshes with triangles get the scheme's polygon step, and Catmull-Clark then equals OpenSubdiv", "[runtime][opensubdiv]") {
   const auto cc = Tables::load(tables_for("catmull-clark").string());
   const Mesh m = prism();
   const Surface surface = surface_of(cc, m);

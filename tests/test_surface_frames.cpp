@@ -82,7 +82,7 @@ TEST_CASE("new positions per frame equal a fresh build from the moved mesh, bit 
   check_frames(sqrt3, bundled("icosahedron"), 2);    // two double sqrt(3) steps
 }
 
-TEST_CASE("a surface keeps its tables alive; tables exist only shared", "[runtime][frames]") {
+TEST_CASE("a surface keeps its tables alive, and tables exist only shared", "[runtime][frames]") {
   static_assert(!std::is_default_constructible_v<Tables>);
   static_assert(!std::is_copy_constructible_v<Tables>);
   static_assert(!std::is_copy_constructible_v<SurfaceTopology>);
