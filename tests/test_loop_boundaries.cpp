@@ -12,6 +12,7 @@
 
 #include "bfr_reference.hpp"
 #include "cli.hpp"
+#include "loop_meshes.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
 #include "stencil_runtime/closest_point.hpp"
@@ -22,37 +23,11 @@ using namespace test_runtime;
 
 namespace {
 
-// A tube of `around` x `rows` quads, each split into two triangles along the
-// same diagonal: every inner vertex of valence 6, every rim vertex in three faces.
-Mesh triangle_tube(int around, int rows) {
-  Mesh m;
-  for (int j = 0; j <= rows; ++j)
-    for (int i = 0; i < around; ++i) {
-      const double a = 2 * M_PI * (i + 0.5 * j) / around, r = 1 + 0.15 * std::cos(2.0 * j + i);
-      m.positions.push_back({r * std::cos(a), r * std::sin(a), 0.6 * j + 0.05 * (i % 3)});
-    }
-  auto at = [&](int i, int j) { return j * around + (i % around); };
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < around; ++i) {
-      m.face_sizes.insert(m.face_sizes.end(), {3, 3});
-      m.face_vertices.insert(m.face_vertices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return m;
-}
+using loop_meshes::triangle_tube;
 
-// The same tube with the diagonal of one quad in its first row flipped: two
-// inner vertices of valence 5 and 7 next to the rim (and the rim vertices of
-// that quad still in three faces... one in two, one in four: see the caller).
-Mesh tube_with_flip(int around, int rows, int row) {
-  Mesh m = triangle_tube(around, rows);
-  const std::size_t f = 2 * static_cast<std::size_t>(row * around);  // quad (0, row): faces f, f + 1
-  const int a = m.face_vertices[3 * f], b = m.face_vertices[3 * f + 1], c = m.face_vertices[3 * f + 2],
-            d = m.face_vertices[3 * f + 5];
-  // (a, b, c), (a, c, d) -> (a, b, d), (b, c, d)
-  const int flipped[6] = {a, b, d, b, c, d};
-  std::copy(flipped, flipped + 6, m.face_vertices.begin() + static_cast<long>(3 * f));
-  return m;
-}
+// The tube with the diagonal of quad (0, row) flipped (inside: valence 5 and 7;
+// on a rim: rim vertices in two and four faces).
+Mesh tube_with_flip(int around, int rows, int row) { return loop_meshes::with_flip(triangle_tube(around, rows), around, row); }
 
 Surface loop_surface(const std::shared_ptr<const Tables>& tables, const Mesh& m, BoundaryInterpolation boundary) {
   MeshFeatures features;

@@ -138,13 +138,13 @@ TEST_CASE("tags the runtime cannot honour are refused, tags without effect chang
                                                                Catch::Contains("regenerate them"));
     CHECK_NOTHROW(SurfaceTopology::create(tables, m));
   }
-  // An infinitely sharp crease on a triangle scheme's mesh names the line too.
+  // An infinitely sharp crease Loop cannot evaluate yet (a single edge: darts at both ends) names its vertex.
   {
     const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4", "sgt").string());
     std::ofstream(dir / "tet-crease.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
                                              "t crease 2/1/0 0 1 11\n";
     CHECK_THROWS_WITH(SurfaceTopology::create(loop, read_obj((dir / "tet-crease.obj").string())),
-                      Catch::Contains("tet-crease.obj:9") && Catch::Contains("infinitely sharp") && Catch::Contains("not supported yet"));
+                      Catch::Contains("vertex 0 ends an infinitely sharp crease (a dart)") && Catch::Contains("not darts yet"));
   }
   // Smooth triangles are Catmull-Clark's rule: refused, with the line, on nonpoly's mesh with triangles.
   {

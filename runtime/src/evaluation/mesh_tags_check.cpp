@@ -1,9 +1,8 @@
 // SurfaceTopology::create from a Mesh: its OBJ tags become the features the
-// runtime honours (holes, creases and corners, infinitely sharp ones and cone
-// points for quad schemes, the crease method, smooth triangles), and a tag it cannot honour
-// yet is an error naming its line instead of a silently different surface.
+// runtime honours (holes, creases and corners, infinitely sharp ones, the
+// crease method, smooth triangles); a tag it cannot honour yet is an error
+// naming its line or its vertex instead of a silently different surface.
 #include <algorithm>
-#include <sstream>
 #include <string>
 
 #include "stencil_runtime/surface_topology.hpp"
@@ -13,19 +12,7 @@ namespace stencil_runtime {
 
 namespace {
 
-std::string number(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
 std::string where(const Mesh& mesh, long line) { return mesh.source.empty() ? "tag" : mesh.source + ":" + std::to_string(line); }
-
-[[noreturn]] void refuse(const Mesh& mesh, long line, const std::string& what) {
-  throw MeshError(where(mesh, line) + ": " + what + " is not supported yet; remove the tag (or lower the sharpness) to evaluate");
-}
-
-constexpr double kInfinite = 10;  // OpenSubdiv's infinite sharpness
 
 }  // namespace
 
@@ -35,21 +22,10 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   MeshFeatures features;
   features.chaikin = tags.chaikin_creases;
   features.boundary = tags.boundary;
-  // Infinitely sharp features are boundaries of the cut mesh for quad schemes (family/sharp_cut.hpp), a sharp vertex on
-  // none of them a cone point; not yet for triangle ones.
-  const bool triangles_only = tables->family() != SchemeFamily::Quad;
-  for (const auto& c : tags.creases) {
-    const std::string edge = "the edge " + std::to_string(c.a) + "-" + std::to_string(c.b);
-    if (c.sharpness >= kInfinite && triangles_only)
-      refuse(mesh, c.line, "an infinitely sharp crease (sharpness " + number(c.sharpness) + " >= 10) on " + edge + " of a triangle scheme");
-    features.edges.push_back({c.a, c.b, c.sharpness});
-  }
-  for (const auto& c : tags.corners) {
-    const std::string vertex = "vertex " + std::to_string(c.vertex);
-    if (c.sharpness >= kInfinite && triangles_only)
-      refuse(mesh, c.line, "an infinitely sharp corner (sharpness " + number(c.sharpness) + " >= 10) at " + vertex + " of a triangle scheme");
-    features.vertices.push_back({c.vertex, c.sharpness});
-  }
+  // Infinitely sharp features are boundaries of the cut mesh (family/sharp_cut.hpp), a sharp vertex on none of them
+  // a cone point; the families refuse, naming the vertex, what they cannot evaluate yet.
+  for (const auto& c : tags.creases) features.edges.push_back({c.a, c.b, c.sharpness});
+  for (const auto& c : tags.corners) features.vertices.push_back({c.vertex, c.sharpness});
   // Smooth triangles change Catmull-Clark's first step only (Loop ignores the tag, as OpenSubdiv).
   const bool triangles = std::find(mesh.face_sizes.begin(), mesh.face_sizes.end(), 3) != mesh.face_sizes.end();
   if (tags.smooth_triangles && triangles && tables->family() == SchemeFamily::Quad) {

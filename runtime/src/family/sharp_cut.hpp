@@ -40,4 +40,17 @@ struct SharpCut {
 SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& links, const LevelSharpness& sharpness,
                                bool edge_and_corner);
 
+// With boundary interpolation `none`, per vertex of `cut`: whether it copies a
+// vertex on the mesh's own boundary (`uncut`: the topology the cut was made
+// from, with on_boundary(v)), whose faces have no surface; copies along
+// creases are boundary vertices of the cut mesh only. Empty without `none`.
+template <class Topology>
+std::vector<char> no_surface_vertices(bool no_boundary_surface, const Topology& uncut, const SharpCut& cut) {
+  std::vector<char> out;
+  if (!no_boundary_surface) return out;
+  out.resize(cut.mesh.vertex_count);
+  for (std::size_t v = 0; v < out.size(); ++v) out[v] = uncut.on_boundary(cut.origin[v]) ? 1 : 0;
+  return out;
+}
+
 }  // namespace stencil_runtime

@@ -36,18 +36,6 @@ bool without_surface(const QuadTopology& topo, std::size_t f, const std::vector<
   return false;
 }
 
-// With `none`, per vertex of the cut mesh: whether it copies a vertex on the
-// mesh's own boundary (`uncut`: the whole-mesh step's topology), whose faces
-// have no surface; crease copies are boundary vertices of the cut mesh only.
-// Empty without `none`.
-std::vector<char> no_surface_vertices(bool no_boundary_surface, const QuadTopology& uncut, const SharpCut& cut) {
-  std::vector<char> out;
-  if (!no_boundary_surface) return out;
-  out.resize(cut.mesh.vertex_count);
-  for (std::size_t v = 0; v < out.size(); ++v) out[v] = uncut.on_boundary(cut.origin[v]) ? 1 : 0;
-  return out;
-}
-
 // The corner of face f at a boundary vertex with a sector patch (sector_vertex), or -1.
 int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<SectorRule>& corner) {
   for (int c = 0; c < 4; ++c)

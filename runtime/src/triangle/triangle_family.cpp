@@ -1,10 +1,12 @@
 #include "triangle_family.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <string>
 #include <type_traits>
 
 #include "family/crease_step.hpp"
+#include "family/sharp_cut.hpp"
 #include "family/parameter_ops.hpp"
 #include "family/stencil_sum.hpp"
 #include "boundary_patch.hpp"
@@ -26,14 +28,24 @@ struct TriangleFamily::Prepared {
 
 namespace {
 
-// Every face's patch, or false when one cannot be gathered. On a mesh with
-// boundaries, faces whose corners are all regular take the regular patch with
-// phantoms (boundary_patch.hpp); the others need the tables' chart walks, which
-// stop at the boundary. With `no_boundary_surface` (OpenSubdiv's `none`) a
-// face at a boundary vertex has no surface: where it has no regular patch it
-// gets a placeholder that is never evaluated.
+// Whether face f has a corner at a vertex marked in `no_surface` (per vertex, or empty).
+bool without_surface(const TriangleTopology& topo, std::size_t f, const std::vector<char>& no_surface) {
+  if (no_surface.empty()) return false;
+  for (int c = 0; c < 3; ++c)
+    if (no_surface[static_cast<std::size_t>(topo.vertex(f, c))]) return true;
+  return false;
+}
+
+// Every face's patch, or false when one cannot be gathered. `topo` is the mesh
+// cut along its infinitely sharp edges (family/sharp_cut.hpp), whose boundaries
+// are the mesh's own and its creases. On a mesh with boundaries, faces whose
+// corners are all regular take the regular patch with phantoms
+// (boundary_patch.hpp); the others need the tables' chart walks, which stop at
+// the boundary. A face at a vertex marked in `no_surface` (OpenSubdiv's `none`:
+// a copy of a vertex on the mesh's own boundary) has no surface: where it has
+// no regular patch it gets a placeholder that is never evaluated.
 bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, std::vector<TrianglePatch>& patches,
-                    PhantomPoints& phantoms, bool no_boundary_surface) {
+                    PhantomPoints& phantoms, const std::vector<char>& no_surface) {
   patches.clear();
   patches.reserve(topo.faces());
   phantoms = PhantomPoints{};
@@ -44,7 +56,7 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
     if (at_boundary || (topo.has_boundary() && regular_loop_vertex(topo, topo.vertex(f, 0)) &&
                         regular_loop_vertex(topo, topo.vertex(f, 1)) && regular_loop_vertex(topo, topo.vertex(f, 2)))) {
       patch = regular_boundary_patch(topo, f, tables, phantoms);
-      if (!patch && at_boundary && no_boundary_surface) {
+      if (!patch && without_surface(topo, f, no_surface)) {
         patch.emplace();
         patch->points.assign(tables.layout(6).size(), topo.vertex(f, 0));  // a hole: never evaluated
       }
@@ -57,21 +69,72 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
   return true;
 }
 
-// The boundary rules of a Loop mesh with boundaries, after checking that the
-// runtime evaluates it: every boundary vertex in three faces (the regular
-// boundary patch; docs/runtime.md says what the others need).
-BoundaryRules loop_boundary_rules(const Tables& tables, const TriangleTopology& topo, const MeshFeatures& features) {
+// The vertices of a Loop mesh cut along its infinitely sharp edges (`cut`,
+// whose links are `links`), checked once on the input (steps keep every
+// vertex's number of faces and rule): inside ones need their valence in the
+// tables; every one on a boundary of the cut mesh, the mesh's own or a crease,
+// needs three faces and the crease rule, where the regular boundary patch is
+// exact (boundary_patch.hpp; docs/runtime.md says what the others need). With
+// `none` (`no_surface`) the faces at the mesh's own boundary have no surface,
+// so any vertex will do there.
+void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const PolygonLinks& uncut,
+                         const std::vector<char>& no_surface, const std::string& scheme, ValenceCheck& valences) {
+  const std::string plan = " (docs/runtime.md, \"Loop with boundaries\")";
+  for (std::size_t v = 0; v < cut.mesh.vertex_count; ++v) {
+    const int k = links.valence[v];
+    const std::string who = "vertex " + std::to_string(cut.origin[v]);
+    if (cut.rule[v] == SectorRule::Cone)
+      throw MeshError(who + " is a cone point (infinitely sharp, on no infinitely sharp edge); " + scheme +
+                      " has no patches for cone points yet");
+    if (cut.rule[v] == SectorRule::Dart)  // inside the mesh, on the slit's end (a boundary of the cut when its neighbour is split)
+      throw MeshError(who + " ends an infinitely sharp crease (a dart); " + scheme +
+                      " evaluates infinitely sharp creases that close into loops, not darts yet" + plan);
+    if (!links.boundary[v]) {
+      if (cut.rule[v] == SectorRule::Corner)
+        throw MeshError(who + " is an infinitely sharp corner; " + scheme + " has no patches for corners yet" + plan);
+      valences.add_lazy(k, [&] { return who; });
+      continue;
+    }
+    if (!no_surface.empty() && no_surface[v]) continue;  // no surface there: any will do
+    const bool own = uncut.boundary[static_cast<std::size_t>(cut.origin[v])] != 0;
+    if (cut.rule[v] != SectorRule::Crease)
+      throw MeshError(who + " is a corner (a sharp vertex, or three or more boundary or infinitely sharp edges); " + scheme +
+                      " has no patches for corners on a boundary or crease yet" + plan);
+    if (k != 3)
+      throw MeshError(who + " is on " + (own ? "the boundary in " : "an infinitely sharp crease with ") + std::to_string(k) +
+                      (k == 1 ? " face" : " faces") + (own ? "" : " on one side") + ": " + scheme +
+                      " meshes are evaluated where every boundary vertex is in three faces (a tube, an annulus) and every "
+                      "vertex on an infinitely sharp crease has three faces each side (a crease straight through regular "
+                      "vertices); the patches for other numbers of faces are not built yet" + plan);
+  }
+}
+
+// The boundary rules of a Loop mesh with boundaries (sqrt(3) refuses them: it splits no edges).
+BoundaryRules loop_boundary_rules(const Tables& tables, const MeshFeatures& features) {
   const CurveCreaseRule crease = triangle_crease_rule(tables.triangle(), tables.scheme(), "meshes with boundaries");
-  if (features.boundary != BoundaryInterpolation::None)
-    for (std::size_t v = 0; v < topo.vertices(); ++v)
-      if (topo.on_boundary(static_cast<int>(v)) && topo.valence(static_cast<int>(v)) != 3)
-        throw MeshError("vertex " + std::to_string(v) + " is on the boundary in " + std::to_string(topo.valence(static_cast<int>(v))) +
-                        (topo.valence(static_cast<int>(v)) == 1 ? " face: " : " faces: ") + tables.scheme() +
-                        " meshes with boundaries are evaluated where every boundary vertex is in three faces (a tube, "
-                        "an annulus); the patches at boundary vertices in other numbers of faces are not built yet "
-                        "(docs/runtime.md, \"Loop with boundaries\")");
   return {crease.centre, crease.neighbour, features.boundary == BoundaryInterpolation::EdgeAndCorner};
 }
+
+// The mesh the patches are gathered on: the prepared mesh cut along its
+// infinitely sharp edges, when it has any.
+struct PatchMesh {
+  std::optional<SharpCut> cut;
+  std::optional<TriangleTopology> cut_topology;
+  std::vector<char> no_surface;  // per vertex of the cut mesh (no_surface_vertices)
+
+  PatchMesh(const Connectivity& mesh, const TriangleTopology& topo, const LevelSharpness& sharpness, bool edge_and_corner,
+            bool no_boundary_surface) {
+    if (sharpness.infinite()) {
+      cut = cut_along_sharp_edges(mesh, link_polygons(mesh, true), sharpness, edge_and_corner);
+      cut_topology.emplace(cut->mesh, link_polygons(cut->mesh, true));
+      no_surface = no_surface_vertices(no_boundary_surface, topo, *cut);
+    } else if (no_boundary_surface) {
+      no_surface.resize(topo.vertices());
+      for (std::size_t v = 0; v < topo.vertices(); ++v) no_surface[v] = topo.on_boundary(static_cast<int>(v)) ? 1 : 0;
+    }
+  }
+  const TriangleTopology& topology(const TriangleTopology& uncut) const { return cut_topology ? *cut_topology : uncut; }
+};
 
 // Child of a face split by a Loop step (loop_step) holding (u, v), and the parameter there.
 template <class P>
@@ -142,51 +205,67 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
   out.refinement = Refinement(mesh.vertex_count);
   out.hierarchy.original_faces = mesh.face_count();
   // A manifold of triangles, closed or with boundaries (names the face, edge or vertex).
-  TriangleTopology topo(mesh, link_polygons(mesh, true));
+  const PolygonLinks links = link_polygons(mesh, true);
+  TriangleTopology topo(mesh, links);
   out.boundary = topo.has_boundary();
+  const bool edge_and_corner = features.boundary == BoundaryInterpolation::EdgeAndCorner;
+  const bool no_boundary_surface = out.boundary && features.boundary == BoundaryInterpolation::None;
   std::optional<BoundaryRules> boundary;
-  if (out.boundary) boundary = loop_boundary_rules(tables, topo, features);
-  ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 6);
-  for (std::size_t v = 0; v < topo.vertices(); ++v)
-    if (!topo.on_boundary(static_cast<int>(v)))
-      valences.add_lazy(topo.valence(static_cast<int>(v)), [&] { return "vertex " + std::to_string(v); });
-  valences.finish();
+  if (out.boundary) boundary = loop_boundary_rules(tables, features);
+  LevelSharpness sharpness = LevelSharpness::of(mesh, features, true);
+  CurveCreaseRule crease;
+  if (!sharpness.smooth()) {
+    crease = triangle_crease_rule(t, tables.scheme(), "creases and corners");
+    check_crease_steps(mesh.face_count(), 4 * mesh.face_count(), sharpness.max());
+  }
+  {
+    ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 6);
+    const SharpCut input = cut_along_sharp_edges(mesh, links, sharpness, edge_and_corner);
+    check_loop_vertices(input, input.cut ? link_polygons(input.mesh, true) : links, links,
+                        no_surface_vertices(no_boundary_surface, topo, input), tables.scheme(), valences);
+    valences.finish();
+  }
   const bool sqrt3 = t.refinement() == TriangleRefinement::Sqrt3;
   out.mesh = mesh;
-  LevelSharpness sharpness = LevelSharpness::of(mesh, features);
-  if (!sharpness.smooth()) {
-    const CurveCreaseRule crease = triangle_crease_rule(t, tables.scheme(), "creases and corners");
-    check_crease_steps(mesh.face_count(), 4 * mesh.face_count(), sharpness.max());
-    // Loop steps with the sharp rules until every sharpness has decayed.
-    while (!sharpness.smooth()) {
-      TriangleStep step = loop_step(topo, t, boundary ? &*boundary : nullptr);
+  // One whole-mesh step; Loop's with OpenSubdiv's creasing where there are sharp
+  // features (sqrt(3) has none: it refuses them above).
+  auto step_once = [&] {
+    TriangleStep step = sqrt3 ? sqrt3_double_step(topo, t) : loop_step(topo, t, boundary ? &*boundary : nullptr);
+    if (!sharpness.smooth()) {
       // On a mesh with boundaries its boundary edges count as infinitely sharp (OpenSubdiv).
       sharpness = sharpen_step(out.mesh, sharpness, crease, loop_step_edge_points(out.mesh, step.mesh), step.steps.front(),
-                               boundary && boundary->corners);
-      out.hierarchy.add_uniform(4, 2);
-      out.refinement.add(std::move(step.steps.front()));
-      out.mesh = std::move(step.mesh);
-      ++out.steps;
+                               edge_and_corner && out.boundary);
       ++out.crease_steps;
-      topo = TriangleTopology(out.mesh, out.boundary);
     }
-  }
-  const bool no_boundary_surface = out.boundary && features.boundary == BoundaryInterpolation::None;
-  while (!gather_patches(topo, t, out.patches, out.phantoms, no_boundary_surface)) {
-    if (out.steps - out.crease_steps == limits::kMaxRefinementSteps)
-      throw MeshError("extraordinary vertices are still too close " + std::string(out.boundary ? "to each other or to the boundary " : "") +
-                      "after " + std::to_string(limits::kMaxRefinementSteps) + " " +
-                      (sqrt3 ? "double sqrt(3) steps" : "subdivision steps"));
-    TriangleStep step = sqrt3 ? sqrt3_double_step(topo, t) : loop_step(topo, t, boundary ? &*boundary : nullptr);
     if (sqrt3) out.hierarchy.add_uniform(9, 3);
     else out.hierarchy.add_uniform(4, 2);
     for (RefinementStep& s : step.steps) out.refinement.add(std::move(s));
     out.mesh = std::move(step.mesh);
     ++out.steps;
     topo = TriangleTopology(out.mesh, out.boundary);
+  };
+  // Semi-sharp features decay by at least 1 a step: steps until none is left
+  // (infinitely sharp ones are boundaries of the cut mesh: family/sharp_cut.hpp).
+  while (sharpness.has_semi_sharp()) step_once();
+  const int before_isolation = out.steps;
+  auto patch_mesh = std::make_unique<PatchMesh>(out.mesh, topo, sharpness, edge_and_corner, no_boundary_surface);
+  while (!gather_patches(patch_mesh->topology(topo), t, out.patches, out.phantoms, patch_mesh->no_surface)) {
+    if (out.steps - before_isolation == limits::kMaxRefinementSteps)
+      throw MeshError("extraordinary vertices are still too close " +
+                      std::string(out.boundary || patch_mesh->cut ? "to each other or to a boundary or crease " : "") + "after " +
+                      std::to_string(limits::kMaxRefinementSteps) + " " + (sqrt3 ? "double sqrt(3) steps" : "subdivision steps"));
+    step_once();
+    patch_mesh = std::make_unique<PatchMesh>(out.mesh, topo, sharpness, edge_and_corner, no_boundary_surface);
   }
-  // The phantoms are prepared points after the mesh's own.
-  if (!out.phantoms.rows.empty()) out.refinement.add(append_rows(out.mesh.vertex_count, out.phantoms.rows));
+  // The cut mesh's extra vertices (copies of those on creases), then the
+  // phantoms, are prepared points after the mesh's own.
+  if (patch_mesh->cut && patch_mesh->cut->cut) {
+    const SharpCut& cut = *patch_mesh->cut;
+    std::vector<std::vector<std::pair<int, double>>> copies;
+    for (std::size_t v = out.mesh.vertex_count; v < cut.mesh.vertex_count; ++v) copies.push_back({{cut.origin[v], 1.0}});
+    out.refinement.add(append_rows(out.mesh.vertex_count, copies));
+  }
+  if (!out.phantoms.rows.empty()) out.refinement.add(append_rows(out.phantoms.first, out.phantoms.rows));
   return out;
 }
 

@@ -1,0 +1,229 @@
+// Loop meshes with infinitely sharp creases (sharpness >= 10): the mesh is cut
+// along them (family/sharp_cut.hpp) and each side is a mesh with a boundary
+// there, whose vertices on it are in three faces (a crease straight through
+// regular vertices), so every face takes a regular or extraordinary patch of
+// its side. Against OpenSubdiv's Bfr with the same sharpness: positions at
+// every node at rates 1..8 and first derivatives, on tori and tubes with
+// crease rings, extraordinary vertices next to a crease, and semi-sharp
+// features beside them. Also: tessellations closed across creases, and the
+// refusals that remain (darts, corners, cone points, creases that bend).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "bfr_reference.hpp"
+#include "cli.hpp"
+#include "loop_meshes.hpp"
+#include "runtime_api.hpp"
+#include "runtime_checks.hpp"
+#include "stencil_runtime/tessellation.hpp"
+
+using namespace stencil_runtime;
+using namespace test_runtime;
+using loop_meshes::triangle_torus;
+using loop_meshes::triangle_tube;
+using loop_meshes::with_flip;
+
+namespace {
+
+struct Features {
+  MeshFeatures ours;
+  bfr_reference::Creasing osd;
+  void crease(int a, int b, float s) {
+    ours.edges.push_back({a, b, s});
+    osd.crease_pairs.insert(osd.crease_pairs.end(), {a, b});
+    osd.crease_sharpness.push_back(s);
+  }
+  void corner(int v, float s) {
+    ours.vertices.push_back({v, s});
+    osd.corners.push_back(v);
+    osd.corner_sharpness.push_back(s);
+  }
+  void boundary(BoundaryInterpolation b) {
+    ours.boundary = b;
+    osd.boundary_corners = b == BoundaryInterpolation::EdgeAndCorner;
+    osd.boundary_none = b == BoundaryInterpolation::None;
+  }
+  // The ring of edges (i, j) - (i + 1, j) of an `around`-wide lattice, or the
+  // meridian (i, j) - (i, j + 1) of a torus with `rows` rows.
+  void ring(int around, int j, float s) {
+    for (int i = 0; i < around; ++i) crease(j * around + i, j * around + (i + 1) % around, s);
+  }
+  void meridian(int around, int rows, int i, float s) {
+    for (int j = 0; j < rows; ++j) crease(j * around + i, ((j + 1) % rows) * around + i, s);
+  }
+};
+
+Surface surface_with(const std::shared_ptr<const Tables>& tables, const Mesh& m, const Features& f) {
+  return Surface(SurfaceTopology::create(tables, m.vertex_count(), m.face_sizes, m.face_vertices, {}, f.ours), m.positions);
+}
+
+// Largest differences to Bfr over the mesh size: every node of every face with
+// a surface at rates 1..8 (positions), and d/du, d/dv at four parameters per face.
+std::pair<double, double> bfr_difference(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, const Features& f) {
+  const Surface surface = surface_with(tables, mesh, f);
+  bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices, bfr_reference::osd::Sdc::SCHEME_LOOP, {},
+                                    f.osd);
+  const double size = extent(mesh);
+  double positions = 0, derivatives = 0;
+  for (std::size_t face = 0; face < mesh.face_count(); ++face) {
+    REQUIRE(reference.has_surface(static_cast<int>(face)) == !surface.topology().is_hole(face));
+    if (surface.topology().is_hole(face)) continue;
+    for (long n = 1; n <= 8; ++n)
+      for (long j = 0; j <= n; ++j)
+        for (long i = 0; i + j <= n; ++i) {
+          const auto ref = reference.evaluate(static_cast<int>(face), static_cast<double>(i) / n, static_cast<double>(j) / n);
+          positions = std::max(positions, distance(surface.evaluate(face, grid(i, j, n)), ref) / size);
+        }
+    for (const auto& [u, v] : {std::pair{0.25, 0.25}, {0.6, 0.1}, {0.1, 0.7}, {0.4, 0.4}}) {
+      const Derivatives d = surface.derivatives(face, u, v);
+      const auto ref = reference.derivatives(static_cast<int>(face), u, v);
+      derivatives = std::max({derivatives, distance(d.du, ref[1]) / size, distance(d.dv, ref[2]) / size});
+    }
+  }
+  return {positions, derivatives};
+}
+
+std::shared_ptr<const Tables> loop_tables() { return Tables::load(generated_table("loop", "--valence 3-8 --n 1-8", "sgt").string()); }
+
+struct Case {
+  std::string name;
+  Mesh mesh;
+  Features features;
+};
+
+std::vector<Case> crease_cases() {
+  std::vector<Case> out;
+  {
+    Case c{"torus 8x6, one ring", triangle_torus(8, 6), {}};
+    c.features.ring(8, 2, 10);
+    out.push_back(c);
+  }
+  {
+    Case c{"torus 8x6, two rings and a semi-sharp edge between them", triangle_torus(8, 6), {}};
+    c.features.ring(8, 1, 10);
+    c.features.ring(8, 4, 12);
+    c.features.crease(2 * 8 + 3, 3 * 8 + 3, 1.5f);
+    out.push_back(c);
+  }
+  {
+    Case c{"torus 6x5, one meridian", triangle_torus(6, 5), {}};
+    c.features.meridian(6, 5, 2, 10);
+    out.push_back(c);
+  }
+  {
+    // The flipped quad (0, 3) has corners on row 3 and 4: valence 5 and 7 on the crease's side.
+    Case c{"torus 7x7 with valence 5 and 7 next to a ring", with_flip(triangle_torus(7, 7), 7, 3), {}};
+    c.features.ring(7, 2, 10);
+    c.features.ring(7, 5, 10);
+    out.push_back(c);
+  }
+  {
+    Case c{"tube 8x4 with a ring inside, edge-only", triangle_tube(8, 4), {}};
+    c.features.ring(8, 2, 10);
+    out.push_back(c);
+  }
+  {
+    Case c{"tube 8x4 with a ring inside, edge-and-corner, a semi-sharp corner on the ring", triangle_tube(8, 4), {}};
+    c.features.boundary(BoundaryInterpolation::EdgeAndCorner);
+    c.features.ring(8, 2, 10);
+    c.features.corner(2 * 8 + 5, 2.0f);
+    out.push_back(c);
+  }
+  {
+    Case c{"tube 8x4 with a ring one row from the rim, none", triangle_tube(8, 4), {}};
+    c.features.boundary(BoundaryInterpolation::None);
+    c.features.ring(8, 1, 10);
+    out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("Loop: infinitely sharp crease rings equal OpenSubdiv's Bfr, positions and derivatives",
+          "[runtime][creases][loop][opensubdiv]") {
+  const auto tables = loop_tables();
+  for (const Case& c : crease_cases()) {
+    INFO(c.name);
+    const auto [positions, derivatives] = bfr_difference(tables, c.mesh, c.features);
+    CHECK(positions < 1e-14);
+    CHECK(derivatives < 1e-13);
+  }
+}
+
+TEST_CASE("Loop: without the cut (the crease ignored) the surfaces differ from Bfr's", "[runtime][creases][loop][opensubdiv]") {
+  // The check above can fail: the smooth surface of the same mesh is far from the creased one.
+  const auto tables = loop_tables();
+  const Case c = crease_cases().front();
+  const Surface smooth(SurfaceTopology::create(tables, c.mesh.vertex_count(), c.mesh.face_sizes, c.mesh.face_vertices), c.mesh.positions);
+  bfr_reference::BfrLimit reference(c.mesh.positions, c.mesh.face_sizes, c.mesh.face_vertices, bfr_reference::osd::Sdc::SCHEME_LOOP,
+                                    {}, c.features.osd);
+  double worst = 0;
+  for (std::size_t f = 0; f < c.mesh.face_count(); ++f)
+    worst = std::max(worst, distance(smooth.evaluate(f, grid(1, 1, 3)), reference.evaluate(static_cast<int>(f), 1.0 / 3, 1.0 / 3)));
+  CHECK(worst > 1e-3 * extent(c.mesh));
+}
+
+TEST_CASE("Loop: tessellations stay closed across infinitely sharp creases", "[runtime][creases][loop][tessellation]") {
+  const auto tables = loop_tables();
+  std::mt19937 rng(20261127u);
+  for (const Case& c : crease_cases()) {
+    if (c.features.ours.boundary == BoundaryInterpolation::None) continue;
+    const Surface surface = surface_with(tables, c.mesh, c.features);
+    const bool tube = c.name.rfind("tube", 0) == 0;
+    for (int trial = 0; trial < 3; ++trial) {
+      std::vector<int> rates(c.mesh.face_count());
+      for (int& r : rates) r = std::uniform_int_distribution<int>(1, 8)(rng);
+      INFO(c.name << ", trial " << trial);
+      check_rimmed_manifold(tessellate(surface, rates), tube ? 2 : 0, tube ? 0 : 1);
+    }
+  }
+}
+
+TEST_CASE("Loop: the infinitely sharp features not evaluated yet are refused, naming the vertex", "[runtime][creases][loop]") {
+  const auto tables = loop_tables();
+  const Mesh torus = triangle_torus(8, 6);
+  auto refusal = [&](const Features& f) {
+    try {
+      surface_with(tables, torus, f);
+    } catch (const MeshError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  {
+    Features dart;  // two edges of a ring: darts at both ends
+    dart.crease(16, 17, 10);
+    dart.crease(17, 18, 10);
+    const std::string what = refusal(dart);
+    CHECK_THAT(what, Catch::Contains("vertex 16 ends an infinitely sharp crease (a dart)"));
+  }
+  {
+    Features hexagon;  // the ring round vertex 3 * 8 + 3: the loop's vertices have two faces inside and four outside
+    const int c = 3 * 8 + 3;
+    const int ring[6] = {c + 1, c + 9, c + 8, c - 1, c - 9, c - 8};
+    for (int k = 0; k < 6; ++k) hexagon.crease(ring[k], ring[(k + 1) % 6], 10);
+    const std::string what = refusal(hexagon);
+    CHECK_THAT(what, Catch::Contains("on an infinitely sharp crease with") && Catch::Contains("faces on one side") &&
+                         Catch::Contains("three faces each side"));
+  }
+  {
+    Features corner;
+    corner.ring(8, 2, 10);
+    corner.corner(2 * 8 + 3, 10);
+    CHECK_THAT(refusal(corner), Catch::Contains("vertex 19 is a corner"));
+  }
+  {
+    Features cone;
+    cone.corner(5, 10);
+    CHECK_THAT(refusal(cone), Catch::Contains("vertex 5 is a cone point"));
+  }
+  {
+    Features crossing;  // a ring and a meridian: four sharp edges where they cross
+    crossing.ring(8, 2, 10);
+    crossing.meridian(8, 6, 0, 10);
+    CHECK_THAT(refusal(crossing), Catch::Contains("vertex 16 is") && Catch::Contains("corner"));
+  }
+}
