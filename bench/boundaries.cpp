@@ -14,7 +14,9 @@
 // OpenSubdiv 3.5's Bfr tessellates the same meshes in the same run.
 // With Loop tables (second argument; - skips the Catmull-Clark pairs): a
 // triangulated torus against the tube of the same grid (every rim vertex in
-// three faces: regular boundary patches with phantom points).
+// three faces: regular boundary patches with phantom points), and against the
+// same torus with every 8th ring of edges infinitely sharp (the patches of the
+// mesh cut along them: regular boundary patches on both sides of each ring).
 // Usage: bench_boundaries [CATMULL-CLARK.sgs|-] [LOOP.sgt]
 #include <algorithm>
 #include <chrono>
@@ -77,9 +79,18 @@ struct Row {
 
 struct Pair {
   std::string name;
-  Mesh closed, open;
+  Mesh closed, open;  // "open": with boundaries, or with the features below
   std::shared_ptr<const Tables> tables;
+  MeshFeatures open_features;  // infinitely sharp edges of the second mesh (none: the smooth surface)
 };
+
+// Every `every`-th ring of edges (i, j) - (i + 1, j) of an around x rows torus grid, infinitely sharp.
+MeshFeatures sharp_rings(int around, int rows, int every) {
+  MeshFeatures out;
+  for (int j = 0; j < rows; j += every)
+    for (int i = 0; i < around; ++i) out.edges.push_back({j * around + i, j * around + (i + 1) % around, 10.0});
+  return out;
+}
 
 int run(int argc, char** argv) {
   const std::string cc_path = argc > 1 ? argv[1] : "tables/catmull-clark/catmull-clark.sgs";
@@ -102,14 +113,16 @@ int run(int argc, char** argv) {
     notched = subdivide(*tables, notched);
     while (notched.face_count() < 30000) notched = subdivide(*tables, notched);
     while (notched_closed.face_count() < 30000) notched_closed = subdivide(*tables, notched_closed);
-    pairs.push_back({"torus / tube 256x224", ring_grid(256, 224, true), ring_grid(256, 224, false), tables});
-    pairs.push_back({"cube / open box", cube, open_box, tables});
-    pairs.push_back({"cube / box without two faces", notched_closed, notched, tables});
+    pairs.push_back({"torus / tube 256x224", ring_grid(256, 224, true), ring_grid(256, 224, false), tables, {}});
+    pairs.push_back({"cube / open box", cube, open_box, tables, {}});
+    pairs.push_back({"cube / box without two faces", notched_closed, notched, tables, {}});
   }
   if (argc > 2) {
     const auto loop = Tables::load(argv[2]);
     pairs.push_back({"Loop: torus / tube 256x112, triangulated", triangulated(ring_grid(256, 112, true)),
-                     triangulated(ring_grid(256, 112, false)), loop});
+                     triangulated(ring_grid(256, 112, false)), loop, {}});
+    pairs.push_back({"Loop: torus / torus with 14 sharp rings, 256x112", triangulated(ring_grid(256, 112, true)),
+                     triangulated(ring_grid(256, 112, true)), loop, sharp_rings(256, 112, 8)});
   }
   std::printf("| meshes | mesh | faces | rate | threads | triangles | ours (M tri/s) | ours / closed | Bfr (M tri/s) | Bfr / closed | positions update (ms) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -117,14 +130,22 @@ int run(int argc, char** argv) {
     std::vector<Row> closed_rows;
     for (int open = 0; open < 2; ++open) {
       const Mesh& mesh = open ? pair.open : pair.closed;
-      const auto topology = SurfaceTopology::create(pair.tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices);
+      const MeshFeatures features = open ? pair.open_features : MeshFeatures{};
+      const auto topology = SurfaceTopology::create(pair.tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, {}, features);
       Surface surface(topology, mesh.positions);
       const double update_ms = 1e3 * bench_timing::median3([&] {
         const auto s = Clock::now();
         surface.set_positions(mesh.positions);
         return std::chrono::duration<double>(Clock::now() - s).count();
       });
-      osd_bench::Input input{&mesh.positions, &mesh.face_sizes, &mesh.face_vertices, pair.tables->family() == SchemeFamily::Triangle};
+      std::vector<int> crease_pairs;
+      std::vector<float> crease_sharpness;
+      for (const auto& e : features.edges) {
+        crease_pairs.insert(crease_pairs.end(), {e.a, e.b});
+        crease_sharpness.push_back(static_cast<float>(e.sharpness));
+      }
+      osd_bench::Input input{&mesh.positions, &mesh.face_sizes, &mesh.face_vertices, pair.tables->family() == SchemeFamily::Triangle,
+                             &crease_pairs, &crease_sharpness};
       osd_bench::BfrTessellator osd(input);
       std::size_t row = 0;
       for (int rate : {8, 16, 0}) {
@@ -145,7 +166,7 @@ int run(int argc, char** argv) {
           if (!open) closed_rows.push_back(now);
           const Row& base = closed_rows[row++];
           std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | %.2f | %.1f | %.2f | %.2f |\n", pair.name.c_str(),
-                      open ? "open" : "closed", mesh.face_count(), rate ? std::to_string(rate).c_str() : "mix 1..24",
+                      pair.open_features.edges.empty() ? (open ? "open" : "closed") : (open ? "creased" : "smooth"), mesh.face_count(), rate ? std::to_string(rate).c_str() : "mix 1..24",
                       threads, triangles, now.ours, now.ours / base.ours, now.osd, now.osd / base.osd, update_ms);
           std::fflush(stdout);
         }
