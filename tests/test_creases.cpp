@@ -22,6 +22,7 @@
 #include "runtime_api.hpp"
 #include "open_meshes.hpp"
 #include "runtime_checks.hpp"
+#include "sharp_features.hpp"
 #include "quad/quad_creases.hpp"
 #include "tables/triangle_tables.hpp"
 
@@ -50,26 +51,7 @@ std::vector<std::pair<int, int>> edges_of(const Mesh& m) {
   return {out.begin(), out.end()};
 }
 
-struct Features {
-  MeshFeatures ours;
-  bfr_reference::Creasing osd;
-  void crease(int a, int b, float s) {
-    ours.edges.push_back({a, b, s});
-    osd.crease_pairs.insert(osd.crease_pairs.end(), {a, b});
-    osd.crease_sharpness.push_back(s);
-  }
-  void corner(int v, float s) {
-    ours.vertices.push_back({v, s});
-    osd.corners.push_back(v);
-    osd.corner_sharpness.push_back(s);
-  }
-  void chaikin() { ours.chaikin = osd.chaikin = true; }
-  void boundary_none() {
-    ours.boundary = BoundaryInterpolation::None;
-    osd.boundary_none = true;
-  }
-  void smooth_triangles() { ours.smooth_triangles = osd.smooth_triangles = true; }
-};
+using Features = SharpFeatures;
 
 Surface surface_with(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, const Features& f) {
   return Surface(SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, {}, f.ours),

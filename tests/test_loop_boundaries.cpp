@@ -12,6 +12,7 @@
 
 #include "bfr_reference.hpp"
 #include "cli.hpp"
+#include "loop_bfr_difference.hpp"
 #include "loop_meshes.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
@@ -42,31 +43,10 @@ bfr_reference::Creasing osd_boundary(BoundaryInterpolation b) {
   return c;
 }
 
-// Largest differences to Bfr over the mesh size: every node of every face with
-// a surface at rates 1..8 (positions), and d/du, d/dv at four parameters per face.
 std::pair<double, double> bfr_difference(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, BoundaryInterpolation b) {
-  const Surface surface = loop_surface(tables, mesh, b);
-  bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices, bfr_reference::osd::Sdc::SCHEME_LOOP, {},
-                                    osd_boundary(b));
-  const double size = extent(mesh);
-  double positions = 0, derivatives = 0;
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    REQUIRE(reference.has_surface(static_cast<int>(f)) == !surface.topology().is_hole(f));
-    if (surface.topology().is_hole(f)) continue;
-    for (long n = 1; n <= 8; ++n)
-      for (long j = 0; j <= n; ++j)
-        for (long i = 0; i + j <= n; ++i) {
-          const Point ours = surface.evaluate(f, grid(i, j, n));
-          const auto ref = reference.evaluate(static_cast<int>(f), static_cast<double>(i) / n, static_cast<double>(j) / n);
-          positions = std::max(positions, distance(ours, ref) / size);
-        }
-    for (const auto& [u, v] : {std::pair{0.25, 0.25}, {0.6, 0.1}, {0.1, 0.7}, {0.4, 0.4}}) {
-      const Derivatives d = surface.derivatives(f, u, v);
-      const auto ref = reference.derivatives(static_cast<int>(f), u, v);
-      derivatives = std::max({derivatives, distance(d.du, ref[1]) / size, distance(d.dv, ref[2]) / size});
-    }
-  }
-  return {positions, derivatives};
+  SharpFeatures f;
+  f.boundary(b);
+  return loop_bfr_difference(tables, mesh, f);
 }
 
 std::shared_ptr<const Tables> loop_tables() { return Tables::load(generated_table("loop", "--valence 3-8 --n 1-8", "sgt").string()); }

@@ -14,6 +14,7 @@
 
 #include "bfr_reference.hpp"
 #include "cli.hpp"
+#include "loop_bfr_difference.hpp"
 #include "loop_meshes.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
@@ -27,62 +28,19 @@ using loop_meshes::with_flip;
 
 namespace {
 
-struct Features {
-  MeshFeatures ours;
-  bfr_reference::Creasing osd;
-  void crease(int a, int b, float s) {
-    ours.edges.push_back({a, b, s});
-    osd.crease_pairs.insert(osd.crease_pairs.end(), {a, b});
-    osd.crease_sharpness.push_back(s);
-  }
-  void corner(int v, float s) {
-    ours.vertices.push_back({v, s});
-    osd.corners.push_back(v);
-    osd.corner_sharpness.push_back(s);
-  }
-  void boundary(BoundaryInterpolation b) {
-    ours.boundary = b;
-    osd.boundary_corners = b == BoundaryInterpolation::EdgeAndCorner;
-    osd.boundary_none = b == BoundaryInterpolation::None;
-  }
-  // The ring of edges (i, j) - (i + 1, j) of an `around`-wide lattice, or the
-  // meridian (i, j) - (i, j + 1) of a torus with `rows` rows.
-  void ring(int around, int j, float s) {
-    for (int i = 0; i < around; ++i) crease(j * around + i, j * around + (i + 1) % around, s);
-  }
-  void meridian(int around, int rows, int i, float s) {
-    for (int j = 0; j < rows; ++j) crease(j * around + i, ((j + 1) % rows) * around + i, s);
-  }
-};
+using Features = SharpFeatures;
+
+// The ring of edges (i, j) - (i + 1, j) of an `around`-wide lattice (loop_meshes.hpp), or the meridian
+// (i, j) - (i, j + 1) of a torus with `rows` rows, with sharpness s.
+void ring(Features& f, int around, int j, float s) {
+  for (int i = 0; i < around; ++i) f.crease(j * around + i, j * around + (i + 1) % around, s);
+}
+void meridian(Features& f, int around, int rows, int i, float s) {
+  for (int j = 0; j < rows; ++j) f.crease(j * around + i, ((j + 1) % rows) * around + i, s);
+}
 
 Surface surface_with(const std::shared_ptr<const Tables>& tables, const Mesh& m, const Features& f) {
   return Surface(SurfaceTopology::create(tables, m.vertex_count(), m.face_sizes, m.face_vertices, {}, f.ours), m.positions);
-}
-
-// Largest differences to Bfr over the mesh size: every node of every face with
-// a surface at rates 1..8 (positions), and d/du, d/dv at four parameters per face.
-std::pair<double, double> bfr_difference(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, const Features& f) {
-  const Surface surface = surface_with(tables, mesh, f);
-  bfr_reference::BfrLimit reference(mesh.positions, mesh.face_sizes, mesh.face_vertices, bfr_reference::osd::Sdc::SCHEME_LOOP, {},
-                                    f.osd);
-  const double size = extent(mesh);
-  double positions = 0, derivatives = 0;
-  for (std::size_t face = 0; face < mesh.face_count(); ++face) {
-    REQUIRE(reference.has_surface(static_cast<int>(face)) == !surface.topology().is_hole(face));
-    if (surface.topology().is_hole(face)) continue;
-    for (long n = 1; n <= 8; ++n)
-      for (long j = 0; j <= n; ++j)
-        for (long i = 0; i + j <= n; ++i) {
-          const auto ref = reference.evaluate(static_cast<int>(face), static_cast<double>(i) / n, static_cast<double>(j) / n);
-          positions = std::max(positions, distance(surface.evaluate(face, grid(i, j, n)), ref) / size);
-        }
-    for (const auto& [u, v] : {std::pair{0.25, 0.25}, {0.6, 0.1}, {0.1, 0.7}, {0.4, 0.4}}) {
-      const Derivatives d = surface.derivatives(face, u, v);
-      const auto ref = reference.derivatives(static_cast<int>(face), u, v);
-      derivatives = std::max({derivatives, distance(d.du, ref[1]) / size, distance(d.dv, ref[2]) / size});
-    }
-  }
-  return {positions, derivatives};
 }
 
 std::shared_ptr<const Tables> loop_tables() { return Tables::load(generated_table("loop", "--valence 3-8 --n 1-8", "sgt").string()); }
@@ -97,44 +55,44 @@ std::vector<Case> crease_cases() {
   std::vector<Case> out;
   {
     Case c{"torus 8x6, one ring", triangle_torus(8, 6), {}};
-    c.features.ring(8, 2, 10);
+    ring(c.features, 8, 2, 10);
     out.push_back(c);
   }
   {
     Case c{"torus 8x6, two rings and a semi-sharp edge between them", triangle_torus(8, 6), {}};
-    c.features.ring(8, 1, 10);
-    c.features.ring(8, 4, 12);
+    ring(c.features, 8, 1, 10);
+    ring(c.features, 8, 4, 12);
     c.features.crease(2 * 8 + 3, 3 * 8 + 3, 1.5f);
     out.push_back(c);
   }
   {
     Case c{"torus 6x5, one meridian", triangle_torus(6, 5), {}};
-    c.features.meridian(6, 5, 2, 10);
+    meridian(c.features, 6, 5, 2, 10);
     out.push_back(c);
   }
   {
     // The flipped quad (0, 3) has corners on row 3 and 4: valence 5 and 7 on the crease's side.
     Case c{"torus 7x7 with valence 5 and 7 next to a ring", with_flip(triangle_torus(7, 7), 7, 3), {}};
-    c.features.ring(7, 2, 10);
-    c.features.ring(7, 5, 10);
+    ring(c.features, 7, 2, 10);
+    ring(c.features, 7, 5, 10);
     out.push_back(c);
   }
   {
     Case c{"tube 8x4 with a ring inside, edge-only", triangle_tube(8, 4), {}};
-    c.features.ring(8, 2, 10);
+    ring(c.features, 8, 2, 10);
     out.push_back(c);
   }
   {
     Case c{"tube 8x4 with a ring inside, edge-and-corner, a semi-sharp corner on the ring", triangle_tube(8, 4), {}};
     c.features.boundary(BoundaryInterpolation::EdgeAndCorner);
-    c.features.ring(8, 2, 10);
+    ring(c.features, 8, 2, 10);
     c.features.corner(2 * 8 + 5, 2.0f);
     out.push_back(c);
   }
   {
     Case c{"tube 8x4 with a ring one row from the rim, none", triangle_tube(8, 4), {}};
     c.features.boundary(BoundaryInterpolation::None);
-    c.features.ring(8, 1, 10);
+    ring(c.features, 8, 1, 10);
     out.push_back(c);
   }
   return out;
@@ -147,7 +105,7 @@ TEST_CASE("Loop: infinitely sharp crease rings equal OpenSubdiv's Bfr, positions
   const auto tables = loop_tables();
   for (const Case& c : crease_cases()) {
     INFO(c.name);
-    const auto [positions, derivatives] = bfr_difference(tables, c.mesh, c.features);
+    const auto [positions, derivatives] = loop_bfr_difference(tables, c.mesh, c.features);
     CHECK(positions < 1e-14);
     CHECK(derivatives < 1e-13);
   }
@@ -211,7 +169,7 @@ TEST_CASE("Loop: the infinitely sharp features not evaluated yet are refused, na
   }
   {
     Features corner;
-    corner.ring(8, 2, 10);
+    ring(corner, 8, 2, 10);
     corner.corner(2 * 8 + 3, 10);
     CHECK_THAT(refusal(corner), Catch::Contains("vertex 19 is a corner"));
   }
@@ -222,8 +180,8 @@ TEST_CASE("Loop: the infinitely sharp features not evaluated yet are refused, na
   }
   {
     Features crossing;  // a ring and a meridian: four sharp edges where they cross
-    crossing.ring(8, 2, 10);
-    crossing.meridian(8, 6, 0, 10);
+    ring(crossing, 8, 2, 10);
+    meridian(crossing, 8, 6, 0, 10);
     CHECK_THAT(refusal(crossing), Catch::Contains("vertex 16 is") && Catch::Contains("corner"));
   }
 }
