@@ -1,12 +1,14 @@
 #include "runtime_use.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "fuzz_support.hpp"
 #include "rate_choice.hpp"
+#include "stencil_runtime/limits.hpp"
 #include "stencil_runtime/mesh_io.hpp"
 #include "stencil_runtime/surface.hpp"
 #include "stencil_runtime/surface_topology.hpp"
@@ -193,11 +195,23 @@ void use_tables(const std::shared_ptr<const rt::Tables>& shared) {
 // (the library refuses only beyond its stated limit) and for seconds under the
 // sanitizers. Clamps them to what keeps the prepared mesh near 8192 faces, so
 // one input stays within milliseconds; infinitely sharp ones (>= 10) and
-// invalid values (which the checks must refuse) are kept.
+// invalid values (which the checks must refuse) are kept, and so is every tag
+// when one of them is over the library's limit however the faces are made
+// (at least 3 corners each), which it refuses before any work.
 rt::Mesh within_budget(const rt::Mesh& mesh) {
   constexpr std::size_t kPreparedFaces = 8192;
   double cap = 1;
   for (std::size_t faces = std::max<std::size_t>(mesh.face_count(), 1) * 16; faces <= kPreparedFaces; faces *= 4) cap += 1;
+  auto refused = [&](double s) {
+    if (!(s > 0 && s < 10)) return false;
+    double made = 3.0 * static_cast<double>(mesh.face_count());
+    for (int k = 1; k < static_cast<int>(std::ceil(s)); ++k) made *= 4;
+    return made > static_cast<double>(rt::limits::kMaxCreaseStepFaces);
+  };
+  for (const auto& c : mesh.tags.creases)
+    if (refused(c.sharpness)) return mesh;
+  for (const auto& c : mesh.tags.corners)
+    if (refused(c.sharpness)) return mesh;
   rt::Mesh out = mesh;
   auto clamp = [&](double& s) {
     if (s > cap && s < 10) s = cap;

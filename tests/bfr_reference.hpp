@@ -61,9 +61,6 @@ inline std::unique_ptr<osd::Far::TopologyRefiner> make_refiner(int num_vertices,
 
 inline constexpr int kApproxLevel = 10;
 
-// The limit surface of a mesh under `scheme` (Catmull-Clark or Loop); a face's
-// (u, v) is Bfr's: for a quad, u along v0->v1 and v along v0->v3; for a
-// triangle, u along v0->v1 and v along v0->v2.
 // Far's vertices after `level` levels of uniform refinement (in double), and,
 // with `limit`, their limit points (Far's limit masks; every sharpness must
 // have decayed by then).
@@ -103,6 +100,9 @@ inline std::vector<std::array<double, 3>> far_points(const std::vector<std::arra
   return out;
 }
 
+// The limit surface of a mesh under `scheme` (Catmull-Clark or Loop); a face's
+// (u, v) is Bfr's: for a quad, u along v0->v1 and v along v0->v3; for a
+// triangle, u along v0->v1 and v along v0->v2.
 class BfrLimit {
  public:
   BfrLimit(const std::vector<std::array<double, 3>>& positions, const std::vector<int>& sizes,

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <set>
 #include <string>
 #include <type_traits>
 
@@ -22,6 +23,29 @@ namespace {
 // Appended to every topology error: the library numbers from 0, OBJ files from 1.
 constexpr const char* kNumbering =
     " (faces and vertices are numbered from 0 in file order; an OBJ file's vertex k is vertex k-1 here)";
+
+// With `none`, OpenSubdiv gives a face at a boundary vertex a surface after
+// all when both of that vertex's boundary edges are tagged infinitely sharp
+// (Bfr: no "non-sharp boundary"); the runtime takes every such face away, so
+// it refuses those tags instead of giving a different surface.
+void refuse_sharp_boundary_edges(const std::vector<int>& face_sizes, const std::vector<int>& face_vertices,
+                                 const MeshFeatures& features) {
+  if (std::none_of(features.edges.begin(), features.edges.end(), [](const MeshFeatures::Edge& e) { return e.sharpness >= 10; }))
+    return;
+  std::set<std::pair<int, int>> directed;
+  std::size_t offset = 0;
+  for (int k : face_sizes) {
+    for (int c = 0; c < k; ++c)
+      directed.emplace(face_vertices[offset + static_cast<std::size_t>(c)], face_vertices[offset + static_cast<std::size_t>((c + 1) % k)]);
+    offset += static_cast<std::size_t>(k);
+  }
+  for (const MeshFeatures::Edge& e : features.edges)
+    if (e.sharpness >= 10 && directed.count({e.a, e.b}) != directed.count({e.b, e.a}))
+      throw MeshError("the boundary edge " + std::to_string(e.a) + "-" + std::to_string(e.b) +
+                      " is tagged infinitely sharp under boundary interpolation `none`, where OpenSubdiv gives the faces at "
+                      "its ends a surface when both boundary edges there are sharp; that is not supported yet: remove the "
+                      "tag, or use edge-only, where every boundary edge is sharp" + std::string(kNumbering));
+}
 
 }  // namespace
 
@@ -69,6 +93,7 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
     throw MeshError(std::string(e.what()) + kNumbering);
   }
   if (features.boundary == BoundaryInterpolation::None && t->family_->has_boundary()) {
+    refuse_sharp_boundary_edges(t->face_sizes_, t->face_vertices_, features);
     // OpenSubdiv's `none`: the faces at boundary vertices keep their part in
     // the subdivision but have no surface, as holes (the steps keep the
     // original vertices' numbers, so the prepared topology answers for them).

@@ -98,7 +98,8 @@ void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const P
     if (!no_surface.empty() && no_surface[v]) continue;  // no surface there: any will do
     const bool own = uncut.boundary[static_cast<std::size_t>(cut.origin[v])] != 0;
     if (cut.rule[v] != SectorRule::Crease)
-      throw MeshError(who + " is a corner (a sharp vertex, or three or more boundary or infinitely sharp edges); " + scheme +
+      throw MeshError(who + " is a corner (a sharp vertex, three or more boundary or infinitely sharp edges, or with "
+                            "edge-and-corner a boundary vertex in one face); " + scheme +
                       " has no patches for corners on a boundary or crease yet" + plan);
     if (k != 3)
       throw MeshError(who + " is on " + (own ? "the boundary in " : "an infinitely sharp crease with ") + std::to_string(k) +
@@ -252,7 +253,8 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
   while (!gather_patches(patch_mesh->topology(topo), t, out.patches, out.phantoms, patch_mesh->no_surface)) {
     if (out.steps - before_isolation == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices are still too close " +
-                      std::string(out.boundary || patch_mesh->cut ? "to each other or to a boundary or crease " : "") + "after " +
+                      std::string(patch_mesh->cut ? "to each other or to a boundary or crease "
+                                                  : out.boundary ? "to each other or to the boundary " : "") + "after " +
                       std::to_string(limits::kMaxRefinementSteps) + " " + (sqrt3 ? "double sqrt(3) steps" : "subdivision steps"));
     step_once();
     patch_mesh = std::make_unique<PatchMesh>(out.mesh, topo, sharpness, edge_and_corner, no_boundary_surface);
