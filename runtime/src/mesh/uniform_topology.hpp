@@ -46,6 +46,12 @@ class UniformTopology {
       if (on_boundary(vertex(f, c))) return true;
     return false;
   }
+  // Whether a corner of face f is a vertex marked in `marked` (one flag per vertex; empty: none is).
+  bool touches_marked(std::size_t f, const std::vector<char>& marked) const {
+    for (int c = 0; c < K && !marked.empty(); ++c)
+      if (marked[static_cast<std::size_t>(vertex(f, c))]) return true;
+    return false;
+  }
   // The next half-edge leaving the same vertex, counter-clockwise (faces are
   // counter-clockwise seen from outside); kNoTwin past a boundary vertex's last face.
   std::uint32_t turn_ccw(std::uint32_t h) const { return twin_[half_edge(face_of(h), corner_of(h) + K - 1)]; }

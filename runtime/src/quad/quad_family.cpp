@@ -28,14 +28,6 @@ struct QuadFamily::Prepared {
 
 namespace {
 
-// Whether face f has a corner at a vertex marked in `no_surface` (per vertex, or empty).
-bool without_surface(const QuadTopology& topo, std::size_t f, const std::vector<char>& no_surface) {
-  if (no_surface.empty()) return false;
-  for (int c = 0; c < 4; ++c)
-    if (no_surface[static_cast<std::size_t>(topo.vertex(f, c))]) return true;
-  return false;
-}
-
 // The corner of face f at a boundary vertex with a sector patch (sector_vertex), or -1.
 int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<SectorRule>& corner) {
   for (int c = 0; c < 4; ++c)
@@ -54,7 +46,7 @@ int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<Sec
 bool isolated(const QuadTopology& topo, const std::vector<SectorRule>& corner, const std::vector<char>& no_surface) {
   for (std::size_t f = 0; f < topo.faces(); ++f) {
     if (topo.touches_boundary(f)) {
-      if (without_surface(topo, f, no_surface)) continue;
+      if (topo.touches_marked(f, no_surface)) continue;
       const int c = sector_corner(topo, f, corner);
       if (c >= 0 ? !sector_patch_ready(topo, f, c, corner) : !boundary_patch_ready(topo, f, corner)) return false;
       continue;
@@ -245,7 +237,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
       continue;
     }
     const int c = sector_corner(patch_topo, f, cut.rule);
-    if (without_surface(patch_topo, f, no_surface)) out.patches[f].points.assign(16, 0);  // a hole: never evaluated
+    if (patch_topo.touches_marked(f, no_surface)) out.patches[f].points.assign(16, 0);  // a hole: never evaluated
     else if (c >= 0) out.patches[f] = gather_sector_patch(patch_topo, f, c, cut.rule);
     else out.patches[f] = gather_boundary_patch(patch_topo, f, cut.mesh.vertex_count, phantoms);
   }

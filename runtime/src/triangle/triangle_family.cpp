@@ -28,14 +28,6 @@ struct TriangleFamily::Prepared {
 
 namespace {
 
-// Whether face f has a corner at a vertex marked in `no_surface` (per vertex, or empty).
-bool without_surface(const TriangleTopology& topo, std::size_t f, const std::vector<char>& no_surface) {
-  if (no_surface.empty()) return false;
-  for (int c = 0; c < 3; ++c)
-    if (no_surface[static_cast<std::size_t>(topo.vertex(f, c))]) return true;
-  return false;
-}
-
 // Every face's patch, or false when one cannot be gathered. `topo` is the mesh
 // cut along its infinitely sharp edges (family/sharp_cut.hpp), whose boundaries
 // are the mesh's own and its creases. On a mesh with boundaries, faces whose
@@ -56,7 +48,7 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
     if (at_boundary || (topo.has_boundary() && regular_loop_vertex(topo, topo.vertex(f, 0)) &&
                         regular_loop_vertex(topo, topo.vertex(f, 1)) && regular_loop_vertex(topo, topo.vertex(f, 2)))) {
       patch = regular_boundary_patch(topo, f, tables, phantoms);
-      if (!patch && without_surface(topo, f, no_surface)) {
+      if (!patch && topo.touches_marked(f, no_surface)) {
         patch.emplace();
         patch->points.assign(tables.layout(6).size(), topo.vertex(f, 0));  // a hole: never evaluated
       }
