@@ -7,22 +7,6 @@
 
 namespace sg {
 
-const char* sector_kind_name(SectorKind kind) {
-  switch (kind) {
-    case SectorKind::Crease: return "crease";
-    case SectorKind::Corner: return "corner";
-    case SectorKind::Cone: return "cone";
-    default: return "dart";
-  }
-}
-
-std::string BoundarySector::name() const {
-  if (kind == SectorKind::Cone) return "cone point of valence " + std::to_string(faces);
-  if (kind == SectorKind::Dart) return "dart of valence " + std::to_string(faces) + ", face " + std::to_string(position);
-  return std::string(kind == SectorKind::Corner ? "corner" : "boundary vertex") + " in " + std::to_string(faces) + " face" +
-         (faces == 1 ? "" : "s") + ", face " + std::to_string(position);
-}
-
 SectorLayout::SectorLayout(const BoundarySector& s) : s_(s) {
   if (s.kind == SectorKind::Cone) throw Error("internal: a cone point's patch has the interior layout");
   if (s.faces < (s.kind == SectorKind::Dart ? 3 : 1) || s.faces > limits::kMaxValence || s.position < 0 || s.position >= s.faces)

@@ -31,31 +31,12 @@
 #include <utility>
 #include <vector>
 
+#include "common/sector_kind.hpp"
 #include "quad/quad_scheme.hpp"
 
 namespace sg {
 
 struct PatchSubdivision;  // patch_subdivision.hpp
-
-// What B's own rule is: the boundary curve's vertex rule over e_0 and e_k
-// (a boundary or crease vertex), none (a corner: it stays put), or the scheme's
-// smooth rule at valence k (a dart: an infinitely sharp crease ends at B, the
-// mesh cut along it makes B a boundary vertex whose e_0 and e_k are two copies
-// of the crease's next vertex, and B's rule sees it once).
-// Cone: the vertex stays put, everything round it follows the smooth rules.
-enum class SectorKind : unsigned char { Crease = 0, Corner = 1, Dart = 2, Cone = 3 };
-const char* sector_kind_name(SectorKind kind);  // "crease", "corner", "dart", "cone"
-
-struct BoundarySector {
-  SectorKind kind = SectorKind::Crease;
-  int faces = 1;     // k >= 1 (>= 3 for a dart or a cone: its valence)
-  int position = 0;  // p, 0 <= p < k (0 for a cone)
-
-  // "boundary vertex in 3 faces, face 1" / "corner in 2 faces, face 0" / "dart of valence 5, face 2" /
-  // "cone point of valence 3"
-  std::string name() const;
-  bool operator==(const BoundarySector&) const = default;
-};
 
 // The layout of the sectors with a boundary (not a cone's: patch_layout.hpp).
 class SectorLayout {

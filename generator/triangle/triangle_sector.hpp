@@ -1,0 +1,95 @@
+#pragma once
+// A face at a boundary vertex of a Loop mesh, as a patch of its own: the
+// vertex B in k faces (its sector), the face at position p among them
+// (common/sector_kind.hpp), after isolation (every other vertex the patch
+// reaches is regular: valence 6 inside, three faces on the boundary).
+//
+// Chart: k wedges of the triangular lattice round B, in the frames of
+// sector_chart.hpp (wedge t holds a (1,0) + b (1,1), a >= 1, 0 <= b < a, in
+// its own frame; e_t = (1,0) of frame t), not closed: ray 0 (frame 0's b = 0)
+// and ray k (frame k's b = 0) are the boundary, e_0 and e_k on them. Beyond
+// each ray the chart holds one row of phantom points, each the point across a
+// boundary edge (b1, b2) from the real triangle (b1, b2, r) there:
+// b1 + b2 - r. With them Loop's regular rules give its boundary rules exactly
+// (docs/runtime.md, "Loop with boundaries"), so every child of the patch but
+// B's own is the regular box spline over its 12 points.
+//
+// The patch of face p has B at (0,0), u towards e_p, v towards e_{p+1}; its
+// point (u, v) lies at (u + v, v) in frame p (as triangle_patch.hpp's).
+//
+// Rules: inside, the scheme's regular ones; along the rays the crease curve
+// (vertex crease_centre, crease_neighbour; edge midpoint); B follows the crease
+// curve over e_0 and e_k (Crease) or stays put (Corner). All are rational, so
+// the stencils are exact.
+//
+// Method (as the quad sectors): with A0 the one-step matrix of the patch's
+// points onto its child at B, W(x) = W(2x) A0 for x in that child
+// (u + v <= 1/2), the regular box spline over the refined points elsewhere,
+// and W(0) the left eigenvector of A0 for the eigenvalue 1.
+#include <array>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "algebra/rational.hpp"
+#include "common/sector_kind.hpp"
+#include "triangle/bivariate_solver.hpp"
+#include "triangle/triangle_scheme.hpp"
+
+namespace sg {
+
+// A point of the chart in canonical form: B is (0, 0, 0); a real point is in
+// wedge 0..k-1 (a >= 1, 0 <= b < a) or on ray k (sector k, a >= 1, b = 0); a
+// phantom is below ray 0 (sector 0, a >= 0, b = -1) or beyond ray k (sector k,
+// a >= 1, b = 1).
+struct WedgePoint {
+  int sector = 0;
+  long a = 0, b = 0;
+  auto operator<=>(const WedgePoint&) const = default;
+};
+
+class BoundaryWedge {
+ public:
+  explicit BoundaryWedge(int faces);
+  int faces() const { return k_; }
+  // The lattice point (a, b) of frame `sector` in canonical form; nullopt when
+  // it lies beyond the phantom rows.
+  std::optional<WedgePoint> canonical(int sector, long a, long b) const;
+  bool phantom(const WedgePoint& p) const { return (p.sector == 0 && p.b < 0) || (p.sector == k_ && p.b > 0); }
+  // A phantom's b1, b2 and r (it is b1 + b2 - r), all real.
+  std::array<WedgePoint, 3> phantom_parts(const WedgePoint& p) const;
+  // B, or a point on ray 0 or ray k.
+  bool on_boundary(const WedgePoint& p) const { return p.b == 0 && (p.a == 0 || p.sector == 0 || p.sector == k_); }
+
+ private:
+  int k_;
+};
+
+using WedgeRow = std::map<WedgePoint, Rational>;  // weights over (real) points
+
+struct TriangleSectorPatch {
+  BoundarySector sector;
+  long grid = 1;
+  std::vector<WedgePoint> layout;                // the control points: B, e_0..e_k, then by (a, sector, b)
+  std::vector<std::vector<Rational>> stencils;  // W(i/g, j/g) over `layout`, index j * (g + 1) + i, i + j <= g
+  const std::vector<Rational>& at(long i, long j) const { return stencils[static_cast<std::size_t>(j * (grid + 1) + i)]; }
+};
+
+// The refined point p (canonical, on the lattice refined once: halves of the
+// coarse one) in the coarse real points. A phantom is b1 + b2 - r of refined
+// real points. Throws sg::Error for a scheme without crease curve or a kind
+// other than Crease and Corner.
+WedgeRow refined_wedge_point(const TriangleScheme& scheme, const BoundaryWedge& wedge, SectorKind kind,
+                             const WedgePoint& p);
+
+// The patch of `sector` at the grid g; `regular` is the regular scaling
+// function on (1/g)Z^2 (solve_regular). Loop schemes only.
+TriangleSectorPatch solve_triangle_sector(const TriangleScheme& scheme, const BoundarySector& sector, long g,
+                                          const BivariateSolution& regular);
+
+// The sectors the runtime needs for boundary vertices in 1..max_faces faces:
+// every position of every k but 3 (in three faces the patches are regular,
+// with phantoms), as Crease; with `corners`, also Corner in every k.
+std::vector<BoundarySector> triangle_sectors(int max_faces, bool corners);
+
+}  // namespace sg
