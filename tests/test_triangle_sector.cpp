@@ -71,7 +71,108 @@ double worst_difference(const sg::TriangleScheme& loop, const sg::BoundarySector
   return worst;
 }
 
+using Vec = std::array<double, 3>;
+Vec cross(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec unit(const Vec& a) {
+  const double n = std::sqrt(dot(a, a));
+  return {a[0] / n, a[1] / n, a[2] / n};
+}
+
+// Far's exact limit position and tangents of every vertex after one uniform step.
+struct FarLimit {
+  std::vector<Vec> position, tan1, tan2;
+};
+FarLimit far_limit(const std::vector<Vec>& positions, const WedgeMesh& mesh) {
+  namespace osd = OpenSubdiv;
+  auto refiner = bfr_reference::make_refiner(static_cast<int>(positions.size()), mesh.sizes, mesh.indices,
+                                             osd::Sdc::SCHEME_LOOP);
+  osd::Far::TopologyRefiner::UniformOptions options(1);
+  options.fullTopologyInLastLevel = true;
+  refiner->RefineUniform(options);
+  struct Primvar {
+    double p[3];
+    void Clear() { p[0] = p[1] = p[2] = 0; }
+    void AddWithWeight(const Primvar& s, double w) {
+      for (int c = 0; c < 3; ++c) p[c] += w * s.p[c];
+    }
+  };
+  std::vector<Primvar> coarse(positions.size()), fine(static_cast<std::size_t>(refiner->GetLevel(1).GetNumVertices()));
+  for (std::size_t v = 0; v < positions.size(); ++v)
+    for (int c = 0; c < 3; ++c) coarse[v].p[c] = positions[v][static_cast<std::size_t>(c)];
+  osd::Far::PrimvarRefinerReal<double> primvars(*refiner);
+  Primvar* src = coarse.data();
+  Primvar* dst = fine.data();
+  primvars.Interpolate(1, src, dst);
+  std::vector<Primvar> pos(fine.size()), t1(fine.size()), t2(fine.size());
+  Primvar *p = pos.data(), *d1 = t1.data(), *d2 = t2.data();
+  primvars.Limit(dst, p, d1, d2);
+  FarLimit out;
+  for (std::size_t v = 0; v < fine.size(); ++v) {
+    out.position.push_back({pos[v].p[0], pos[v].p[1], pos[v].p[2]});
+    out.tan1.push_back({t1[v].p[0], t1[v].p[1], t1[v].p[2]});
+    out.tan2.push_back({t2[v].p[0], t2[v].p[1], t2[v].p[2]});
+  }
+  return out;
+}
+
 }  // namespace
+
+// The tangent plane at B, where A0's spectrum gives one (k = 1..5: its two
+// leading eigenvalues below 1 are real with a gap below them; at k >= 6 the
+// boundary curve's 1/2 is double and the spectrum alone gives none). Against
+// the normals of OpenSubdiv's own surface as they approach B (Bfr a distance
+// 1e-8 into the face), and for k <= 3 against Far's limit tangents exactly. At
+// k = 4, 5 Far's limit tangent masks are not the tangent plane of the surface
+// it subdivides to: Bfr's normals converge to ours and differ from Far's by up
+// to 13 degrees.
+TEST_CASE("Loop boundary sectors' tangent planes at the vertex are OpenSubdiv's", "[triangle][sector][opensubdiv]") {
+  const sg::TriangleScheme loop = sg::load_triangle_scheme("loop");
+  for (int k = 1; k <= 8; ++k)
+    for (int p = 0; p < k; ++p) {
+      INFO("k = " << k << ", p = " << p);
+      const sg::BoundaryWedge wedge(k);
+      WedgeMesh mesh(wedge, 5);
+      std::mt19937 rng(501u + 17u * static_cast<unsigned>(k) + static_cast<unsigned>(p));
+      std::uniform_real_distribution<double> U(-1, 1);
+      std::vector<Vec> positions(mesh.vertex.size());
+      for (auto& x : positions) x = {U(rng), U(rng), U(rng)};
+      const auto patch = sg::solve_triangle_sector(loop, {sg::SectorKind::Crease, k, p}, 8, sg::solve_regular(loop, 8));
+      std::string why;
+      const auto t = sg::triangle_sector_tangents(patch, why);
+      INFO(why);
+      if (k >= 6) {
+        CHECK(!t);
+        continue;
+      }
+      REQUIRE(t);
+      auto apply = [&](auto weight) {
+        Vec out{0, 0, 0};
+        for (std::size_t h = 0; h < patch.layout.size(); ++h)
+          for (std::size_t c = 0; c < 3; ++c)
+            out[c] += weight(h) * positions[static_cast<std::size_t>(mesh.vertex.at(patch.layout[h]))][c];
+        return out;
+      };
+      const Vec normal = unit(cross(apply([&](std::size_t h) { return sg::to_double(t->u[h]); }),
+                                    apply([&](std::size_t h) { return sg::to_double(t->v[h]); })));
+      bfr_reference::BfrLimit bfr(positions, mesh.sizes, mesh.indices, OpenSubdiv::Sdc::SCHEME_LOOP);
+      const auto d = bfr.derivatives(mesh.patch_face.at(p), 1e-8, 1e-8);
+      CHECK(dot(normal, unit(cross(d[1], d[2]))) > 1 - 1e-6);  // oriented as du x dv
+      if (k <= 3) {  // Far's limit at B's child after one step: the same limit point and plane
+        const Vec limit = apply([&](std::size_t h) { return sg::to_double(patch.at(0, 0)[h]); });
+        const FarLimit far = far_limit(positions, mesh);
+        std::size_t at = far.position.size();
+        for (std::size_t v = 0; v < far.position.size(); ++v) {
+          const Vec e{far.position[v][0] - limit[0], far.position[v][1] - limit[1], far.position[v][2] - limit[2]};
+          if (std::sqrt(dot(e, e)) < 1e-12) at = v;
+        }
+        REQUIRE(at < far.position.size());
+        CHECK(std::fabs(std::fabs(dot(normal, unit(cross(far.tan1[at], far.tan2[at])))) - 1) < 1e-12);
+      }
+    }
+}
 
 TEST_CASE("Loop boundary sectors of 1..8 faces equal Bfr at rates 1..8", "[triangle][sector][opensubdiv]") {
   const sg::TriangleScheme loop = sg::load_triangle_scheme("loop");

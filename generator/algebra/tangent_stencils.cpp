@@ -194,6 +194,22 @@ std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::
                                                          const std::vector<Real>& boundary_tangent,
                                                          const std::vector<std::vector<double>>& grid, long g,
                                                          std::string& why) {
+  if (g < 1 || grid.size() != static_cast<std::size_t>((g + 1) * (g + 1))) throw Error("internal: boundary_tangent_stencils: grid size");
+  std::vector<std::vector<std::size_t>> cells;
+  for (long j = 0; j < g; ++j)
+    for (long i = 0; i < g; ++i) {
+      const auto at = [&](long x, long y) { return static_cast<std::size_t>(y * (g + 1) + x); };
+      cells.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return boundary_tangent_stencils(a0, end_u, end_v, boundary_tangent, grid, cells, why);
+}
+
+std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::vector<Real>>& a0,
+                                                         const std::vector<Real>& end_u, const std::vector<Real>& end_v,
+                                                         const std::vector<Real>& boundary_tangent,
+                                                         const std::vector<std::vector<double>>& samples,
+                                                         const std::vector<std::vector<std::size_t>>& cells,
+                                                         std::string& why) {
   if (end_u.size() != end_v.size() || (!boundary_tangent.empty() && boundary_tangent.size() != end_u.size()))
     throw Error("internal: boundary_tangent_stencils: sizes differ");
   const Matrix a = square(a0, end_u.size());
@@ -246,26 +262,26 @@ std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::
   }
   r = r * (l.transpose() * r).inverse();  // biorthogonal: L^T R = I
   // Regularity of the characteristic map over the patch: the signed area of every sampled cell.
-  if (g < 1 || grid.size() != static_cast<std::size_t>((g + 1) * (g + 1))) throw Error("internal: boundary_tangent_stencils: grid size");
-  std::vector<std::pair<double, double>> image(grid.size());
-  for (std::size_t k = 0; k < grid.size(); ++k) {
+  std::vector<std::pair<double, double>> image(samples.size());
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    if (samples[k].size() != static_cast<std::size_t>(m)) throw Error("internal: boundary_tangent_stencils: sample size");
     double x = 0, y = 0;
-    for (Eigen::Index h = 0; h < m; ++h) x += grid[k][static_cast<std::size_t>(h)] * to_double(r(h, 0)), y += grid[k][static_cast<std::size_t>(h)] * to_double(r(h, 1));
+    for (Eigen::Index h = 0; h < m; ++h) x += samples[k][static_cast<std::size_t>(h)] * to_double(r(h, 0)), y += samples[k][static_cast<std::size_t>(h)] * to_double(r(h, 1));
     image[k] = {x, y};
   }
   long positive = 0, negative = 0;
   double largest_area = 0;
   std::vector<double> areas;
-  for (long j = 0; j < g; ++j)
-    for (long i = 0; i < g; ++i) {
-      const auto& a = image[static_cast<std::size_t>(j * (g + 1) + i)];
-      const auto& b = image[static_cast<std::size_t>(j * (g + 1) + i + 1)];
-      const auto& d = image[static_cast<std::size_t>((j + 1) * (g + 1) + i + 1)];
-      const auto& e = image[static_cast<std::size_t>((j + 1) * (g + 1) + i)];
-      const double area = (d.first - a.first) * (e.second - b.second) - (d.second - a.second) * (e.first - b.first);
-      areas.push_back(area);
-      largest_area = std::max(largest_area, std::abs(area));
+  for (const auto& cell : cells) {  // twice the signed area (shoelace)
+    double area = 0;
+    for (std::size_t c = 0; c < cell.size(); ++c) {
+      const auto& a = image.at(cell[c]);
+      const auto& b = image.at(cell[(c + 1) % cell.size()]);
+      area += a.first * b.second - a.second * b.first;
     }
+    areas.push_back(area);
+    largest_area = std::max(largest_area, std::abs(area));
+  }
   for (double area : areas) {
     if (area > 1e-9 * largest_area) ++positive;
     else if (area < -1e-9 * largest_area) ++negative;

@@ -64,5 +64,14 @@ std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::
                                                          const std::vector<Real>& boundary_tangent,
                                                          const std::vector<std::vector<double>>& grid, long g,
                                                          std::string& why);
+// The same with the samples at any points of the patch and its cells given as
+// polygons of sample indices, counter-clockwise in (u, v) (a triangle patch's
+// grid triangles).
+std::optional<TangentStencils> boundary_tangent_stencils(const std::vector<std::vector<Real>>& a0,
+                                                         const std::vector<Real>& end_u, const std::vector<Real>& end_v,
+                                                         const std::vector<Real>& boundary_tangent,
+                                                         const std::vector<std::vector<double>>& samples,
+                                                         const std::vector<std::vector<std::size_t>>& cells,
+                                                         std::string& why);
 
 }  // namespace sg

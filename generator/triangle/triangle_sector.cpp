@@ -227,6 +227,7 @@ TriangleSectorPatch solve_triangle_sector(const TriangleScheme& scheme, const Bo
     for (std::size_t c = 0; c < m; ++c)
       if (row[c] != 0) a0[h].emplace_back(c, row[c]);
   }
+  out.child_at_vertex = a0;
   const LinearSolution fixed = left_fixed_vector(a0);
   if (fixed.status != LinearSolution::Status::Unique)
     throw Error("scheme '" + scheme.name + "', " + sector.name() + ": the limit stencil has " + fixed.describe());
@@ -256,6 +257,45 @@ TriangleSectorPatch solve_triangle_sector(const TriangleScheme& scheme, const Bo
   for (long j = 0; j <= g; ++j)
     for (long i = 0; i + j <= g; ++i) solve(i, j);
   return out;
+}
+
+std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatch& patch, std::string& why) {
+  if (patch.sector.kind != SectorKind::Crease) {
+    why = "a corner has no tangent plane";
+    return std::nullopt;
+  }
+  const long g = patch.grid;
+  if (g < 2) throw Error("internal: a sector's tangents need a grid of at least 2");
+  const std::size_t m = patch.layout.size();
+  std::vector<std::vector<Real>> a0(m, std::vector<Real>(m, Real(0)));
+  for (std::size_t r = 0; r < m; ++r)
+    for (const auto& [c, w] : patch.child_at_vertex.at(r)) a0[r][c] += to_real(w);
+  auto real = [&](long i, long j) {
+    std::vector<Real> w;
+    for (const Rational& x : patch.at(i, j)) w.push_back(to_real(x));
+    return w;
+  };
+  // The samples: every node, numbered j-major over the triangle; the cells: the
+  // grid's up and down triangles, counter-clockwise in (u, v).
+  std::vector<std::vector<double>> samples;
+  std::map<std::pair<long, long>, std::size_t> number;
+  for (long j = 0; j <= g; ++j)
+    for (long i = 0; i + j <= g; ++i) {
+      number[{i, j}] = samples.size();
+      samples.emplace_back();
+      for (const Rational& x : patch.at(i, j)) samples.back().push_back(to_double(x));
+    }
+  std::vector<std::vector<std::size_t>> cells;
+  for (long j = 0; j < g; ++j)
+    for (long i = 0; i + j < g; ++i) {
+      cells.push_back({number[{i, j}], number[{i + 1, j}], number[{i, j + 1}]});
+      if (i + j + 2 <= g) cells.push_back({number[{i + 1, j}], number[{i + 1, j + 1}], number[{i, j + 1}]});
+    }
+  // The boundary curve's tangent at B: e_k - e_0 (layout positions 1 and 1 + k).
+  std::vector<Real> boundary(m, Real(0));
+  boundary[1] = -1;
+  boundary[1 + static_cast<std::size_t>(patch.sector.faces)] = 1;
+  return boundary_tangent_stencils(a0, real(g, 0), real(0, g), boundary, samples, cells, why);
 }
 
 std::vector<BoundarySector> triangle_sectors(int max_faces, bool corners) {

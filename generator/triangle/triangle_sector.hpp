@@ -29,9 +29,11 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "algebra/rational.hpp"
+#include "algebra/tangent_stencils.hpp"
 #include "common/sector_kind.hpp"
 #include "triangle/bivariate_solver.hpp"
 #include "triangle/triangle_scheme.hpp"
@@ -72,6 +74,8 @@ struct TriangleSectorPatch {
   long grid = 1;
   std::vector<WedgePoint> layout;                // the control points: B, e_0..e_k, then by (a, sector, b)
   std::vector<std::vector<Rational>> stencils;  // W(i/g, j/g) over `layout`, index j * (g + 1) + i, i + j <= g
+  // A0: the refined points at the layout's positions (the child at B) over the layout.
+  std::vector<std::vector<std::pair<std::size_t, Rational>>> child_at_vertex;
   const std::vector<Rational>& at(long i, long j) const { return stencils[static_cast<std::size_t>(j * (grid + 1) + i)]; }
 };
 
@@ -86,6 +90,14 @@ WedgeRow refined_wedge_point(const TriangleScheme& scheme, const BoundaryWedge& 
 // function on (1/g)Z^2 (solve_regular). Loop schemes only.
 TriangleSectorPatch solve_triangle_sector(const TriangleScheme& scheme, const BoundarySector& sector, long g,
                                           const BivariateSolution& regular);
+
+// The tangent plane at B of a crease sector's patch (algebra/tangent_stencils.hpp,
+// boundary_tangent_stencils): the two leading eigenvalues of A0 below 1 with a
+// regular characteristic map on the patch, whose eigenvectors hold the
+// boundary curve's tangent e_k - e_0. `patch` at any grid g >= 2 (its corner
+// stencils give the edges' far ends, its grid the map's cells). Nothing, with
+// `why`, for a corner (no tangent plane) or where the spectrum gives none.
+std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatch& patch, std::string& why);
 
 // The sectors the runtime needs for boundary vertices in 1..max_faces faces:
 // every position of every k but 3 (in three faces the patches are regular,
