@@ -390,9 +390,19 @@ TEST_CASE("triangle tables' children and regular polynomial are checked at load"
   refused(at + 20, 1, "child 0: invalid entry 0");                    // the first entry's row must be 0
   refused(at + 24, 100000, "child 0: invalid entry 0");               // a column beyond the layout
   refused(at + 16, 0x7fffffff, "child 0: truncated rows");
-  // The regular polynomial's coefficients end the file: one less is truncated.
-  write_file(dir / "short.sgt", with_checksum(body.substr(0, body.size() - 8)));
+  // The sectors (version 7) end the file: boundary vertices in 1..6 faces (6:
+  // the tables always hold the regular valence), 18 crease and 21 corner
+  // sectors, the first a crease vertex in one face. One byte less is truncated.
+  std::string sectors_pattern;
+  put(sectors_pattern, 39u);
+  sectors_pattern.push_back('\0');
+  for (std::uint32_t x : {1u, 0u}) put(sectors_pattern, x);
+  const std::size_t sectors_at = body.rfind(sectors_pattern);
+  REQUIRE(sectors_at != std::string::npos);
+  write_file(dir / "short.sgt", with_checksum(body.substr(0, body.size() - 1)));
   CHECK_THROWS_WITH(Tables::load((dir / "short.sgt").string()), Catch::Contains("truncated"));
+  refused(sectors_at, 1000000, "truncated sector list");
+  refused(sectors_at + 5, 0, "sector 0: invalid kind");
   // The unchanged file loads, with its subdivision and Loop's quartic basis.
   write_file(dir / "good.sgt", with_checksum(body));
   const auto good = Tables::load((dir / "good.sgt").string());
@@ -401,12 +411,12 @@ TEST_CASE("triangle tables' children and regular polynomial are checked at load"
   // The degree (before 15 coefficients per valence-6 layout point and the
   // one-byte derivative flag): a huge one is refused before any arithmetic on
   // it (fuzzing found the overflow).
-  const std::size_t degree_at = body.size() - 1 - 8 * 15 * good->triangle().layout(6).size() - 4;
+  const std::size_t degree_at = sectors_at - 1 - 8 * 15 * good->triangle().layout(6).size() - 4;
   refused(degree_at, 0x80000001u, "degree 2147483649 is above 8");
   refused(degree_at, 9, "degree 9 is above 8");
   // Loop's polynomial serves its derivatives: a flag claiming stored derivative stencils is refused.
   std::string flagged = body;
-  flagged.back() = 1;
+  flagged[sectors_at - 1] = 1;
   write_file(dir / "flag.sgt", with_checksum(flagged));
   CHECK_THROWS_WITH(Tables::load((dir / "flag.sgt").string()), Catch::Contains("invalid regular derivative flag"));
   fs::remove_all(dir);

@@ -192,7 +192,7 @@ TEST_CASE("triangle meshes and tables: bad input gets clear errors, and nothing 
     std::ofstream(dir / "old.sgt", std::ios::binary) << bytes;
   }
   expect(eval((dir / "old.sgt").string(), (kMeshes / "icosahedron.obj").string()),
-         "old.sgt: format version 1 is not supported (expected 2 to 6; regenerate the tables");
+         "old.sgt: format version 1 is not supported (expected 2 to 7; regenerate the tables");
   const fs::path out = dir / "never.ply";
   expect(run_stenciltess("--tables " + (dir / "bad.sgt").string() + " --mesh " + (kMeshes / "icosahedron.obj").string() +
                          " --rate 3 --out " + out.string()),

@@ -10,6 +10,7 @@
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "triangle/triangle_masks.hpp"
+#include "triangle/triangle_patch.hpp"
 
 namespace sg {
 
@@ -296,6 +297,47 @@ std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatc
   boundary[1] = -1;
   boundary[1 + static_cast<std::size_t>(patch.sector.faces)] = 1;
   return boundary_tangent_stencils(a0, real(g, 0), real(0, g), boundary, samples, cells, why);
+}
+
+TriangleSectorDescent triangle_sector_descent(const TriangleScheme& scheme, const BoundarySector& sector,
+                                              const std::vector<SectorPoint>& regular_layout) {
+  constexpr long kGrid = 8;  // the characteristic map's regularity is checked on this grid
+  TriangleSectorPatch patch = solve_triangle_sector(scheme, sector, kGrid, solve_regular(scheme, kGrid));
+  TriangleSectorDescent out;
+  out.sector = sector;
+  out.limit = patch.at(0, 0);
+  out.tangents = triangle_sector_tangents(patch, out.no_tangents);
+  out.child_at_vertex = std::move(patch.child_at_vertex);
+  out.layout = std::move(patch.layout);
+  std::map<WedgePoint, std::size_t> index;
+  for (std::size_t h = 0; h < out.layout.size(); ++h) index[out.layout[h]] = h;
+  const BoundaryWedge wedge(sector.faces);
+  const WedgeRules rules(scheme, wedge, sector.kind);
+  for (int c = 0; c < 3; ++c) {
+    const long(&corner)[3][2] = kRegularChildren[c];
+    for (const SectorPoint& q : regular_layout) {
+      long a = q.a, b = q.b;  // into the kind's frame: q.sector turns of 60 degrees
+      for (int t = 0; t < ((q.sector % 6) + 6) % 6; ++t) {
+        const long na = a - b, nb = a;
+        a = na, b = nb;
+      }
+      // The kind's frame on the cell: X = corner 1 - corner 0, Y = corner 2 - corner 1.
+      const long fa = corner[0][0] + a * (corner[1][0] - corner[0][0]) + b * (corner[2][0] - corner[1][0]);
+      const long fb = corner[0][1] + a * (corner[1][1] - corner[0][1]) + b * (corner[2][1] - corner[1][1]);
+      const auto fine = wedge.canonical(sector.position, fa, fb);
+      if (!fine) throw Error("internal: a regular cell of " + sector.name() + " reaches beyond the phantom rows");
+      std::vector<std::pair<std::size_t, Rational>> row;
+      for (const auto& [x, w] : rules.refined(*fine)) {
+        if (w == 0) continue;
+        const auto it = index.find(x);
+        if (it == index.end()) throw Error("internal: a regular cell of " + sector.name() + " needs a point outside its layout");
+        row.emplace_back(it->second, w);
+      }
+      std::sort(row.begin(), row.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+      out.regular_children[static_cast<std::size_t>(c)].push_back(std::move(row));
+    }
+  }
+  return out;
 }
 
 std::vector<BoundarySector> triangle_sectors(int max_faces, bool corners) {

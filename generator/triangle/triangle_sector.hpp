@@ -36,6 +36,7 @@
 #include "algebra/tangent_stencils.hpp"
 #include "common/sector_kind.hpp"
 #include "triangle/bivariate_solver.hpp"
+#include "triangle/sector_chart.hpp"
 #include "triangle/triangle_scheme.hpp"
 
 namespace sg {
@@ -98,6 +99,25 @@ TriangleSectorPatch solve_triangle_sector(const TriangleScheme& scheme, const Bo
 // stencils give the edges' far ends, its grid the map's cells). Nothing, with
 // `why`, for a corner (no tangent plane) or where the spectrum gives none.
 std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatch& patch, std::string& why);
+
+// What the tables keep of a sector's patch: no stencils (every rate of every
+// sector would be large); the runtime makes them from this by the same
+// recursion (docs/table-format.md, "Loop boundary sectors").
+struct TriangleSectorDescent {
+  BoundarySector sector;
+  std::vector<WedgePoint> layout;
+  std::vector<Rational> limit;  // W(0)
+  // The four cells of one Loop step in the order of triangle_children.hpp: the
+  // child at B (A0, rows over `layout` in `layout`'s order), then the regular
+  // cells, up (1, 0), up (0, 1) and down (0, 0), each unrotated: per point of
+  // valence 6's layout (as the tables store it), its row over `layout`.
+  std::vector<std::vector<std::pair<std::size_t, Rational>>> child_at_vertex;
+  std::array<std::vector<std::vector<std::pair<std::size_t, Rational>>>, 3> regular_children;
+  std::optional<TangentStencils> tangents;  // none for a corner, or where the spectrum gives no plane
+  std::string no_tangents;                  // why not
+};
+TriangleSectorDescent triangle_sector_descent(const TriangleScheme& scheme, const BoundarySector& sector,
+                                              const std::vector<SectorPoint>& regular_layout);
 
 // The sectors the runtime needs for boundary vertices in 1..max_faces faces:
 // every position of every k but 3 (in three faces the patches are regular,

@@ -3,12 +3,15 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <algorithm>
 #include <tuple>
+#include <tbb/parallel_for.h>
 
 #include "base/error.hpp"
 #include "common/byte_writer.hpp"
 #include "stencil_runtime/binary_format.hpp"
 #include "triangle/triangle_children.hpp"
+#include "triangle/triangle_sector.hpp"
 #include "triangle/triangle_tangents.hpp"
 
 namespace sg {
@@ -75,6 +78,52 @@ void put_children(std::string& out, const std::vector<TriangleChild>& children) 
         put<std::uint32_t>(out, static_cast<std::uint32_t>(column));
         put<double>(out, w);
       }
+  }
+}
+
+// The sectors' layouts, limit stencils, cells and tangents (docs/table-format.md,
+// "Loop boundary sectors"); none for sqrt(3) or a scheme without a crease curve.
+void put_sectors(std::string& out, const TriangleScheme& scheme, const TriangleTableSet& set,
+                 const std::vector<SectorPoint>& regular_layout) {
+  std::vector<BoundarySector> sectors;
+  if (scheme.refinement == TriangleRefinement::Loop && scheme.has_crease)
+    sectors = triangle_sectors(*std::max_element(set.valences.begin(), set.valences.end()), true);
+  std::vector<TriangleSectorDescent> data(sectors.size());
+  tbb::parallel_for(std::size_t(0), sectors.size(),
+                    [&](std::size_t s) { data[s] = triangle_sector_descent(scheme, sectors[s], regular_layout); });
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(data.size()));
+  for (std::size_t s = 0; s < data.size(); ++s) {
+    const TriangleSectorDescent& d = data[s];
+    put<std::uint8_t>(out, static_cast<std::uint8_t>(d.sector.kind));
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(d.sector.faces));
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(d.sector.position));
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(d.layout.size()));
+    for (const WedgePoint& p : d.layout) {
+      put<std::int32_t>(out, p.sector);
+      put<std::int32_t>(out, static_cast<std::int32_t>(p.a));
+      put<std::int32_t>(out, static_cast<std::int32_t>(p.b));
+    }
+    for (const Rational& w : d.limit) put<double>(out, to_double(w));
+    auto rows = [](const std::vector<std::vector<std::pair<std::size_t, Rational>>>& exact) {
+      std::vector<std::vector<std::pair<std::size_t, double>>> r;
+      for (const auto& row : exact) {
+        r.emplace_back();
+        for (const auto& [c, w] : row) r.back().emplace_back(c, to_double(w));
+      }
+      return r;
+    };
+    std::vector<TriangleChild> cells(4);
+    cells[0].valence = static_cast<int>(fmt::kTriangleSectorCode + s);
+    cells[0].rows = rows(d.child_at_vertex);
+    for (std::size_t c = 0; c < 3; ++c) cells[c + 1].valence = 6, cells[c + 1].rows = rows(d.regular_children[c]);
+    put_children(out, cells);
+    put<std::uint8_t>(out, d.tangents ? 1 : 0);
+    if (d.tangents) {
+      put<double>(out, to_double(d.tangents->eigenvalue));
+      put<double>(out, to_double(d.tangents->residual));
+      for (const Real& w : d.tangents->u) put<double>(out, to_double(w));
+      for (const Real& w : d.tangents->v) put<double>(out, to_double(w));
+    }
   }
 }
 
@@ -185,6 +234,8 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
       for (const auto& w : *d)
         for (double x : w) put_scalar(out, x, precision);
   }
+  // Version 7: Loop's boundary sectors, up to the largest valence asked for.
+  put_sectors(out, scheme, set, *regular_layout);
   put<std::uint64_t>(out, fmt::fnv1a64(reinterpret_cast<const unsigned char*>(out.data()), out.size()));
   return out;
 }

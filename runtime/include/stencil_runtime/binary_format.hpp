@@ -59,6 +59,8 @@ namespace stencil_runtime::format {
 
 // Compact binary triangle tables (*.sgt): every valence and rate of one triangle scheme.
 inline constexpr char kTriangleMagic[8] = {'S', 'G', 'T', 'R', 'I', '\0', '\0', '\0'};
-inline constexpr std::uint32_t kTriangleVersion = 6;  // 2: regions per valence (sqrt(3) band); 3: children, regular polynomial; 4: tangent stencils at the extraordinary vertex; 5: the crease rule; 6: the regular patch's derivative stencils (sqrt(3))
+inline constexpr std::uint32_t kTriangleVersion = 7;  // 2: regions per valence (sqrt(3) band); 3: children, regular polynomial; 4: tangent stencils at the extraordinary vertex; 5: the crease rule; 6: the regular patch's derivative stencils (sqrt(3)); 7: Loop boundary sectors
+// A child that is a boundary sector's own patch again names it by this code plus the sector's position in the file.
+inline constexpr std::uint32_t kTriangleSectorCode = 1u << 16;
 
 }  // namespace stencil_runtime::format

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <set>
+#include <tuple>
 
 #include "binary_reader.hpp"
 #include "monomial_jet.hpp"
@@ -19,14 +22,15 @@ std::size_t downs_of(long n) { return static_cast<std::size_t>(n * (n - 1) / 2);
 // A region's children (version 3): `dilation`^2 cells, each with its kind and
 // sparse rows over the region's `points` layout points, written row by row.
 void read_children(detail::BinaryReader& r, std::size_t left, int dilation, std::uint32_t points, const std::string& where,
-                   std::vector<TriangleChild>& out) {
+                   std::vector<TriangleChild>& out, std::uint32_t own_code = 0) {
   const auto count = r.get<std::uint32_t>();
   if (count != static_cast<std::uint32_t>(dilation * dilation))
     r.fail(where + ": " + std::to_string(count) + " children (the scheme's step makes " + std::to_string(dilation * dilation) + ")");
   for (std::uint32_t k = 0; k < count; ++k) {
     TriangleChild c;
     const auto valence = r.get<std::uint32_t>(), region = r.get<std::uint32_t>(), rotation = r.get<std::uint32_t>();
-    if (valence > static_cast<std::uint32_t>(limits::kMaxValence) || region > 3 || rotation > 2)
+    if ((valence > static_cast<std::uint32_t>(limits::kMaxValence) && (own_code == 0 || valence != own_code)) || region > 3 ||
+        rotation > 2)
       r.fail(where + ": child " + std::to_string(k) + " has an invalid kind");
     c.valence = static_cast<int>(valence), c.region = static_cast<int>(region), c.rotation = static_cast<int>(rotation);
     const auto entries = r.get<std::uint32_t>();
@@ -49,6 +53,87 @@ void read_children(detail::BinaryReader& r, std::size_t left, int dilation, std:
 }
 
 }  // namespace
+
+// Loop's boundary sectors (version 7): per sector its key, wedge layout, limit
+// stencil, cells and tangents; every count, index and kind checked.
+void TriangleTables::read_sectors(detail::BinaryReader& r, const std::function<std::size_t()>& left, TriangleTables& t) {
+  const auto count = r.get<std::uint32_t>();
+  if (count > 0 && t.refinement_ != TriangleRefinement::Loop) r.fail("sqrt(3) tables with boundary sectors");
+  if (count > left() / 64) r.fail("truncated sector list");
+  const Valence* regular = t.find(6);
+  const std::size_t regular_points = regular->regions[0].layout.size();
+  for (std::uint32_t s = 0; s < count; ++s) {
+    Sector sector;
+    const auto rule = r.get<std::uint8_t>();
+    const auto faces = r.get<std::uint32_t>(), position = r.get<std::uint32_t>();
+    if (rule > 1 || faces < 1 || faces > static_cast<std::uint32_t>(limits::kMaxValence) || position >= faces)
+      r.fail("sector " + std::to_string(s) + ": invalid kind (rule " + std::to_string(rule) + ", " + std::to_string(faces) +
+             " faces, face " + std::to_string(position) + ")");
+    sector.key = {static_cast<SectorRule>(rule), static_cast<int>(faces), static_cast<int>(position)};
+    const std::string where = "sector " + std::to_string(s) + " (" + sector.key.name() + ")";
+    if (t.sector_code(sector.key)) r.fail(where + " is stored twice");
+    const auto points = r.get<std::uint32_t>();
+    if (points < faces + 2 || points > left() / 20) r.fail(where + ": truncated layout");
+    Region region;
+    const int k = static_cast<int>(faces);
+    std::set<std::tuple<int, int, int>> seen;
+    for (std::uint32_t h = 0; h < points; ++h) {
+      ChartPoint p{r.get<std::int32_t>(), r.get<std::int32_t>(), r.get<std::int32_t>()};
+      const bool vertex = p.sector == 0 && p.a == 0 && p.b == 0;
+      const bool inside = p.sector >= 0 && p.sector < k && p.a >= 1 && p.a <= 64 && p.b >= 0 && p.b < p.a;
+      const bool ray = p.sector == k && p.a >= 1 && p.a <= 64 && p.b == 0;
+      // B first, then e_0..e_k, as the family gathers them.
+      const bool in_place = h == 0 ? vertex : h <= faces + 1 ? (p.a == 1 && p.b == 0 && p.sector == static_cast<int>(h) - 1)
+                                                           : (inside || ray) && p.a >= 2;
+      if (!in_place)
+        r.fail(where + ": invalid layout point " + std::to_string(h) + " [" + std::to_string(p.sector) + "," +
+               std::to_string(p.a) + "," + std::to_string(p.b) + "]");
+      if (!seen.insert({p.sector, p.a, p.b}).second) r.fail(where + ": layout point " + std::to_string(h) + " is repeated");
+      region.layout.push_back(p);
+    }
+    if (points > left() / 8) r.fail(where + ": truncated limit stencil");
+    double sum = 0;
+    sector.limit.resize(points);
+    for (double& x : sector.limit) {
+      x = r.get<double>();
+      if (!std::isfinite(x)) r.fail(where + ": a limit weight is not finite");
+      sum += x;
+    }
+    if (std::abs(sum - 1) > 1e-9) r.fail(where + ": the limit stencil does not sum to 1");
+    const std::uint32_t code = kSectorCodeBase + s;
+    read_children(r, left(), t.dilation(), points, where, region.children, code);
+    for (std::size_t c = 0; c < region.children.size(); ++c) {
+      const TriangleChild& child = region.children[c];
+      const bool own = c == 0;
+      if (child.valence != (own ? static_cast<int>(code) : 6) || child.region != 0 || child.rotation != 0 ||
+          child.rows.rows() != (own ? points : regular_points))
+        r.fail(where + ": cell " + std::to_string(c) + " is not " + (own ? "the sector's own patch" : "a regular patch"));
+      for (double w : child.rows.weights) sector.nonnegative = sector.nonnegative && w >= 0;
+    }
+    Valence& v = *sector.data;
+    v.valence = static_cast<int>(code);
+    v.exact = true;
+    if (left() < 1) r.fail(where + ": truncated before its tangent flag");
+    const auto flag = r.get<std::uint8_t>();
+    if (flag > 1 || (flag == 1 && sector.key.rule != SectorRule::Crease)) r.fail(where + ": invalid tangent flag");
+    if (flag == 1) {
+      v.tangent_eigenvalue = r.get<double>();
+      v.tangent_residual = r.get<double>();
+      if (points > left() / 16) r.fail(where + ": truncated tangent stencils");
+      for (auto* tangent : {&v.tangent_u, &v.tangent_v}) {
+        tangent->resize(points);
+        for (double& x : *tangent) {
+          x = r.get<double>();
+          if (!std::isfinite(x)) r.fail(where + ": a tangent weight is not finite");
+        }
+      }
+      if (!(v.tangent_eigenvalue > 0 && v.tangent_eigenvalue < 1) || !std::isfinite(v.tangent_residual))
+        r.fail(where + ": invalid tangent eigenvalue or residual");
+    }
+    v.regions.push_back(std::move(region));
+    t.sectors_.push_back(std::move(sector));
+  }
+}
 
 TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expected_hash) {
   const std::string bytes = detail::read_binary_file(path);
@@ -191,6 +276,7 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
         }
       }
     }
+    if (version >= 7) read_sectors(r, left, t);
     // Every child's kind is a patch the tables hold, and its rows cover the kind's layout.
     for (const Valence& v : t.valences_)
       for (std::size_t g = 0; g < v.regions.size(); ++g)
@@ -270,7 +356,80 @@ std::vector<int> TriangleTables::valences() const {
   return out;
 }
 
+std::optional<int> TriangleTables::sector_code(const SectorKey& key) const {
+  for (std::size_t s = 0; s < sectors_.size(); ++s)
+    if (sectors_[s].key == key) return static_cast<int>(kSectorCodeBase + s);
+  return std::nullopt;
+}
+
+const SectorKey& TriangleTables::sector(int code) const {
+  if (!is_sector_code(code) || static_cast<std::size_t>(code - static_cast<int>(kSectorCodeBase)) >= sectors_.size())
+    throw EvaluationError("no boundary sector " + std::to_string(code) + " in the triangle table");
+  return sectors_[static_cast<std::size_t>(code - static_cast<int>(kSectorCodeBase))].key;
+}
+
+bool TriangleTables::sector_nonnegative(int code) const {
+  sector(code);  // checks the code
+  return sectors_[static_cast<std::size_t>(code - static_cast<int>(kSectorCodeBase))].nonnegative;
+}
+
+// A sector's stencils at every stored rate n, on the grid 1/(3n) (nodes, up
+// and down centres: the order of Grid::offset), by the recursion of the
+// generator (generator/triangle/triangle_sector.hpp): W(0) the limit stencil;
+// in the child at B (u + v <= 1/2) W(x) = W(2x) A0; in a regular cell the
+// regular patch's stencil at the cell's parameter, which lies on the same grid
+// (a node, or an up or down centre), through the cell's rows.
+void TriangleTables::expand_sector(const Sector& s) const {
+  std::call_once(*s.once, [&] {
+    Region& region = s.data->regions[0];
+    const std::size_t m = region.layout.size();
+    const SparseRows& a0 = region.children[0].rows;
+    for (int n : rates_) {
+      const long g = 3L * n;
+      std::vector<std::vector<double>> memo(static_cast<std::size_t>((g + 1) * (g + 1)));
+      const Grid regular = grid(6, n);
+      std::function<const std::vector<double>&(long, long)> at = [&](long i, long j) -> const std::vector<double>& {
+        std::vector<double>& w = memo[static_cast<std::size_t>(j * (g + 1) + i)];
+        if (!w.empty()) return w;
+        std::vector<double> out(m, 0.0);
+        if (i == 0 && j == 0) {
+          out = s.limit;
+        } else if (2 * (i + j) <= g) {
+          const std::vector<double>& fine = at(2 * i, 2 * j);
+          for (std::size_t r = 0; r < m; ++r)
+            for (std::size_t e = a0.offsets[r]; e != a0.offsets[r + 1]; ++e) out[a0.columns[e]] += fine[r] * a0.weights[e];
+        } else {
+          // The cell (up (1,0), up (0,1), down (0,0)) and its parameter, in units of 1/g.
+          int cell;
+          long a, b;
+          if (2 * i >= g) cell = 1, a = 2 * i - g, b = 2 * j;
+          else if (2 * j >= g) cell = 2, a = 2 * i, b = 2 * j - g;
+          else cell = 3, a = 2 * (i + j) - g, b = g - 2 * i;
+          const SparseRows& rows = region.children[static_cast<std::size_t>(cell)].rows;
+          const double* w = regular.weights(static_cast<GridPoint>(a % 3), a / 3, b / 3);
+          for (std::size_t r = 0; r < rows.rows(); ++r)
+            for (std::size_t e = rows.offsets[r]; e != rows.offsets[r + 1]; ++e) out[rows.columns[e]] += w[r] * rows.weights[e];
+        }
+        return w = std::move(out);
+      };
+      std::vector<std::uint32_t> index;
+      for (int kind = 0; kind < 3; ++kind)
+        for (long j = 0; j + kind <= n; ++j)
+          for (long i = 0; i + j + kind <= n; ++i) {
+            index.push_back(static_cast<std::uint32_t>(region.weights.size() / m));
+            const std::vector<double>& w = at(3 * i + kind, 3 * j + kind);
+            region.weights.insert(region.weights.end(), w.begin(), w.end());
+          }
+      region.index.push_back(std::move(index));
+    }
+  });
+}
+
 const TriangleTables::Valence* TriangleTables::find(int v) const {
+  if (is_sector_code(v)) {
+    const std::size_t s = static_cast<std::size_t>(v - static_cast<int>(kSectorCodeBase));
+    return s < sectors_.size() ? sectors_[s].data.get() : nullptr;
+  }
   for (const auto& x : valences_)
     if (x.valence == v) return &x;
   return nullptr;
@@ -294,6 +453,7 @@ const TriangleTables::Region& TriangleTables::region_data(int valence, int regio
 }
 
 TriangleTables::Grid TriangleTables::grid(int valence, int n, int region) const {
+  if (is_sector_code(valence) && find(valence)) expand_sector(sectors_[static_cast<std::size_t>(valence - static_cast<int>(kSectorCodeBase))]);
   const Region& v = region_data(valence, region);
   const int slot = rate_slot(n);
   if (slot < 0) throw EvaluationError("rate " + std::to_string(n) + " is not in the triangle table");

@@ -13,14 +13,22 @@
 // (1,0),(2,0),(2,1); 2 = (1,0),(2,1),(1,1); 3 = (1,1),(2,1),(2,2); each has its
 // own layout. Region 0 is the patch (EV, e_0, e_1).
 #include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <optional>
 #include <vector>
 
+#include "patch_kind.hpp"
 #include "sparse_rows.hpp"
 #include "stencil_runtime/error.hpp"
 
 namespace stencil_runtime {
+
+namespace detail {
+class BinaryReader;
+}
 
 enum class TriangleRefinement { Loop = 0, Sqrt3 = 1 };
 
@@ -99,6 +107,22 @@ class TriangleTables {
   int polynomial_degree() const { return degree_; }
   const std::vector<double>& polynomial() const { return polynomial_; }
 
+  // Loop's boundary sectors (version 7; docs/table-format.md, "Loop boundary
+  // sectors"): the patch of a face at a boundary vertex in k faces (or a
+  // corner), the face at position p. Each is a patch kind of its own, named by
+  // a code (is_sector_code) that the lookups above and below take as their
+  // valence: layout(code) is its wedge chart ([sector, a, b], sectors 0..k),
+  // children(code, 0) its cells, tangent_u/v(code) its tangent stencils where
+  // it has a tangent plane. Its stencils are made from these on the first
+  // grid() of the code (every rate), by the recursion the generator solves.
+  std::optional<int> sector_code(const SectorKey& key) const;
+  static bool is_sector_code(int valence) { return valence >= static_cast<int>(kSectorCodeBase); }
+  const SectorKey& sector(int code) const;
+  bool has_sectors() const { return !sectors_.empty(); }
+  // Whether every weight of the sector's cells is >= 0 (not so where its
+  // regular cells reach the phantoms beyond the boundary).
+  bool sector_nonnegative(int code) const;
+
   // The same lookups with the valence and rate resolved once (a face's
   // tessellation asks for n^2 stencils of one grid).
   enum class GridPoint { Node = 0, Up = 1, Down = 2 };
@@ -142,6 +166,18 @@ class TriangleTables {
     std::vector<double> tangent_u, tangent_v;
     double tangent_eigenvalue = 0, tangent_residual = 0;
   };
+  struct Sector {
+    SectorKey key;
+    std::vector<double> limit;  // W(0) over the layout
+    bool nonnegative = true;
+    std::unique_ptr<std::once_flag> once = std::make_unique<std::once_flag>();
+    // The layout, cells and tangents as a valence's; the region's weights and
+    // index are filled on first use (expand_sector).
+    std::unique_ptr<Valence> data = std::make_unique<Valence>();
+  };
+  static constexpr unsigned kSectorCodeBase = 1u << 16;  // format::kTriangleSectorCode
+  void expand_sector(const Sector& s) const;
+  static void read_sectors(detail::BinaryReader& r, const std::function<std::size_t()>& left, TriangleTables& t);
   const Valence* find(int v) const;
   const Valence& data(int v) const;  // throws EvaluationError
   const Region& region_data(int v, int region) const;  // throws EvaluationError
@@ -154,6 +190,7 @@ class TriangleTables {
   std::vector<int> rates_;
   std::vector<int> slot_of_rate_;
   std::vector<Valence> valences_;
+  std::vector<Sector> sectors_;
   bool descent_ = false, children_nonnegative_ = true;
   int degree_ = 0;
   std::vector<double> polynomial_;
