@@ -4,7 +4,7 @@
 // boundary option: uniformly triangulated tubes (every vertex regular) and a
 // tube with extraordinary vertices next to its rims (isolation steps near the
 // boundary). Also: tessellations with one rim per boundary loop, and the
-// refusals that remain (a boundary vertex in other than three faces, sqrt(3)).
+// refusal that remains (sqrt(3)).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -142,10 +142,7 @@ TEST_CASE("Loop boundaries, `none`: any boundary vertex is accepted, faces at th
 }
 
 TEST_CASE("Loop boundaries: what is not evaluated yet is refused, naming the vertex or the reason", "[runtime][boundaries][loop]") {
-  const auto tables = loop_tables();
-  // The flip next to the rim: rim vertices in two and four faces.
-  CHECK_THROWS_WITH(loop_surface(tables, tube_with_flip(7, 4, 0), BoundaryInterpolation::EdgeOnly),
-                    Catch::Contains("is on the boundary in") && Catch::Contains("every boundary vertex is in three faces"));
+  // (Boundary vertices in other than three faces: test_loop_sectors.cpp.)
   const auto sqrt3 = Tables::load(generated_table("sqrt3", "--valence 3-8 --n 3", "sgt").string());
   CHECK_THROWS_WITH(loop_surface(sqrt3, triangle_tube(6, 2), BoundaryInterpolation::EdgeOnly),
                     Catch::Contains("sqrt(3), which splits no edges") && Catch::Contains("meshes with boundaries are refused"));

@@ -10,6 +10,7 @@
 #include "family/parameter_ops.hpp"
 #include "family/stencil_sum.hpp"
 #include "boundary_patch.hpp"
+#include "sector_patch.hpp"
 #include "mesh/polygon_links.hpp"
 #include "triangle_steps.hpp"
 
@@ -37,15 +38,26 @@ namespace {
 // a copy of a vertex on the mesh's own boundary) has no surface: where it has
 // no regular patch it gets a placeholder that is never evaluated.
 bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, std::vector<TrianglePatch>& patches,
-                    PhantomPoints& phantoms, const std::vector<char>& no_surface) {
+                    PhantomPoints& phantoms, const std::vector<char>& no_surface, const std::vector<SectorRule>& rules) {
   patches.clear();
   patches.reserve(topo.faces());
   phantoms = PhantomPoints{};
   phantoms.first = topo.vertices();
   for (std::size_t f = 0; f < topo.faces(); ++f) {
     const bool at_boundary = topo.touches_boundary(f);
+    // A corner on the boundary in other than three faces, or a corner: the sector's patch (sector_patch.hpp).
+    int sector_corner = -1, sectors = 0;
+    if (at_boundary && !topo.touches_marked(f, no_surface))
+      for (int c = 0; c < 3; ++c) {
+        const int v = topo.vertex(f, c);
+        if (loop_sector_vertex(topo, v, rules[static_cast<std::size_t>(v)])) ++sectors, sector_corner = c;
+      }
     std::optional<TrianglePatch> patch;
-    if (at_boundary || (topo.has_boundary() && regular_loop_vertex(topo, topo.vertex(f, 0)) &&
+    if (sectors > 1) {
+      return false;
+    } else if (sectors == 1) {
+      patch = loop_sector_patch(topo, f, sector_corner, rules, tables);
+    } else if (at_boundary || (topo.has_boundary() && regular_loop_vertex(topo, topo.vertex(f, 0)) &&
                         regular_loop_vertex(topo, topo.vertex(f, 1)) && regular_loop_vertex(topo, topo.vertex(f, 2)))) {
       patch = regular_boundary_patch(topo, f, tables, phantoms);
       if (!patch && topo.touches_marked(f, no_surface)) {
@@ -70,7 +82,8 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
 // `none` (`no_surface`) the faces at the mesh's own boundary have no surface,
 // so any vertex will do there.
 void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const PolygonLinks& uncut,
-                         const std::vector<char>& no_surface, const std::string& scheme, ValenceCheck& valences) {
+                         const std::vector<char>& no_surface, const std::string& scheme, const TriangleTables& tables,
+                         ValenceCheck& valences) {
   const std::string plan = " (docs/runtime.md, \"Loop with boundaries\")";
   for (std::size_t v = 0; v < cut.mesh.vertex_count; ++v) {
     const int k = links.valence[v];
@@ -89,16 +102,23 @@ void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const P
     }
     if (!no_surface.empty() && no_surface[v]) continue;  // no surface there: any will do
     const bool own = uncut.boundary[static_cast<std::size_t>(cut.origin[v])] != 0;
-    if (cut.rule[v] != SectorRule::Crease)
-      throw MeshError(who + " is a corner (a sharp vertex, three or more boundary or infinitely sharp edges, or with "
-                            "edge-and-corner a boundary vertex in one face); " + scheme +
-                      " has no patches for corners on a boundary or crease yet" + plan);
-    if (k != 3)
-      throw MeshError(who + " is on " + (own ? "the boundary in " : "an infinitely sharp crease with ") + std::to_string(k) +
-                      (k == 1 ? " face" : " faces") + (own ? "" : " on one side") + ": " + scheme +
-                      " meshes are evaluated where every boundary vertex is in three faces (a tube, an annulus) and every "
-                      "vertex on an infinitely sharp crease has three faces each side (a crease straight through regular "
-                      "vertices); the patches for other numbers of faces are not built yet" + plan);
+    if (cut.rule[v] == SectorRule::Crease && k == 3) continue;  // the regular boundary patch
+    // A boundary sector's patch (sector_patch.hpp), every face of it from the tables.
+    for (int p = 0; p < k; ++p) {
+      const SectorKey key{cut.rule[v], k, p};
+      if (tables.sector_code(key)) continue;
+      const std::string what =
+          cut.rule[v] == SectorRule::Corner
+              ? " is a corner in " + std::to_string(k) + (k == 1 ? " face" : " faces") +
+                    " (a sharp vertex, three or more boundary or infinitely sharp edges, or with edge-and-corner a "
+                    "boundary vertex in one face)"
+              : " is on " + std::string(own ? "the boundary in " : "an infinitely sharp crease with ") + std::to_string(k) +
+                    (k == 1 ? " face" : " faces") + (own ? "" : " on one side");
+      throw MeshError(who + what + ", and the " + scheme + " tables hold no patch for it: " +
+                      (tables.has_sectors() ? "they hold boundary vertices in up to as many faces as their largest "
+                                              "valence; regenerate them with stencilgen --valence 3-" + std::to_string(std::max(k, 6))
+                                            : "tables from before version 7 hold none; regenerate them with this stencilgen"));
+    }
   }
 }
 
@@ -114,6 +134,7 @@ struct PatchMesh {
   std::optional<SharpCut> cut;
   std::optional<TriangleTopology> cut_topology;
   std::vector<char> no_surface;  // per vertex of the cut mesh (no_surface_vertices)
+  std::vector<SectorRule> rules;  // per vertex of the cut mesh: crease (or none inside), corner, dart, cone
 
   PatchMesh(const Connectivity& mesh, const TriangleTopology& topo, const LevelSharpness& sharpness, bool edge_and_corner,
             bool no_boundary_surface) {
@@ -121,9 +142,17 @@ struct PatchMesh {
       cut = cut_along_sharp_edges(mesh, link_polygons(mesh, true), sharpness, edge_and_corner);
       cut_topology.emplace(cut->mesh, link_polygons(cut->mesh, true));
       no_surface = no_surface_vertices(no_boundary_surface, topo, *cut);
-    } else if (no_boundary_surface) {
-      no_surface.resize(topo.vertices());
-      for (std::size_t v = 0; v < topo.vertices(); ++v) no_surface[v] = topo.on_boundary(static_cast<int>(v)) ? 1 : 0;
+      rules = cut->rule;
+    } else {
+      if (no_boundary_surface) {
+        no_surface.resize(topo.vertices());
+        for (std::size_t v = 0; v < topo.vertices(); ++v) no_surface[v] = topo.on_boundary(static_cast<int>(v)) ? 1 : 0;
+      }
+      // Without infinitely sharp features only edge-and-corner makes corners (boundary vertices in one face).
+      rules.assign(topo.vertices(), SectorRule::Crease);
+      if (edge_and_corner)
+        for (std::size_t v = 0; v < topo.vertices(); ++v)
+          if (topo.on_boundary(static_cast<int>(v)) && topo.valence(static_cast<int>(v)) == 1) rules[v] = SectorRule::Corner;
     }
   }
   const TriangleTopology& topology(const TriangleTopology& uncut) const { return cut_topology ? *cut_topology : uncut; }
@@ -215,7 +244,7 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
     ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 6);
     const SharpCut input = cut_along_sharp_edges(mesh, links, sharpness, edge_and_corner);
     check_loop_vertices(input, input.cut ? link_polygons(input.mesh, true) : links, links,
-                        no_surface_vertices(no_boundary_surface, topo, input), tables.scheme(), valences);
+                        no_surface_vertices(no_boundary_surface, topo, input), tables.scheme(), t, valences);
     valences.finish();
   }
   const bool sqrt3 = t.refinement() == TriangleRefinement::Sqrt3;
@@ -242,7 +271,7 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
   while (sharpness.has_semi_sharp()) step_once();
   const int before_isolation = out.steps;
   auto patch_mesh = std::make_unique<PatchMesh>(out.mesh, topo, sharpness, edge_and_corner, no_boundary_surface);
-  while (!gather_patches(patch_mesh->topology(topo), t, out.patches, out.phantoms, patch_mesh->no_surface)) {
+  while (!gather_patches(patch_mesh->topology(topo), t, out.patches, out.phantoms, patch_mesh->no_surface, patch_mesh->rules)) {
     if (out.steps - before_isolation == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices are still too close " +
                       std::string(patch_mesh->cut ? "to each other or to a boundary or crease "
@@ -391,6 +420,14 @@ Point TriangleFamily::vertex_normal(const TrianglePatch& patch, double det, cons
   // to the patch turns the orientation (det: the Jacobian's determinant).
   const std::vector<double>* tu = tables_.tangent_u(patch.valence);
   const std::vector<double>* tv = tables_.tangent_v(patch.valence);
+  if ((!tu || !tv) && TriangleTables::is_sector_code(patch.valence)) {
+    const SectorKey& s = tables_.sector(patch.valence);
+    throw EvaluationError(s.rule == SectorRule::Corner
+                              ? "a corner has no tangent plane, so there is no normal at it"
+                              : "Loop's boundary rules give no tangent plane at a boundary vertex in " + std::to_string(s.faces) +
+                                    " faces that the spectrum of its subdivision shows (docs/runtime.md), so there is no "
+                                    "normal at it");
+  }
   if (!tu || !tv || tu->size() != patch.points.size())
     throw EvaluationError("the tables hold no tangent stencils at valence " + std::to_string(patch.valence) +
                           ", so there is no normal at the extraordinary vertex (.sgt tables from before version 4: "

@@ -36,6 +36,10 @@ std::array<double, 2> cell_corner(int m, int cell, int k) {
 
 bool TriangleFamily::hull_bounds() const {
   checked_descent();
+  // A boundary sector's regular cells reach the phantoms beyond the boundary
+  // (negative weights): its control points need not bound its surface.
+  for (const TrianglePatch& patch : patches_)
+    if (TriangleTables::is_sector_code(patch.valence) && !tables_.sector_nonnegative(patch.valence)) return false;
   return tables_.children_nonnegative();
 }
 

@@ -1,0 +1,140 @@
+// Loop meshes whose boundary vertices are in other than three faces, and
+// corners (the tables' boundary sectors, triangle/sector_patch.hpp), against
+// OpenSubdiv's Bfr with the same boundary option and tags: open triangulated
+// grids (corners in one and two faces), fans of 1..8 faces round one vertex, a
+// tube whose rims have vertices in two and four faces, an icosahedron with
+// faces removed (boundary vertices in four faces, valence 5 inside), corners
+// tagged infinitely sharp on a rim.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "cli.hpp"
+#include "loop_bfr_difference.hpp"
+#include "loop_meshes.hpp"
+#include "runtime_api.hpp"
+#include "runtime_checks.hpp"
+#include "stencil_runtime/closest_point.hpp"
+#include "stencil_runtime/tessellation.hpp"
+
+using namespace stencil_runtime;
+using namespace test_runtime;
+
+namespace {
+
+std::shared_ptr<const Tables> loop_tables() { return Tables::load(generated_table("loop", "--valence 3-8 --n 1-8", "sgt").string()); }
+
+// A grid of w x h quads, each split along its (0,0)-(1,1) diagonal, gently bent.
+Mesh open_grid(int w, int h) {
+  Mesh m;
+  for (int j = 0; j <= h; ++j)
+    for (int i = 0; i <= w; ++i)
+      m.positions.push_back({double(i) + 0.1 * std::sin(1.7 * j), double(j) + 0.1 * std::cos(2.3 * i), 0.3 * std::sin(0.9 * i + 0.4 * j * j)});
+  auto at = [&](int i, int j) { return j * (w + 1) + i; };
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      m.face_sizes.insert(m.face_sizes.end(), {3, 3});
+      m.face_vertices.insert(m.face_vertices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
+}
+
+// k triangles round vertex 0, open: its rim vertices in one or two faces.
+Mesh fan(int k) {
+  Mesh m;
+  m.positions.push_back({0, 0, 0.4});
+  const double step = (k <= 5 ? 1.0 : 5.5 / k) * M_PI / 3;
+  for (int j = 0; j <= k; ++j) m.positions.push_back({std::cos(j * step), std::sin(j * step), 0.2 * std::sin(3.0 * j)});
+  for (int j = 0; j < k; ++j) {
+    m.face_sizes.push_back(3);
+    m.face_vertices.insert(m.face_vertices.end(), {0, j + 1, j + 2});
+  }
+  return m;
+}
+
+std::pair<double, double> difference(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, BoundaryInterpolation b,
+                                     const std::vector<std::pair<int, float>>& corners = {}) {
+  SharpFeatures f;
+  f.boundary(b);
+  for (const auto& [v, s] : corners) f.corner(v, s);
+  return loop_bfr_difference(tables, mesh, f);
+}
+
+}  // namespace
+
+TEST_CASE("Loop sectors: open grids equal OpenSubdiv's Bfr, edge-only and edge-and-corner", "[runtime][boundaries][loop][opensubdiv]") {
+  const auto tables = loop_tables();
+  for (const auto& [w, h] : {std::pair{3, 2}, {5, 4}, {1, 1}})
+    for (const auto b : {BoundaryInterpolation::EdgeOnly, BoundaryInterpolation::EdgeAndCorner}) {
+      INFO(w << " x " << h << (b == BoundaryInterpolation::EdgeOnly ? ", edge-only" : ", edge-and-corner"));
+      const auto [positions, derivatives] = difference(tables, open_grid(w, h), b);
+      CHECK(positions < 1e-14);
+      CHECK(derivatives < 1e-13);
+    }
+}
+
+TEST_CASE("Loop sectors: fans of 1..8 faces round one vertex equal Bfr", "[runtime][boundaries][loop][opensubdiv]") {
+  const auto tables = loop_tables();
+  for (int k = 1; k <= 8; ++k)
+    for (const auto b : {BoundaryInterpolation::EdgeOnly, BoundaryInterpolation::EdgeAndCorner}) {
+      INFO(k << " faces" << (b == BoundaryInterpolation::EdgeOnly ? ", edge-only" : ", edge-and-corner"));
+      const auto [positions, derivatives] = difference(tables, fan(k), b);
+      CHECK(positions < 1e-14);
+      CHECK(derivatives < 1e-13);
+    }
+}
+
+TEST_CASE("Loop sectors: a tube with rim vertices in two and four faces equals Bfr", "[runtime][boundaries][loop][opensubdiv]") {
+  const auto tables = loop_tables();
+  const Mesh mesh = loop_meshes::with_flip(loop_meshes::triangle_tube(7, 4), 7, 0);
+  for (const auto b : {BoundaryInterpolation::EdgeOnly, BoundaryInterpolation::EdgeAndCorner}) {
+    const auto [positions, derivatives] = difference(tables, mesh, b);
+    CHECK(positions < 1e-14);
+    CHECK(derivatives < 1e-13);
+  }
+}
+
+TEST_CASE("Loop sectors: infinitely sharp corners on a rim are corner sectors equal to Bfr", "[runtime][boundaries][loop][opensubdiv]") {
+  const auto tables = loop_tables();
+  // Rim vertices in three faces tagged as corners (sharpness 10: infinite), and one of sharpness 2 (semi-sharp).
+  const Mesh mesh = loop_meshes::triangle_tube(8, 3);
+  const auto [positions, derivatives] = difference(tables, mesh, BoundaryInterpolation::EdgeOnly, {{1, 10.0f}, {5, 10.0f}, {27, 10.0f}, {30, 2.0f}});
+  CHECK(positions < 1e-14);
+  CHECK(derivatives < 1e-13);
+}
+
+TEST_CASE("Loop sectors: tessellations with random rates have one rim per boundary loop and the right Euler characteristic",
+          "[runtime][boundaries][loop][tessellation]") {
+  const auto tables = loop_tables();
+  std::mt19937 rng(20261127u);
+  const struct {
+    const char* name;
+    Mesh mesh;
+    std::size_t rims;
+    int genus;
+  } cases[] = {{"grid 5x4", open_grid(5, 4), 1, 0},
+               {"fan of 7", fan(7), 1, 0},
+               {"tube with rim vertices in two and four faces", loop_meshes::with_flip(loop_meshes::triangle_tube(7, 4), 7, 0), 2, 0}};
+  for (const auto& c : cases)
+    for (const auto b : {BoundaryInterpolation::EdgeOnly, BoundaryInterpolation::EdgeAndCorner}) {
+      MeshFeatures features;
+      features.boundary = b;
+      const Surface surface(SurfaceTopology::create(tables, c.mesh.vertex_count(), c.mesh.face_sizes, c.mesh.face_vertices, {}, features),
+                            c.mesh.positions);
+      for (int trial = 0; trial < 3; ++trial) {
+        std::vector<int> rates(c.mesh.face_count());
+        for (int& r : rates) r = std::uniform_int_distribution<int>(1, 8)(rng);
+        INFO(c.name << ", trial " << trial);
+        check_rimmed_manifold(tessellate(surface, rates), c.rims, c.genus);
+      }
+    }
+}
+
+TEST_CASE("Loop sectors: closest points are refused where a sector's control points do not bound its surface",
+          "[runtime][boundaries][loop][distance]") {
+  const auto tables = loop_tables();
+  const Mesh mesh = open_grid(3, 2);
+  const Surface surface(SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices), mesh.positions);
+  CHECK_THROWS_WITH(ClosestPointQuery(surface), Catch::Contains("boundary vertices in other than three faces"));
+}
