@@ -114,6 +114,12 @@ std::vector<Case> crease_cases() {
     out.push_back(c);
   }
   {
+    // Corners where it meets the rims: sectors of four faces on one side and two on the other.
+    Case c{"tube 8x4 with a meridian from rim to rim, edge-only", triangle_tube(8, 4), {}};
+    for (int j = 0; j < 4; ++j) c.features.crease(j * 8 + 3, (j + 1) * 8 + 3, 10);
+    out.push_back(c);
+  }
+  {
     Case c{"tube 8x4 with a ring one row from the rim, none", triangle_tube(8, 4), {}};
     c.features.boundary(BoundaryInterpolation::None);
     ring(c.features, 8, 1, 10);

@@ -131,14 +131,12 @@ int main(int argc, char** argv) {
       "(Catmull-Clark, nonpoly, Loop; not sqrt(3)); `smoothtriangles` is Catmull-Clark's triangle rule. Infinitely\n"
       "sharp creases, corners, darts and cone points (10 or more; a cone point is a sharp vertex on no sharp edge:\n"
       "--normal there says it has none) are exact for quad schemes (the patches of the mesh cut along them); Loop:\n"
-      "crease loops straight through regular vertices (three faces each side), the rest refused naming the vertex;\n"
-      "unknown tags are warned about.\n"
-      "Meshes with boundaries (quad schemes; `t interpolateboundary` or --boundary edge-only|edge-and-corner|none):\n"
-      "every boundary vertex, in any number of faces, as OpenSubdiv's rules make it, exactly (tables cover vertices\n"
-      "in up to as many faces as their largest valence); with none the faces at boundary vertices have no surface\n"
-      "(like holes). --normal at a boundary vertex where the rules give no tangent plane says so. Loop: meshes\n"
-      "whose boundary vertices are all in three faces (a tube, an annulus), or any with none; others are refused\n"
-      "naming the vertex.\n\n"
+      "creases and corners exactly, darts and cone points refused naming the vertex; unknown tags are warned about.\n"
+      "Meshes with boundaries (quad schemes and Loop; `t interpolateboundary` or --boundary\n"
+      "edge-only|edge-and-corner|none): every boundary vertex, in any number of faces, as OpenSubdiv's rules make\n"
+      "it, exactly (tables cover vertices in up to as many faces as their largest valence); with none the faces at\n"
+      "boundary vertices have no surface (like holes). --normal at a boundary vertex where the rules give no\n"
+      "tangent plane (a corner; Loop: a boundary vertex in six or more faces) says so.\n\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --face 0 --uv 1/3,1/2\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --batch queries.txt   (lines: F U V)\n"
       "  stencileval --tables tables/nonpoly --mesh meshes/cube.obj --face 0 --uv 0.3,0.7\n"
@@ -148,7 +146,7 @@ int main(int argc, char** argv) {
   std::string tables_spec, mesh_path, uv, batch, face_text;
   double tolerance = 1e-12;
   app.add_option("--tables", tables_spec, "a .sgs or .sgt table file, the directory stencilgen wrote it to, or a directory of exact JSON quad tables")->required();
-  app.add_option("--mesh", mesh_path, "control mesh (.obj): polygons for a quad scheme (closed, or with boundaries: see above), triangles for a triangle scheme (closed; Loop: or with every boundary vertex in three faces)")->required();
+  app.add_option("--mesh", mesh_path, "control mesh (.obj): polygons for a quad scheme (closed, or with boundaries: see above), triangles for a triangle scheme (closed; Loop: or with boundaries)")->required();
   app.add_option("--face", face_text, "face number, from 0 in file order");
   app.add_option("--uv", uv, "parameters U,V: exact rationals (1/3,1/2) or decimals (0.3,0.7)");
   app.add_option("--tolerance", tolerance,

@@ -48,11 +48,10 @@ int main(int argc, char** argv) {
       "output's boundaries); semi-sharp creases and corners (`t crease`, `t corner`, sharpness below 10, and\n"
       "`t creasemethod chaikin`) and `t smoothtriangles` (Catmull-Clark) as in OpenSubdiv; the output stays closed\n"
       "along creases. Infinitely sharp creases, corners, darts and cone points (10 or more) too, for quad schemes; Loop:\n"
-      "crease loops straight through regular vertices (three faces each side), the rest refused naming the vertex.\n"
-      "Meshes with boundaries (quad schemes): every boundary vertex, in any number of faces, with --boundary\n"
+      "creases and corners, darts and cone points refused naming the vertex.\n"
+      "Meshes with boundaries (quad schemes and Loop): every boundary vertex, in any number of faces, with --boundary\n"
       "edge-only (the default), edge-and-corner (or `t interpolateboundary 1/0/0 1`: corners in one face stay put)\n"
-      "or none (the faces at boundary vertices are left out: no surface, like holes). Loop: meshes whose boundary\n"
-      "vertices are all in three faces (a tube, an annulus), or any with none; others are refused naming the vertex.\n"
+      "or none (the faces at boundary vertices are left out: no surface, like holes).\n"
       "The output reaches the surface's edge: its rim is the limit curve along the boundary (and round holes).\n\n"
       "  stenciltess --tables tables/nonpoly --mesh meshes/chess-piece.obj --rate 8 --out piece.ply\n"
       "  stenciltess --tables tables/nonpoly --mesh meshes/torus-3-5.obj --tolerance 1e-3 --out torus.obj\n"
@@ -66,7 +65,7 @@ int main(int argc, char** argv) {
   int rate = 0, threads = 0, width = 1920;
   double tolerance = 0, pixels = 0, fov = 60;
   app.add_option("--tables", tables_spec, "a .sgs or .sgt table file, the directory stencilgen wrote it to, or a directory of exact JSON quad tables")->required();
-  app.add_option("--mesh", mesh_path, "control mesh (.obj): polygons for a quad scheme (closed, or with boundaries: see above), triangles for a triangle scheme (closed; Loop: or with every boundary vertex in three faces)")->required();
+  app.add_option("--mesh", mesh_path, "control mesh (.obj): polygons for a quad scheme (closed, or with boundaries: see above), triangles for a triangle scheme (closed; Loop: or with boundaries)")->required();
   app.add_option("--out", out, "output .obj (text) or .ply (binary), written whole or not at all; with --frames a pattern such as out/f%04d.ply")->required();
   auto* r1 = app.add_option("--rate", rate, "uniform rate N (1..4096) for every face");
   auto* r2 = app.add_option("--rates", rates_file, "file with one rate per face (file order)");
