@@ -16,7 +16,9 @@
 // triangulated torus against the tube of the same grid (every rim vertex in
 // three faces: regular boundary patches with phantom points), and against the
 // same torus with every 8th ring of edges infinitely sharp (the patches of the
-// mesh cut along them: regular boundary patches on both sides of each ring).
+// mesh cut along them: regular boundary patches on both sides of each ring),
+// and against a flat sheet of the same grid open on all four sides (its
+// corners in one and two faces: boundary sectors, .sgt version 7).
 // Usage: bench_boundaries [CATMULL-CLARK.sgs|-] [LOOP.sgt]
 #include <algorithm>
 #include <chrono>
@@ -53,6 +55,21 @@ Mesh ring_grid(int around, int rows, bool closed) {
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < around; ++i) {
       auto at = [&](int x, int y) { return (y % rings) * around + (x % around); };
+      m.face_sizes.push_back(4);
+      m.face_vertices.insert(m.face_vertices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
+}
+
+// A flat grid of w x h quads, gently waved, open on all four sides.
+Mesh open_sheet(int w, int h) {
+  Mesh m;
+  for (int j = 0; j <= h; ++j)
+    for (int i = 0; i <= w; ++i)
+      m.positions.push_back({8.0 * i / w, 8.0 * j / w, 0.2 * std::sin(0.3 * i) * std::cos(0.2 * j)});
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      auto at = [&](int x, int y) { return y * (w + 1) + x; };
       m.face_sizes.push_back(4);
       m.face_vertices.insert(m.face_vertices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
     }
@@ -123,6 +140,8 @@ int run(int argc, char** argv) {
                      triangulated(ring_grid(256, 112, false)), loop, {}});
     pairs.push_back({"Loop: torus / torus with 14 sharp rings, 256x112", triangulated(ring_grid(256, 112, true)),
                      triangulated(ring_grid(256, 112, true)), loop, sharp_rings(256, 112, 8)});
+    pairs.push_back({"Loop: torus / open sheet 256x112, triangulated", triangulated(ring_grid(256, 112, true)),
+                     triangulated(open_sheet(256, 112)), loop, {}});
   }
   std::printf("| meshes | mesh | faces | rate | threads | triangles | ours (M tri/s) | ours / closed | Bfr (M tri/s) | Bfr / closed | positions update (ms) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <random>
+#include <tuple>
 
 #include "cli.hpp"
 #include "loop_bfr_difference.hpp"
@@ -131,10 +132,39 @@ TEST_CASE("Loop sectors: tessellations with random rates have one rim per bounda
     }
 }
 
-TEST_CASE("Loop sectors: closest points are refused where a sector's control points do not bound its surface",
+TEST_CASE("Loop sectors: closest points lie on the surface and no farther than dense exact samples",
           "[runtime][boundaries][loop][distance]") {
   const auto tables = loop_tables();
-  const Mesh mesh = open_grid(3, 2);
-  const Surface surface(SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices), mesh.positions);
-  CHECK_THROWS_WITH(ClosestPointQuery(surface), Catch::Contains("boundary vertices in other than three faces"));
+  std::mt19937 rng(29);
+  for (const auto& [name, mesh, b] : {std::tuple{"grid 4x3, edge-only", open_grid(4, 3), BoundaryInterpolation::EdgeOnly},
+                                      std::tuple{"grid 4x3, edge-and-corner", open_grid(4, 3), BoundaryInterpolation::EdgeAndCorner},
+                                      std::tuple{"fan of 7", fan(7), BoundaryInterpolation::EdgeOnly}}) {
+    MeshFeatures features;
+    features.boundary = b;
+    const Surface surface(SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, {}, features),
+                          mesh.positions);
+    const double size = extent(mesh);
+    // Dense exact samples: every node at rate 12 of every face (the rim and the sector vertices included).
+    std::vector<Point> samples;
+    Point lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (std::size_t f = 0; f < mesh.face_count(); ++f)
+      for (long j = 0; j <= 12; ++j)
+        for (long i = 0; i + j <= 12; ++i) {
+          samples.push_back(surface.evaluate(f, grid(i, j, 12)));
+          for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], samples.back()[k]), hi[k] = std::max(hi[k], samples.back()[k]);
+        }
+    const ClosestPointQuery query(surface);
+    for (int k = 0; k < 150; ++k) {
+      Point q;
+      for (int c = 0; c < 3; ++c) q[c] = std::uniform_real_distribution<double>(lo[c] - 0.3 * size, hi[c] + 0.3 * size)(rng);
+      const ClosestPoint c = query.find(q);
+      REQUIRE(c.found);
+      double nearest = 1e300;
+      for (const Point& s : samples) nearest = std::min(nearest, distance(q, s));
+      INFO(name << ", query " << k);
+      CHECK(c.distance <= nearest + 1e-9 * size);
+      CHECK(distance(surface.evaluate(c.face, c.u, c.v, 1e-12).point, c.point) < 1e-9 * size);
+      CHECK(std::abs(distance(q, c.point) - c.distance) < 1e-9 * size);
+    }
+  }
 }

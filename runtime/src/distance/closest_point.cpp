@@ -130,9 +130,7 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
   if (!surface.has_positions()) throw EvaluationError("closest points: the surface has no control positions yet");
   if (!family->hull_bounds())
     throw EvaluationError("closest points: the tables of '" + topology->tables().scheme() +
-                          "' have negative subdivision weights (for Loop: the patches at boundary vertices in other than "
-                          "three faces and at corners, whose cells reach beyond the boundary), so control points do not "
-                          "bound the surface");
+                          "' have negative subdivision weights, so control points do not bound the surface");
   prepared = surface.prepared_positions();
   const std::size_t faces = topology->prepared_face_count();
   if (faces > 0xffffffffu) throw EvaluationError("closest points: more than 2^32 prepared faces");

@@ -108,7 +108,13 @@ void TriangleTables::read_sectors(detail::BinaryReader& r, const std::function<s
       if (child.valence != (own ? static_cast<int>(code) : 6) || child.region != 0 || child.rotation != 0 ||
           child.rows.rows() != (own ? points : regular_points))
         r.fail(where + ": cell " + std::to_string(c) + " is not " + (own ? "the sector's own patch" : "a regular patch"));
-      for (double w : child.rows.weights) sector.nonnegative = sector.nonnegative && w >= 0;
+      for (std::size_t r = 0; r < child.rows.rows(); ++r) {
+        double negative = 0;
+        for (std::size_t e = child.rows.offsets[r]; e != child.rows.offsets[r + 1]; ++e)
+          negative += std::max(0.0, -child.rows.weights[e]);
+        if (own && negative > 0) sector.spread = INFINITY;
+        else if (!own) sector.spread = std::max(sector.spread, negative);
+      }
     }
     Valence& v = *sector.data;
     v.valence = static_cast<int>(code);
@@ -368,9 +374,9 @@ const SectorKey& TriangleTables::sector(int code) const {
   return sectors_[static_cast<std::size_t>(code - static_cast<int>(kSectorCodeBase))].key;
 }
 
-bool TriangleTables::sector_nonnegative(int code) const {
+double TriangleTables::sector_spread(int code) const {
   sector(code);  // checks the code
-  return sectors_[static_cast<std::size_t>(code - static_cast<int>(kSectorCodeBase))].nonnegative;
+  return sectors_[static_cast<std::size_t>(code - static_cast<int>(kSectorCodeBase))].spread;
 }
 
 // A sector's stencils at every stored rate n, on the grid 1/(3n) (nodes, up

@@ -119,9 +119,14 @@ class TriangleTables {
   static bool is_sector_code(int valence) { return valence >= static_cast<int>(kSectorCodeBase); }
   const SectorKey& sector(int code) const;
   bool has_sectors() const { return !sectors_.empty(); }
-  // Whether every weight of the sector's cells is >= 0 (not so where its
-  // regular cells reach the phantoms beyond the boundary).
-  bool sector_nonnegative(int code) const;
+  // How far the sector's surface may reach beyond its control points' box:
+  // its child at B has weights >= 0 (its points stay in their hull), and each
+  // regular cell's points are affine combinations of the sector's whose
+  // negative weights (the phantoms beyond the boundary) sum to at most this
+  // much, so every cell's points, and so its surface (the box spline's basis
+  // is >= 0), lie in the box widened by this times its extent on each side.
+  // Infinite where the child at B has a negative weight.
+  double sector_spread(int code) const;
 
   // The same lookups with the valence and rate resolved once (a face's
   // tessellation asks for n^2 stencils of one grid).
@@ -169,7 +174,7 @@ class TriangleTables {
   struct Sector {
     SectorKey key;
     std::vector<double> limit;  // W(0) over the layout
-    bool nonnegative = true;
+    double spread = 0;          // sector_spread
     std::unique_ptr<std::once_flag> once = std::make_unique<std::once_flag>();
     // The layout, cells and tangents as a valence's; the region's weights and
     // index are filled on first use (expand_sector).

@@ -64,8 +64,19 @@ class TriangleFamily final : public Family {
   bool derivatives(const SubPatch& in, double& x, double& y, Derivatives& out) const override;
   const AffineParameters* affine_parameters(int kind) const override;
   const PolynomialPatch* polynomial_patch(int kind) const override;
+  // Kinds up to max_kind are valences and regions; a Loop boundary sector's
+  // kind is its code (TriangleTables::sector_code), beyond them, with no
+  // affine enclosure or convexity bound. Its sub-patches' points are its
+  // layout's followed by the eight corners of a box that holds its surface
+  // (TriangleTables::sector_spread), so that their hull bounds it.
   int max_kind() const override { return kind_of(limits::kMaxValence, 3); }
-  static int kind_of(int valence, int region) { return valence + (limits::kMaxValence + 1) * region; }
+  static int kind_of(int valence, int region) {
+    return TriangleTables::is_sector_code(valence) ? valence : valence + (limits::kMaxValence + 1) * region;
+  }
+  static void kind_parts(int kind, int& valence, int& region) {
+    if (TriangleTables::is_sector_code(kind)) valence = kind, region = 0;
+    else valence = kind % (limits::kMaxValence + 1), region = kind / (limits::kMaxValence + 1);
+  }
   void plan(TessellationLayout& layout, const detail::RangeRunner& run) const override;
   Point edge_node(std::size_t prepared_face, int corner, int t, int n, const Point* prepared) const override;
   std::array<double, 2> edge_node_parameter(std::size_t prepared_face, int corner, int t, int n) const override;
@@ -100,6 +111,8 @@ class TriangleFamily final : public Family {
   // A stored rate's stencil at the parameter, without descent.
   bool held_stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const;
   const TrianglePatchDescent& checked_descent() const;
+  // A sub-patch's control points over its kind's layout (a sector's without its box), and its kind's parts.
+  std::vector<Point> layout_points(const SubPatch& in, int& valence, int& region) const;
   // The normal at an extraordinary vertex from the tables' tangent stencils;
   // det: the sign of the face-to-patch map's orientation.
   Point vertex_normal(const TrianglePatch& patch, double det, const Point* prepared) const;

@@ -36,11 +36,37 @@ std::array<double, 2> cell_corner(int m, int cell, int k) {
 
 bool TriangleFamily::hull_bounds() const {
   checked_descent();
-  // A boundary sector's regular cells reach the phantoms beyond the boundary
-  // (negative weights): its control points need not bound its surface.
+  // A boundary sector's points bound its surface with the box appended
+  // (append_sector_box), where its child at B has no negative weight.
   for (const TrianglePatch& patch : patches_)
-    if (TriangleTables::is_sector_code(patch.valence) && !tables_.sector_nonnegative(patch.valence)) return false;
+    if (TriangleTables::is_sector_code(patch.valence) && !std::isfinite(tables_.sector_spread(patch.valence))) return false;
   return tables_.children_nonnegative();
+}
+
+namespace {
+
+// After a boundary sector's layout points: the eight corners of their box
+// widened by `spread` times its extent on each side, which holds the
+// sector's surface (TriangleTables::sector_spread).
+void append_sector_box(std::vector<Point>& points, double spread) {
+  Point lo = points.front(), hi = lo;
+  for (const Point& p : points)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  for (int k = 0; k < 3; ++k) {
+    // Rounding: the points are sums of a few dozen products; widen by a little more than it can add.
+    const double extent = hi[k] - lo[k], slack = 1e-12 * (std::fabs(lo[k]) + std::fabs(hi[k]) + extent);
+    lo[k] -= spread * extent + slack, hi[k] += spread * extent + slack;
+  }
+  for (int c = 0; c < 8; ++c) points.push_back({(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]});
+}
+
+}  // namespace
+
+std::vector<Point> TriangleFamily::layout_points(const SubPatch& in, int& valence, int& region) const {
+  kind_parts(in.kind, valence, region);
+  std::vector<Point> points = in.points;
+  if (TriangleTables::is_sector_code(valence)) points.resize(tables_.layout(valence).size());  // without the box
+  return points;
 }
 
 void TriangleFamily::root(std::size_t prepared_face, const Point* prepared, SubPatch& out) const {
@@ -48,17 +74,21 @@ void TriangleFamily::root(std::size_t prepared_face, const Point* prepared, SubP
   out.face = prepared_face;
   out.kind = kind_of(patch.valence, patch.region);
   gather_points(patch.points, prepared, out.points);
+  if (TriangleTables::is_sector_code(patch.valence)) append_sector_box(out.points, tables_.sector_spread(patch.valence));
   out.domain = SubDomain::unit(true);
 }
 
 int TriangleFamily::split(const SubPatch& in, SubPatch* children) const {
   checked_descent();
-  const int m = tables_.dilation(), valence = in.kind % (limits::kMaxValence + 1), region = in.kind / (limits::kMaxValence + 1);
+  const int m = tables_.dilation();
+  int valence = 0, region = 0;
+  kind_parts(in.kind, valence, region);
   const std::vector<TriangleChild>& cells = tables_.children(valence, region);
   for (std::size_t c = 0; c < cells.size(); ++c) {
     const TriangleChild& cell = cells[c];
     SubPatch& out = children[c];
-    apply(cell.rows, in.points, out.points);
+    apply(cell.rows, in.points, out.points);  // the rows' columns are the layout's: a sector's box is not read
+    if (TriangleTables::is_sector_code(cell.valence)) append_sector_box(out.points, tables_.sector_spread(cell.valence));
     out.face = in.face;
     out.kind = kind_of(cell.valence, cell.region);
     // The kind's corner k is the cell's corner rotation + k.
@@ -76,10 +106,10 @@ int TriangleFamily::split(const SubPatch& in, SubPatch* children) const {
 }
 
 Approximation TriangleFamily::evaluate(const SubPatch& in, double x, double y, double tolerance) const {
-  std::vector<Point> points = in.points;
+  int valence = 0, region = 0;
+  std::vector<Point> points = layout_points(in, valence, region);
   auto l = in.domain.local(x, y);
   in.domain.clamp_local(l[0], l[1]);
-  const int valence = in.kind % (limits::kMaxValence + 1), region = in.kind / (limits::kMaxValence + 1);
   // Exact fractions where the doubles are (the descent then lands on the
   // tables' grids exactly). sqrt(3)'s steps scale by 3 and never shrink a
   // binary fraction's denominator: unless a stored grid holds it already, its
@@ -94,7 +124,7 @@ Approximation TriangleFamily::evaluate(const SubPatch& in, double x, double y, d
     try {
       return checked_descent().evaluate(valence, region, points, *fx, *fy, tolerance);
     } catch (const ParameterOverflow&) {
-      points = in.points;
+      points = layout_points(in, valence, region);
     }
   }
   return checked_descent().evaluate(valence, region, points, l[0], l[1], tolerance);
@@ -106,11 +136,11 @@ bool TriangleFamily::derivatives(const SubPatch& in, double& x, double& y, Deriv
   auto l = in.domain.local(x, y);
   const bool inside = in.domain.contains_local(l[0], l[1]);
   in.domain.clamp_local(l[0], l[1]);
-  const int valence = in.kind % (limits::kMaxValence + 1), region = in.kind / (limits::kMaxValence + 1);
+  int valence = 0, region = 0;
+  std::vector<Point> points = layout_points(in, valence, region);
   if (valence != 6 && l[0] == 0 && l[1] == 0) return false;  // the extraordinary vertex: no parametric derivative
   // The own coordinates carry their derivatives along the patch's (x, y), so the result is along those.
   const auto j = in.domain.inverse_jacobian();
-  std::vector<Point> points = in.points;
   try {
     out = descent.derivatives(valence, region, points, Dual{l[0], j[0], j[1]}, Dual{l[1], j[2], j[3]});
   } catch (const EvaluationError&) {  // within 2^-64 of the extraordinary vertex
