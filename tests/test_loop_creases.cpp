@@ -120,6 +120,15 @@ std::vector<Case> crease_cases() {
     out.push_back(c);
   }
   {
+    // Under `none`: the crease loop's vertices are sectors of the cut mesh (two faces inside, four outside), not of its boundary.
+    Case c{"tube 8x5 with a hexagonal loop inside, none", triangle_tube(8, 5), {}};
+    c.features.boundary(BoundaryInterpolation::None);
+    const int centre = 2 * 8 + 3;
+    const int hexagon[6] = {centre + 1, centre + 9, centre + 8, centre - 1, centre - 9, centre - 8};
+    for (int k = 0; k < 6; ++k) c.features.crease(hexagon[k], hexagon[(k + 1) % 6], 10);
+    out.push_back(c);
+  }
+  {
     Case c{"tube 8x4 with a ring one row from the rim, none", triangle_tube(8, 4), {}};
     c.features.boundary(BoundaryInterpolation::None);
     ring(c.features, 8, 1, 10);

@@ -16,6 +16,7 @@
 #include "loop_meshes.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
+#include "family/family.hpp"
 #include "stencil_runtime/closest_point.hpp"
 #include "stencil_runtime/tessellation.hpp"
 
@@ -167,4 +168,54 @@ TEST_CASE("Loop sectors: closest points lie on the surface and no farther than d
       CHECK(std::abs(distance(q, c.point) - c.distance) < 1e-9 * size);
     }
   }
+}
+
+// The bound the closest-point search relies on: a sector face's surface lies in
+// the hull of its root sub-patch's points (its layout's and the widened box's
+// corners), on fans and grids with random heights. The widened box is a proven
+// bound, not a tight one: in these 159 sector faces the surface stayed in its
+// layout points' box too, and reaches its edges (the same box shrunk by 5% of
+// its extent on each side is left, so the check is not vacuous).
+TEST_CASE("Loop sectors: the widened box holds a sector's surface",
+          "[runtime][boundaries][loop][distance]") {
+  const auto tables = loop_tables();
+  std::mt19937 rng(404);
+  std::uniform_real_distribution<double> noise(-1, 1);
+  double beyond_shrunk = 0, beyond_box = 0;
+  int sector_faces = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    Mesh mesh = trial % 2 ? open_grid(3, 3) : fan(1 + trial % 8);
+    for (Point& p : mesh.positions) p[2] += noise(rng);
+    MeshFeatures features;
+    features.boundary = trial % 4 < 2 ? BoundaryInterpolation::EdgeOnly : BoundaryInterpolation::EdgeAndCorner;
+    const Surface surface(SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, {}, features),
+                          mesh.positions);
+    const Family& family = surface.topology().family();
+    for (std::size_t f = 0; f < surface.topology().prepared_face_count(); ++f) {
+      SubPatch root;
+      family.root(f, surface.prepared_positions().data(), root);
+      if (root.kind <= family.max_kind()) continue;  // not a sector
+      ++sector_faces;
+      const std::size_t layout = root.points.size() - 8;
+      Point lo = root.points[0], hi = lo, wlo = lo, whi = lo;
+      for (std::size_t h = 0; h < root.points.size(); ++h)
+        for (int k = 0; k < 3; ++k) {
+          if (h < layout) lo[k] = std::min(lo[k], root.points[h][k]), hi[k] = std::max(hi[k], root.points[h][k]);
+          wlo[k] = std::min(wlo[k], root.points[h][k]), whi[k] = std::max(whi[k], root.points[h][k]);
+        }
+      for (int j = 0; j <= 24; ++j)
+        for (int i = 0; i + j <= 24; ++i) {
+          const Point p = family.evaluate(root, i / 24.0, j / 24.0, 1e-13).point;
+          for (int k = 0; k < 3; ++k) {
+            const double size = hi[k] - lo[k] + 1e-300;
+            beyond_shrunk = std::max({beyond_shrunk, (lo[k] + 0.05 * size - p[k]) / size, (p[k] - hi[k] + 0.05 * size) / size});
+            beyond_box = std::max({beyond_box, (wlo[k] - p[k]) / size, (p[k] - whi[k]) / size});
+          }
+        }
+    }
+  }
+  INFO(sector_faces << " sector faces; beyond the widened box: " << beyond_box << "; beyond the shrunk layout box: " << beyond_shrunk);
+  CHECK(sector_faces > 100);
+  CHECK(beyond_box <= 0);
+  CHECK(beyond_shrunk > 0);
 }

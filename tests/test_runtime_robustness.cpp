@@ -403,6 +403,20 @@ TEST_CASE("triangle tables' children and regular polynomial are checked at load"
   CHECK_THROWS_WITH(Tables::load((dir / "short.sgt").string()), Catch::Contains("truncated"));
   refused(sectors_at, 1000000, "truncated sector list");
   refused(sectors_at + 5, 0, "sector 0: invalid kind");
+  refused(sectors_at + 5, 3, "a boundary vertex in three faces has the regular patch");
+  // Sector 0 is a boundary vertex in one face: B, e_0, e_1 and three more points (layout from byte 17, 12 bytes each).
+  refused(sectors_at + 13, 100, "a layout of 100 points");
+  refused(sectors_at + 13, 2, "a layout of 2 points");
+  refused(sectors_at + 17 + 12 * 3 + 4, 5, "invalid layout point 3");       // beyond the wedge's third ring
+  refused(sectors_at + 17 + 12 * 1 + 4, 2, "invalid layout point 1");       // e_0 out of place
+  {
+    std::string bytes = body;  // point 4 repeats point 3
+    std::memcpy(bytes.data() + sectors_at + 17 + 12 * 4, bytes.data() + sectors_at + 17 + 12 * 3, 12);
+    write_file(dir / "bad.sgt", with_checksum(bytes));
+    CHECK_THROWS_WITH(Tables::load((dir / "bad.sgt").string()), Catch::Contains("layout point 4 is repeated"));
+  }
+  // After the layout its limit stencil (6 doubles), then its four cells: the first is the sector's own patch.
+  refused(sectors_at + 17 + 12 * 6 + 8 * 6 + 4, 6, "cell 0 is not the sector's own patch");
   // The unchanged file loads, with its subdivision and Loop's quartic basis.
   write_file(dir / "good.sgt", with_checksum(body));
   const auto good = Tables::load((dir / "good.sgt").string());

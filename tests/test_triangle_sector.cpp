@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <thread>
 
 #include "bfr_reference.hpp"
 #include "base/error.hpp"
@@ -238,4 +239,30 @@ TEST_CASE("Loop sector stencils made by the runtime equal the generator's exact 
         }
       }
   CHECK(sectors == 2 * 28 - 3);
+}
+
+// Threads that ask for a sector's stencils at once all get the same ones (the
+// first use makes them, once), equal to those of tables used by one thread.
+TEST_CASE("Loop sector stencils made on first use are made once for threads asking together", "[triangle][sector][tables]") {
+  const auto dir = scratch_dir("loop-sectors-threads");
+  const CliResult r = run_stencilgen("--scheme loop --valence 3-6 --n 2-5 --out " + dir.string() + " -q");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const std::string path = (dir / "loop" / "loop.sgt").string();
+  const auto shared = stencil_runtime::TriangleTables::load(path), alone = stencil_runtime::TriangleTables::load(path);
+  const int code = *shared.sector_code({stencil_runtime::SectorRule::Crease, 5, 2});
+  const std::size_t m = shared.layout(code).size();
+  std::vector<std::vector<double>> seen(8);
+  std::vector<std::thread> threads;
+  for (std::size_t t = 0; t < seen.size(); ++t)
+    threads.emplace_back([&, t] {
+      const auto grid = shared.grid(code, 2 + static_cast<int>(t % 4));
+      const double* w = grid.weights(stencil_runtime::TriangleTables::GridPoint::Up, 0, 1);
+      seen[t].assign(w, w + m);
+    });
+  for (auto& t : threads) t.join();
+  for (std::size_t t = 0; t < seen.size(); ++t) {
+    const double* w = alone.grid(code, 2 + static_cast<int>(t % 4)).weights(stencil_runtime::TriangleTables::GridPoint::Up, 0, 1);
+    CHECK(seen[t] == std::vector<double>(w, w + m));
+  }
 }

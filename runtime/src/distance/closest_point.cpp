@@ -129,8 +129,8 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
   const auto start = std::chrono::steady_clock::now();
   if (!surface.has_positions()) throw EvaluationError("closest points: the surface has no control positions yet");
   if (!family->hull_bounds())
-    throw EvaluationError("closest points: the tables of '" + topology->tables().scheme() +
-                          "' have negative subdivision weights, so control points do not bound the surface");
+    throw EvaluationError("closest points: patches of this surface (the tables of '" + topology->tables().scheme() +
+                          "') have negative subdivision weights, so control points do not bound the surface");
   prepared = surface.prepared_positions();
   const std::size_t faces = topology->prepared_face_count();
   if (faces > 0xffffffffu) throw EvaluationError("closest points: more than 2^32 prepared faces");

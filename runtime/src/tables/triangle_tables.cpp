@@ -54,11 +54,33 @@ void read_children(detail::BinaryReader& r, std::size_t left, int dilation, std:
 
 }  // namespace
 
+// The tangent stencils at a patch's vertex (a valence's, version 4, or a
+// sector's): eigenvalue, residual, then t_u and t_v over `points`.
+static void read_tangents(detail::BinaryReader& r, std::size_t left, std::size_t points, const std::string& where,
+                          TriangleTables::TangentData& out) {
+  out.eigenvalue = r.get<double>();
+  out.residual = r.get<double>();
+  if (points > left / 16) r.fail(where + ": truncated tangent stencils");
+  for (auto* t : {&out.u, &out.v}) {
+    t->resize(points);
+    for (double& x : *t) {
+      x = r.get<double>();
+      if (!std::isfinite(x)) r.fail(where + ": a tangent weight is not finite");
+    }
+  }
+  if (!(out.eigenvalue > 0 && out.eigenvalue < 1) || !std::isfinite(out.residual))
+    r.fail(where + ": invalid tangent eigenvalue or residual");
+}
+
 // Loop's boundary sectors (version 7): per sector its key, wedge layout, limit
-// stencil, cells and tangents; every count, index and kind checked.
+// stencil, cells and tangents; every count, index and kind checked. The
+// generator's layouts reach the wedge's second ring and hold k + 7 points at
+// most; the reader allows the third ring and k + 16.
 void TriangleTables::read_sectors(detail::BinaryReader& r, const std::function<std::size_t()>& left, TriangleTables& t) {
+  constexpr int kMaxRing = 3, kMaxExtraPoints = 16;
   const auto count = r.get<std::uint32_t>();
   if (count > 0 && t.refinement_ != TriangleRefinement::Loop) r.fail("sqrt(3) tables with boundary sectors");
+  if (count > 0 && !t.crease_) r.fail("boundary sectors in tables without a crease rule");
   if (count > left() / 64) r.fail("truncated sector list");
   const Valence* regular = t.find(6);
   const std::size_t regular_points = regular->regions[0].layout.size();
@@ -66,22 +88,26 @@ void TriangleTables::read_sectors(detail::BinaryReader& r, const std::function<s
     Sector sector;
     const auto rule = r.get<std::uint8_t>();
     const auto faces = r.get<std::uint32_t>(), position = r.get<std::uint32_t>();
-    if (rule > 1 || faces < 1 || faces > static_cast<std::uint32_t>(limits::kMaxValence) || position >= faces)
+    if (rule > 1 || faces < 1 || faces > static_cast<std::uint32_t>(limits::kMaxValence) || position >= faces ||
+        (rule == 0 && faces == 3))
       r.fail("sector " + std::to_string(s) + ": invalid kind (rule " + std::to_string(rule) + ", " + std::to_string(faces) +
-             " faces, face " + std::to_string(position) + ")");
+             " faces, face " + std::to_string(position) + "; a boundary vertex in three faces has the regular patch)");
     sector.key = {static_cast<SectorRule>(rule), static_cast<int>(faces), static_cast<int>(position)};
     const std::string where = "sector " + std::to_string(s) + " (" + sector.key.name() + ")";
     if (t.sector_code(sector.key)) r.fail(where + " is stored twice");
     const auto points = r.get<std::uint32_t>();
-    if (points < faces + 2 || points > left() / 20) r.fail(where + ": truncated layout");
+    if (points < faces + 2 || points > faces + kMaxExtraPoints)
+      r.fail(where + ": a layout of " + std::to_string(points) + " points (B and e_0..e_k, and at most " +
+             std::to_string(kMaxExtraPoints) + " more)");
+    if (points > left() / 20) r.fail(where + ": truncated layout");
     Region region;
     const int k = static_cast<int>(faces);
     std::set<std::tuple<int, int, int>> seen;
     for (std::uint32_t h = 0; h < points; ++h) {
       ChartPoint p{r.get<std::int32_t>(), r.get<std::int32_t>(), r.get<std::int32_t>()};
       const bool vertex = p.sector == 0 && p.a == 0 && p.b == 0;
-      const bool inside = p.sector >= 0 && p.sector < k && p.a >= 1 && p.a <= 64 && p.b >= 0 && p.b < p.a;
-      const bool ray = p.sector == k && p.a >= 1 && p.a <= 64 && p.b == 0;
+      const bool inside = p.sector >= 0 && p.sector < k && p.a >= 1 && p.a <= kMaxRing && p.b >= 0 && p.b < p.a;
+      const bool ray = p.sector == k && p.a >= 1 && p.a <= kMaxRing && p.b == 0;
       // B first, then e_0..e_k, as the family gathers them.
       const bool in_place = h == 0 ? vertex : h <= faces + 1 ? (p.a == 1 && p.b == 0 && p.sector == static_cast<int>(h) - 1)
                                                            : (inside || ray) && p.a >= 2;
@@ -100,43 +126,35 @@ void TriangleTables::read_sectors(detail::BinaryReader& r, const std::function<s
       sum += x;
     }
     if (std::abs(sum - 1) > 1e-9) r.fail(where + ": the limit stencil does not sum to 1");
-    const std::uint32_t code = kSectorCodeBase + s;
-    read_children(r, left(), t.dilation(), points, where, region.children, code);
+    // The file names the child at B by format::kTriangleSectorCode + s; the runtime by sector_kind(key).
+    const std::uint32_t file_code = format::kTriangleSectorCode + s;
+    const int code = sector_kind(sector.key);
+    read_children(r, left(), t.dilation(), points, where, region.children, file_code);
     for (std::size_t c = 0; c < region.children.size(); ++c) {
-      const TriangleChild& child = region.children[c];
+      TriangleChild& child = region.children[c];
       const bool own = c == 0;
-      if (child.valence != (own ? static_cast<int>(code) : 6) || child.region != 0 || child.rotation != 0 ||
+      if (child.valence != (own ? static_cast<int>(file_code) : 6) || child.region != 0 || child.rotation != 0 ||
           child.rows.rows() != (own ? points : regular_points))
         r.fail(where + ": cell " + std::to_string(c) + " is not " + (own ? "the sector's own patch" : "a regular patch"));
-      for (std::size_t r = 0; r < child.rows.rows(); ++r) {
+      if (own) child.valence = code;
+      for (std::size_t row = 0; row < child.rows.rows(); ++row) {
         double negative = 0;
-        for (std::size_t e = child.rows.offsets[r]; e != child.rows.offsets[r + 1]; ++e)
+        for (std::size_t e = child.rows.offsets[row]; e != child.rows.offsets[row + 1]; ++e)
           negative += std::max(0.0, -child.rows.weights[e]);
         if (own && negative > 0) sector.spread = INFINITY;
         else if (!own) sector.spread = std::max(sector.spread, negative);
       }
     }
     Valence& v = *sector.data;
-    v.valence = static_cast<int>(code);
+    v.valence = code;
     v.exact = true;
     if (left() < 1) r.fail(where + ": truncated before its tangent flag");
     const auto flag = r.get<std::uint8_t>();
     if (flag > 1 || (flag == 1 && sector.key.rule != SectorRule::Crease)) r.fail(where + ": invalid tangent flag");
-    if (flag == 1) {
-      v.tangent_eigenvalue = r.get<double>();
-      v.tangent_residual = r.get<double>();
-      if (points > left() / 16) r.fail(where + ": truncated tangent stencils");
-      for (auto* tangent : {&v.tangent_u, &v.tangent_v}) {
-        tangent->resize(points);
-        for (double& x : *tangent) {
-          x = r.get<double>();
-          if (!std::isfinite(x)) r.fail(where + ": a tangent weight is not finite");
-        }
-      }
-      if (!(v.tangent_eigenvalue > 0 && v.tangent_eigenvalue < 1) || !std::isfinite(v.tangent_residual))
-        r.fail(where + ": invalid tangent eigenvalue or residual");
-    }
+    if (flag == 1) read_tangents(r, left(), points, where, v.tangents);
     v.regions.push_back(std::move(region));
+    for (std::size_t slot = 0; slot < t.rates_.size(); ++slot) sector.rates.push_back(std::make_unique<SectorRate>());
+    t.sector_at_.emplace(code, t.sectors_.size());
     t.sectors_.push_back(std::move(sector));
   }
 }
@@ -233,21 +251,7 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
     if (version >= 4) {  // the tangent stencils at the vertex
       const auto flag = r.get<std::uint8_t>();
       if (flag > 1 || (flag == 1 && v.valence == 6)) r.fail("valence " + std::to_string(v.valence) + ": invalid tangent flag");
-      if (flag == 1) {
-        const std::size_t points = v.regions.front().layout.size();
-        v.tangent_eigenvalue = r.get<double>();
-        v.tangent_residual = r.get<double>();
-        if (points > left() / 16) r.fail("valence " + std::to_string(v.valence) + ": truncated tangent stencils");
-        for (auto* t : {&v.tangent_u, &v.tangent_v}) {
-          t->resize(points);
-          for (double& x : *t) {
-            x = r.get<double>();
-            if (!std::isfinite(x)) r.fail("valence " + std::to_string(v.valence) + ": a tangent weight is not finite");
-          }
-        }
-        if (!(v.tangent_eigenvalue > 0 && v.tangent_eigenvalue < 1) || !std::isfinite(v.tangent_residual))
-          r.fail("valence " + std::to_string(v.valence) + ": invalid tangent eigenvalue or residual");
-      }
+      if (flag == 1) read_tangents(r, left(), v.regions.front().layout.size(), "valence " + std::to_string(v.valence), v.tangents);
     }
     t.valences_.push_back(std::move(v));
   }
@@ -342,12 +346,12 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
 
 const std::vector<double>* TriangleTables::tangent_u(int valence) const {
   const Valence* v = find(valence);
-  return v && !v->tangent_u.empty() ? &v->tangent_u : nullptr;
+  return v && !v->tangents.u.empty() ? &v->tangents.u : nullptr;
 }
 
 const std::vector<double>* TriangleTables::tangent_v(int valence) const {
   const Valence* v = find(valence);
-  return v && !v->tangent_v.empty() ? &v->tangent_v : nullptr;
+  return v && !v->tangents.v.empty() ? &v->tangents.v : nullptr;
 }
 
 bool TriangleTables::neighbour_weight(int valence, double& weight) const {
@@ -363,78 +367,91 @@ std::vector<int> TriangleTables::valences() const {
 }
 
 std::optional<int> TriangleTables::sector_code(const SectorKey& key) const {
-  for (std::size_t s = 0; s < sectors_.size(); ++s)
-    if (sectors_[s].key == key) return static_cast<int>(kSectorCodeBase + s);
-  return std::nullopt;
+  if (!key.valid()) return std::nullopt;
+  const int code = sector_kind(key);
+  if (sector_at_.count(code) == 0) return std::nullopt;
+  return code;
+}
+
+const TriangleTables::Sector* TriangleTables::find_sector(int code) const {
+  const auto it = sector_at_.find(code);
+  return it == sector_at_.end() ? nullptr : &sectors_[it->second];
 }
 
 const SectorKey& TriangleTables::sector(int code) const {
-  if (!is_sector_code(code) || static_cast<std::size_t>(code - static_cast<int>(kSectorCodeBase)) >= sectors_.size())
-    throw EvaluationError("no boundary sector " + std::to_string(code) + " in the triangle table");
-  return sectors_[static_cast<std::size_t>(code - static_cast<int>(kSectorCodeBase))].key;
+  const Sector* s = find_sector(code);
+  if (!s) throw EvaluationError("no boundary sector of code " + std::to_string(code) + " in the triangle table");
+  return s->key;
 }
 
 double TriangleTables::sector_spread(int code) const {
   sector(code);  // checks the code
-  return sectors_[static_cast<std::size_t>(code - static_cast<int>(kSectorCodeBase))].spread;
+  return find_sector(code)->spread;
 }
 
-// A sector's stencils at every stored rate n, on the grid 1/(3n) (nodes, up
-// and down centres: the order of Grid::offset), by the recursion of the
-// generator (generator/triangle/triangle_sector.hpp): W(0) the limit stencil;
-// in the child at B (u + v <= 1/2) W(x) = W(2x) A0; in a regular cell the
-// regular patch's stencil at the cell's parameter, which lies on the same grid
-// (a node, or an up or down centre), through the cell's rows.
-void TriangleTables::expand_sector(const Sector& s) const {
-  std::call_once(*s.once, [&] {
-    Region& region = s.data->regions[0];
+// A sector's stencils at one stored rate n, on the grid 1/(3n) (nodes, up and
+// down centres: the order of Grid::offset), by the recursion of the generator
+// (generator/triangle/triangle_sector.hpp): W(0) the limit stencil; in the
+// child at B (u + v <= 1/2) W(x) = W(2x) A0; in a regular cell the regular
+// patch's stencil at the cell's parameter, which lies on the same grid (a
+// node, or an up or down centre), through the cell's rows. Made into locals
+// and moved in at the end, so a failure leaves nothing half made.
+const TriangleTables::SectorRate& TriangleTables::sector_rate(const Sector& s, int slot) const {
+  SectorRate& rate = *s.rates[static_cast<std::size_t>(slot)];
+  std::call_once(rate.once, [&] {
+    const Region& region = s.data->regions[0];
     const std::size_t m = region.layout.size();
+    const long n = rates_[static_cast<std::size_t>(slot)], g = 3 * n;
+    const std::size_t stencils = nodes_of(n) + ups_of(n) + downs_of(n);
+    constexpr std::size_t kBudget = std::size_t(1) << 27;  // doubles: 1 GiB
+    if (stencils > kBudget / m)
+      throw EvaluationError("the stencils of the " + s.key.name() + " at rate " + std::to_string(n) + " would take " +
+                            std::to_string(stencils * m / (1 << 17)) + " MiB (more than 1 GiB): use a lower rate");
     const SparseRows& a0 = region.children[0].rows;
-    for (int n : rates_) {
-      const long g = 3L * n;
-      std::vector<std::vector<double>> memo(static_cast<std::size_t>((g + 1) * (g + 1)));
-      const Grid regular = grid(6, n);
-      std::function<const std::vector<double>&(long, long)> at = [&](long i, long j) -> const std::vector<double>& {
-        std::vector<double>& w = memo[static_cast<std::size_t>(j * (g + 1) + i)];
-        if (!w.empty()) return w;
-        std::vector<double> out(m, 0.0);
-        if (i == 0 && j == 0) {
-          out = s.limit;
-        } else if (2 * (i + j) <= g) {
-          const std::vector<double>& fine = at(2 * i, 2 * j);
-          for (std::size_t r = 0; r < m; ++r)
-            for (std::size_t e = a0.offsets[r]; e != a0.offsets[r + 1]; ++e) out[a0.columns[e]] += fine[r] * a0.weights[e];
-        } else {
-          // The cell (up (1,0), up (0,1), down (0,0)) and its parameter, in units of 1/g.
-          int cell;
-          long a, b;
-          if (2 * i >= g) cell = 1, a = 2 * i - g, b = 2 * j;
-          else if (2 * j >= g) cell = 2, a = 2 * i, b = 2 * j - g;
-          else cell = 3, a = 2 * (i + j) - g, b = g - 2 * i;
-          const SparseRows& rows = region.children[static_cast<std::size_t>(cell)].rows;
-          const double* w = regular.weights(static_cast<GridPoint>(a % 3), a / 3, b / 3);
-          for (std::size_t r = 0; r < rows.rows(); ++r)
-            for (std::size_t e = rows.offsets[r]; e != rows.offsets[r + 1]; ++e) out[rows.columns[e]] += w[r] * rows.weights[e];
-        }
-        return w = std::move(out);
-      };
-      std::vector<std::uint32_t> index;
-      for (int kind = 0; kind < 3; ++kind)
-        for (long j = 0; j + kind <= n; ++j)
-          for (long i = 0; i + j + kind <= n; ++i) {
-            index.push_back(static_cast<std::uint32_t>(region.weights.size() / m));
-            const std::vector<double>& w = at(3 * i + kind, 3 * j + kind);
-            region.weights.insert(region.weights.end(), w.begin(), w.end());
+    const Grid regular = grid(6, static_cast<int>(n));
+    std::vector<double> weights(stencils * m), fine(m), coarse(m);
+    std::vector<std::uint32_t> index(stencils);
+    std::size_t k = 0;
+    for (int kind = 0; kind < 3; ++kind)
+      for (long j = 0; j + kind <= n; ++j)
+        for (long i = 0; i + j + kind <= n; ++i, ++k) {
+          // Double (I, J) while it lies in the child at B, then the regular cell's stencil there, then A0 back up.
+          long I = 3 * i + kind, J = 3 * j + kind;
+          int doublings = 0;
+          while ((I != 0 || J != 0) && 2 * (I + J) <= g) I *= 2, J *= 2, ++doublings;
+          if (I == 0 && J == 0) {
+            fine = s.limit;
+          } else {
+            int cell;
+            long a, b;
+            if (2 * I >= g) cell = 1, a = 2 * I - g, b = 2 * J;
+            else if (2 * J >= g) cell = 2, a = 2 * I, b = 2 * J - g;
+            else cell = 3, a = 2 * (I + J) - g, b = g - 2 * I;
+            const SparseRows& rows = region.children[static_cast<std::size_t>(cell)].rows;
+            const double* w = regular.weights(static_cast<GridPoint>(a % 3), a / 3, b / 3);
+            std::fill(fine.begin(), fine.end(), 0.0);
+            for (std::size_t r = 0; r < rows.rows(); ++r)
+              for (std::size_t e = rows.offsets[r]; e != rows.offsets[r + 1]; ++e) fine[rows.columns[e]] += w[r] * rows.weights[e];
           }
-      region.index.push_back(std::move(index));
-    }
+          for (int d = 0; d < doublings; ++d) {
+            std::fill(coarse.begin(), coarse.end(), 0.0);
+            for (std::size_t r = 0; r < m; ++r)
+              for (std::size_t e = a0.offsets[r]; e != a0.offsets[r + 1]; ++e) coarse[a0.columns[e]] += fine[r] * a0.weights[e];
+            fine.swap(coarse);
+          }
+          std::copy(fine.begin(), fine.end(), weights.begin() + static_cast<std::ptrdiff_t>(k * m));
+          index[k] = static_cast<std::uint32_t>(k);
+        }
+    rate.weights = std::move(weights);
+    rate.index = std::move(index);
   });
+  return rate;
 }
 
 const TriangleTables::Valence* TriangleTables::find(int v) const {
   if (is_sector_code(v)) {
-    const std::size_t s = static_cast<std::size_t>(v - static_cast<int>(kSectorCodeBase));
-    return s < sectors_.size() ? sectors_[s].data.get() : nullptr;
+    const Sector* s = find_sector(v);
+    return s ? s->data.get() : nullptr;
   }
   for (const auto& x : valences_)
     if (x.valence == v) return &x;
@@ -459,11 +476,18 @@ const TriangleTables::Region& TriangleTables::region_data(int valence, int regio
 }
 
 TriangleTables::Grid TriangleTables::grid(int valence, int n, int region) const {
-  if (is_sector_code(valence) && find(valence)) expand_sector(sectors_[static_cast<std::size_t>(valence - static_cast<int>(kSectorCodeBase))]);
   const Region& v = region_data(valence, region);
   const int slot = rate_slot(n);
   if (slot < 0) throw EvaluationError("rate " + std::to_string(n) + " is not in the triangle table");
   Grid g;
+  if (const Sector* s = is_sector_code(valence) ? find_sector(valence) : nullptr) {
+    const SectorRate& rate = sector_rate(*s, slot);
+    g.weights_ = rate.weights.data();
+    g.points_ = v.layout.size();
+    g.index_ = rate.index.data();
+    g.n_ = n;
+    return g;
+  }
   g.weights_ = v.weights.data();
   g.points_ = v.layout.size();
   g.index_ = v.index[static_cast<std::size_t>(slot)].data();

@@ -17,6 +17,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <unordered_map>
 #include <optional>
 #include <vector>
 
@@ -110,13 +111,14 @@ class TriangleTables {
   // Loop's boundary sectors (version 7; docs/table-format.md, "Loop boundary
   // sectors"): the patch of a face at a boundary vertex in k faces (or a
   // corner), the face at position p. Each is a patch kind of its own, named by
-  // a code (is_sector_code) that the lookups above and below take as their
-  // valence: layout(code) is its wedge chart ([sector, a, b], sectors 0..k),
-  // children(code, 0) its cells, tangent_u/v(code) its tangent stencils where
-  // it has a tangent plane. Its stencils are made from these on the first
-  // grid() of the code (every rate), by the recursion the generator solves.
+  // its code sector_kind(key) (patch_kind.hpp), which the lookups above and
+  // below take as their valence: layout(code) is its wedge chart ([sector, a,
+  // b], sectors 0..k), children(code, 0) its cells, tangent_u/v(code) its
+  // tangent stencils where it has a tangent plane. Its stencils are made from
+  // these, one rate on that rate's first grid(code, n), by the recursion the
+  // generator solves exactly.
   std::optional<int> sector_code(const SectorKey& key) const;
-  static bool is_sector_code(int valence) { return valence >= static_cast<int>(kSectorCodeBase); }
+  static bool is_sector_code(int valence) { return is_sector_kind(valence); }
   const SectorKey& sector(int code) const;
   bool has_sectors() const { return !sectors_.empty(); }
   // How far the sector's surface may reach beyond its control points' box:
@@ -127,6 +129,12 @@ class TriangleTables {
   // is >= 0), lie in the box widened by this times its extent on each side.
   // Infinite where the child at B has a negative weight.
   double sector_spread(int code) const;
+
+  // Tangent stencils at a patch's vertex as stored (below the public interface: the reader's).
+  struct TangentData {
+    std::vector<double> u, v;
+    double eigenvalue = 0, residual = 0;
+  };
 
   // The same lookups with the valence and rate resolved once (a face's
   // tessellation asks for n^2 stencils of one grid).
@@ -168,20 +176,25 @@ class TriangleTables {
     std::vector<Region> regions;
     // The tangent stencils at the extraordinary vertex over region 0's layout
     // (version 4; empty: none).
-    std::vector<double> tangent_u, tangent_v;
-    double tangent_eigenvalue = 0, tangent_residual = 0;
+    TangentData tangents;
+  };
+  // One rate's stencils of a sector, made on first use.
+  struct SectorRate {
+    std::once_flag once;
+    std::vector<double> weights;        // stencil_count * layout size
+    std::vector<std::uint32_t> index;   // nodes, ups, downs (Grid::offset's order)
   };
   struct Sector {
     SectorKey key;
     std::vector<double> limit;  // W(0) over the layout
     double spread = 0;          // sector_spread
-    std::unique_ptr<std::once_flag> once = std::make_unique<std::once_flag>();
-    // The layout, cells and tangents as a valence's; the region's weights and
-    // index are filled on first use (expand_sector).
+    // The layout, cells and tangents as a valence's (its region has no weights).
     std::unique_ptr<Valence> data = std::make_unique<Valence>();
+    std::vector<std::unique_ptr<SectorRate>> rates;  // per rate slot
   };
-  static constexpr unsigned kSectorCodeBase = 1u << 16;  // format::kTriangleSectorCode
-  void expand_sector(const Sector& s) const;
+  const Sector* find_sector(int code) const;
+  // The sector's stencils at rate slot `slot` (expand on first use; EvaluationError beyond the size budget).
+  const SectorRate& sector_rate(const Sector& s, int slot) const;
   static void read_sectors(detail::BinaryReader& r, const std::function<std::size_t()>& left, TriangleTables& t);
   const Valence* find(int v) const;
   const Valence& data(int v) const;  // throws EvaluationError
@@ -196,6 +209,7 @@ class TriangleTables {
   std::vector<int> slot_of_rate_;
   std::vector<Valence> valences_;
   std::vector<Sector> sectors_;
+  std::unordered_map<int, std::size_t> sector_at_;  // code -> position in sectors_
   bool descent_ = false, children_nonnegative_ = true;
   int degree_ = 0;
   std::vector<double> polynomial_;

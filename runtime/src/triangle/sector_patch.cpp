@@ -4,7 +4,9 @@
 #include <deque>
 #include <map>
 #include <tuple>
+#include <set>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "boundary_patch.hpp"
 
@@ -71,12 +73,13 @@ std::optional<TrianglePatch> loop_sector_patch(const TriangleTopology& t, std::s
   const auto code = tables.sector_code(key);
   if (!code) throw EvaluationError("the triangle tables hold no patch for a " + key.name());
   const std::vector<ChartPoint>& layout = tables.layout(*code);
-  int reach = 0;
-  for (const ChartPoint& q : layout) reach = std::max(reach, q.a);
+  std::set<Key> wanted;
+  for (const ChartPoint& q : layout) wanted.insert(key_of(q));
 
   // Unfold: B's fan first, then across every inner edge the lattice's
-  // parallelogram rule (the vertex across edge PQ from R is P + Q - R), within
-  // the layout's rings; a vertex given two places fails.
+  // parallelogram rule (the vertex across edge PQ from R is P + Q - R), onto
+  // the layout's points only (so that irregular vertices beyond it do not
+  // matter); a vertex given two places fails.
   std::unordered_map<int, ChartPoint> place;
   std::map<Key, int> vertex_at;
   auto assign = [&](int v, const ChartPoint& q) {
@@ -85,7 +88,7 @@ std::optional<TrianglePatch> loop_sector_patch(const TriangleTopology& t, std::s
     return vertex_at.emplace(key_of(q), v).second;
   };
   assign(b_vertex, ChartPoint{});
-  std::vector<char> seen(t.faces(), 0);
+  std::unordered_set<std::size_t> seen;
   std::deque<std::size_t> queue;
   std::uint32_t e = h;
   for (int j = 0; j < k; ++j) {
@@ -93,7 +96,7 @@ std::optional<TrianglePatch> loop_sector_patch(const TriangleTopology& t, std::s
     const int c = TriangleTopology::corner_of(e);
     if (!assign(t.vertex(face, c + 1), ChartPoint{j, 1, 0}) || !assign(t.vertex(face, c + 2), ChartPoint{j + 1, 1, 0}))
       return std::nullopt;
-    seen[face] = 1;
+    seen.insert(face);
     queue.push_back(face);
     if (j + 1 < k) {
       e = t.turn_ccw(e);
@@ -107,7 +110,7 @@ std::optional<TrianglePatch> loop_sector_patch(const TriangleTopology& t, std::s
       const std::uint32_t across = t.twin(TriangleTopology::half_edge(face, c));
       if (across == TriangleTopology::kNoTwin) continue;
       const std::size_t g = TriangleTopology::face_of(across);
-      if (seen[g]) continue;
+      if (seen.count(g)) continue;
       const ChartPoint& P = place.at(t.vertex(face, c));
       const ChartPoint& Q = place.at(t.vertex(face, c + 1));
       const ChartPoint& R = place.at(t.vertex(face, c + 2));
@@ -117,8 +120,8 @@ std::optional<TrianglePatch> loop_sector_patch(const TriangleTopology& t, std::s
       const auto [ra, rb] = in_frame(R, frame);
       const auto s = canonical(k, frame, pa + qa - ra, pb + qb - rb);
       if (!s) return std::nullopt;  // the mesh goes on beyond the wedge: not the lattice here
-      if (s->a > reach) continue;
-      seen[g] = 1;
+      if (!wanted.count(key_of(*s))) continue;
+      seen.insert(g);
       if (!assign(t.vertex(g, TriangleTopology::corner_of(across) + 2), *s)) return std::nullopt;
       queue.push_back(g);
     }

@@ -31,12 +31,15 @@ namespace {
 
 // Every face's patch, or false when one cannot be gathered. `topo` is the mesh
 // cut along its infinitely sharp edges (family/sharp_cut.hpp), whose boundaries
-// are the mesh's own and its creases. On a mesh with boundaries, faces whose
-// corners are all regular take the regular patch with phantoms
-// (boundary_patch.hpp); the others need the tables' chart walks, which stop at
-// the boundary. A face at a vertex marked in `no_surface` (OpenSubdiv's `none`:
-// a copy of a vertex on the mesh's own boundary) has no surface: where it has
-// no regular patch it gets a placeholder that is never evaluated.
+// are the mesh's own and its creases; `rules` its vertices' rules. On a mesh
+// with boundaries, a face at one boundary vertex in other than three faces or
+// at a corner takes that vertex's sector patch (sector_patch.hpp; two such
+// corners: not yet isolated), a face whose corners are all regular the regular
+// patch with phantoms (boundary_patch.hpp); the others need the tables' chart
+// walks, which stop at the boundary. A face at a vertex marked in `no_surface`
+// (OpenSubdiv's `none`: a copy of a vertex on the mesh's own boundary) has no
+// surface: where it has no regular patch it gets a placeholder that is never
+// evaluated.
 bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, std::vector<TrianglePatch>& patches,
                     PhantomPoints& phantoms, const std::vector<char>& no_surface, const std::vector<SectorRule>& rules) {
   patches.clear();
@@ -76,11 +79,12 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
 // The vertices of a Loop mesh cut along its infinitely sharp edges (`cut`,
 // whose links are `links`), checked once on the input (steps keep every
 // vertex's number of faces and rule): inside ones need their valence in the
-// tables; every one on a boundary of the cut mesh, the mesh's own or a crease,
-// needs three faces and the crease rule, where the regular boundary patch is
-// exact (boundary_patch.hpp; docs/runtime.md says what the others need). With
-// `none` (`no_surface`) the faces at the mesh's own boundary have no surface,
-// so any vertex will do there.
+// tables (darts and cone points are refused); one on a boundary of the cut
+// mesh, the mesh's own or a crease, in three faces with the crease rule has
+// the regular boundary patch (boundary_patch.hpp), any other needs its
+// sector's patches in the tables (sector_patch.hpp). With `none`
+// (`no_surface`) the faces at the mesh's own boundary have no surface, so any
+// vertex will do there.
 void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const PolygonLinks& uncut,
                          const std::vector<char>& no_surface, const std::string& scheme, const TriangleTables& tables,
                          ValenceCheck& valences) {
@@ -93,7 +97,8 @@ void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const P
                       " has no patches for cone points yet");
     if (cut.rule[v] == SectorRule::Dart)  // inside the mesh, on the slit's end (a boundary of the cut when its neighbour is split)
       throw MeshError(who + " ends an infinitely sharp crease (a dart); " + scheme +
-                      " evaluates infinitely sharp creases that close into loops, not darts yet" + plan);
+                      " evaluates infinitely sharp creases and corners, not darts yet (their sectors take the smooth "
+                      "rule at the vertex)" + plan);
     if (!links.boundary[v]) {
       if (cut.rule[v] == SectorRule::Corner)
         throw MeshError(who + " is an infinitely sharp corner; " + scheme + " has no patches for corners yet" + plan);
@@ -148,11 +153,9 @@ struct PatchMesh {
         no_surface.resize(topo.vertices());
         for (std::size_t v = 0; v < topo.vertices(); ++v) no_surface[v] = topo.on_boundary(static_cast<int>(v)) ? 1 : 0;
       }
-      // Without infinitely sharp features only edge-and-corner makes corners (boundary vertices in one face).
-      rules.assign(topo.vertices(), SectorRule::Crease);
-      if (edge_and_corner)
-        for (std::size_t v = 0; v < topo.vertices(); ++v)
-          if (topo.on_boundary(static_cast<int>(v)) && topo.valence(static_cast<int>(v)) == 1) rules[v] = SectorRule::Corner;
+      // Nothing to cut: the vertices' rules as the cut gives them (edge-and-corner's corners), on a boundary only.
+      rules = topo.has_boundary() ? cut_along_sharp_edges(mesh, link_polygons(mesh, true), sharpness, edge_and_corner).rule
+                                  : std::vector<SectorRule>(topo.vertices(), SectorRule::Crease);
     }
   }
   const TriangleTopology& topology(const TriangleTopology& uncut) const { return cut_topology ? *cut_topology : uncut; }
