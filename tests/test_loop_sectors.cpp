@@ -7,6 +7,7 @@
 // tagged infinitely sharp on a rim.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <tuple>
@@ -16,6 +17,7 @@
 #include "loop_meshes.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
+#include "bundled_meshes.hpp"
 #include "family/family.hpp"
 #include "stencil_runtime/closest_point.hpp"
 #include "stencil_runtime/tessellation.hpp"
@@ -104,6 +106,49 @@ TEST_CASE("Loop sectors: infinitely sharp corners on a rim are corner sectors eq
   const auto [positions, derivatives] = difference(tables, mesh, BoundaryInterpolation::EdgeOnly, {{1, 10.0f}, {5, 10.0f}, {27, 10.0f}, {30, 2.0f}});
   CHECK(positions < 1e-14);
   CHECK(derivatives < 1e-13);
+}
+
+TEST_CASE("Loop sectors: a triangulated cube with sharp edges, corners and semi-sharp edges equals Bfr",
+          "[runtime][creases][loop][opensubdiv]") {
+  const auto tables = loop_tables();
+  // Each quad (a, b, c, d) of the cube split into (a, b, c) and (a, c, d); its 12 edges are the quads' edges.
+  const Mesh quads = stencil_runtime::read_obj((test_meshes::kMeshes / "cube.obj").string());
+  Mesh cube;
+  cube.positions = quads.positions;
+  std::vector<std::pair<int, int>> edges;
+  for (std::size_t f = 0; f < quads.face_count(); ++f) {
+    const int* q = &quads.face_vertices[4 * f];
+    cube.face_sizes.insert(cube.face_sizes.end(), {3, 3});
+    cube.face_vertices.insert(cube.face_vertices.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+    for (int c = 0; c < 4; ++c)
+      if (q[c] < q[(c + 1) % 4]) edges.emplace_back(q[c], q[(c + 1) % 4]);
+      else edges.emplace_back(q[(c + 1) % 4], q[c]);
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  REQUIRE(edges.size() == 12);
+  {
+    SharpFeatures f;  // every edge infinitely sharp: each corner on three sharp edges, its sides in one or two faces
+    for (const auto& [a, b] : edges) f.crease(a, b, 10);
+    const auto [positions, derivatives] = loop_bfr_difference(tables, cube, f);
+    CHECK(positions < 1e-14);
+    CHECK(derivatives < 1e-13);
+  }
+  {
+    // A loop of four sharp edges round one face with a sharp corner on it, and
+    // semi-sharp edges of 0.5, 1 and 2.5 round the opposite face (no vertex in common).
+    SharpFeatures f;
+    const int* q = &quads.face_vertices[0];
+    for (int c = 0; c < 4; ++c) f.crease(q[c], q[(c + 1) % 4], 10);
+    f.corner(q[2], 10);
+    const int* o = &quads.face_vertices[4];
+    f.crease(o[0], o[1], 0.5f);
+    f.crease(o[1], o[2], 1.0f);
+    f.crease(o[2], o[3], 2.5f);
+    const auto [positions, derivatives] = loop_bfr_difference(tables, cube, f);
+    CHECK(positions < 1e-14);
+    CHECK(derivatives < 1e-13);
+  }
 }
 
 TEST_CASE("Loop sectors: tessellations with random rates have one rim per boundary loop and the right Euler characteristic",
