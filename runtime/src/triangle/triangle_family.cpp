@@ -119,10 +119,12 @@ void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const P
                     "boundary vertex in one face)"
               : " is on " + std::string(own ? "the boundary in " : "an infinitely sharp crease with ") + std::to_string(k) +
                     (k == 1 ? " face" : " faces") + (own ? "" : " on one side");
-      throw MeshError(who + what + ", and the " + scheme + " tables hold no patch for it: " +
-                      (tables.has_sectors() ? "they hold boundary vertices in up to as many faces as their largest "
-                                              "valence; regenerate them with stencilgen --valence 3-" + std::to_string(std::max(k, 6))
-                                            : "tables from before version 7 hold none; regenerate them with this stencilgen"));
+      if (!tables.has_sectors())
+        throw MeshError(who + what + ", and the " + scheme + " tables hold no patches for boundary vertices (tables "
+                        "from before version 7); regenerate them with this stencilgen");
+      // Tables hold the sectors of up to as many faces as their largest valence: the call that covers it.
+      valences.add_boundary(k, who + what);
+      break;
     }
   }
 }
