@@ -15,12 +15,12 @@ std::optional<SectorPoint> SectorChart::canonical(int k, long a, long b, int max
   if (a == 0 && b == 0) return SectorPoint{};
   for (int turn = 0; turn <= max_turns; ++turn) {
     if (a >= 1 && b >= 0 && b < a) return SectorPoint{((k % v_) + v_) % v_, a, b};
-    if (b < 0) {  // clockwise into sector k-1: e_k = (1,0) becomes (1,1) there
-      const long na = a - b, nb = a;
-      a = na, b = nb, --k;
-    } else {      // counter-clockwise into sector k+1: e_{k+1} = (1,1) becomes (1,0) there
-      const long na = b, nb = b - a;
-      a = na, b = nb, ++k;
+    if (b < 0) {  // clockwise into sector k-1
+      into_previous_frame(a, b);
+      --k;
+    } else {  // counter-clockwise into sector k+1
+      into_next_frame(a, b);
+      ++k;
     }
   }
   return std::nullopt;

@@ -15,6 +15,18 @@
 
 namespace sg {
 
+// A lattice point's coordinates carried one 60-degree turn between the frames
+// of neighbouring sectors: into sector k-1's (e_k = (1,0) is (1,1) there) and
+// into sector k+1's (e_{k+1} = (1,1) is (1,0) there).
+inline void into_previous_frame(long& a, long& b) {
+  const long na = a - b, nb = a;
+  a = na, b = nb;
+}
+inline void into_next_frame(long& a, long& b) {
+  const long na = b, nb = b - a;
+  a = na, b = nb;
+}
+
 struct SectorPoint {
   int sector = 0;
   long a = 0, b = 0;  // (0, 0) in sector 0 for the extraordinary vertex

@@ -34,12 +34,12 @@ std::optional<WedgePoint> BoundaryWedge::canonical(int s, long a, long b) const 
       if (b == -1 && a >= 0) return WedgePoint{0, a, -1};
       return std::nullopt;
     }
-    if (b < 0) {  // clockwise into frame s-1: e_s = (1,0) is (1,1) there
-      const long na = a - b, nb = a;
-      a = na, b = nb, --s;
-    } else {  // counter-clockwise into frame s+1: e_{s+1} = (1,1) is (1,0) there
-      const long na = b, nb = b - a;
-      a = na, b = nb, ++s;
+    if (b < 0) {  // clockwise into frame s-1
+      into_previous_frame(a, b);
+      --s;
+    } else {  // counter-clockwise into frame s+1
+      into_next_frame(a, b);
+      ++s;
     }
   }
   return std::nullopt;
@@ -317,10 +317,7 @@ TriangleSectorDescent triangle_sector_descent(const TriangleScheme& scheme, cons
     const long(&corner)[3][2] = kRegularChildren[c];
     for (const SectorPoint& q : regular_layout) {
       long a = q.a, b = q.b;  // into the kind's frame: q.sector turns of 60 degrees
-      for (int t = 0; t < ((q.sector % 6) + 6) % 6; ++t) {
-        const long na = a - b, nb = a;
-        a = na, b = nb;
-      }
+      for (int t = 0; t < ((q.sector % 6) + 6) % 6; ++t) into_previous_frame(a, b);
       // The kind's frame on the cell: X = corner 1 - corner 0, Y = corner 2 - corner 1.
       const long fa = corner[0][0] + a * (corner[1][0] - corner[0][0]) + b * (corner[2][0] - corner[1][0]);
       const long fb = corner[0][1] + a * (corner[1][1] - corner[0][1]) + b * (corner[2][1] - corner[1][1]);

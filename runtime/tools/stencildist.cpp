@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
   double tolerance = 1e-9, max_distance = INFINITY;
   int threads = 0;
   app.add_option("--tables", tables_spec, "a .sgs or .sgt table file, or the directory stencilgen wrote it to")->required();
-  app.add_option("--mesh", mesh_path, "control mesh (.obj): closed, or with boundaries for a quad scheme or Loop (Loop: every boundary vertex in three faces and no corner, whose patches' control points bound them; no --signed then)")->required();
+  app.add_option("--mesh", mesh_path, "control mesh (.obj): closed, or with boundaries for a quad scheme or Loop (no --signed then)")->required();
   app.add_option("--points", points_path, "query points: .xyz/.txt (`x y z` or `x y z nx ny nz` lines) or .ply (vertices)")->required();
   app.add_option("--out", out_path, "result file (default: standard output)");
   app.add_flag("--signed", signed_distance, "signed distances: negative inside the surface (outward-oriented faces)");
