@@ -1,6 +1,7 @@
 #pragma once
 // Bounds-checked little-endian reader over a byte buffer, and the checked
 // reading of a whole table file.
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -16,7 +17,10 @@ namespace stencil_runtime::detail {
 
 class BinaryReader {
  public:
-  BinaryReader(const std::string& bytes, std::string origin) : bytes_(bytes), origin_(std::move(origin)) {}
+  BinaryReader(const std::string& bytes, std::string origin)
+      : bytes_(bytes), origin_(std::move(origin)), end_(bytes.size()) {}
+  // Reads stop at `end` (the payload's end, before the checksum).
+  void end_at(std::size_t end) { end_ = std::min(end, bytes_.size()); }
   template <class T>
   T get() {
     need(sizeof(T));
@@ -36,10 +40,11 @@ class BinaryReader {
 
  private:
   void need(std::size_t size) const {
-    if (bytes_.size() - pos_ < size) fail("truncated (needs more than its " + std::to_string(bytes_.size()) + " bytes)");
+    if (pos_ > end_ || end_ - pos_ < size) fail("truncated (needs more than its " + std::to_string(bytes_.size()) + " bytes)");
   }
   const std::string& bytes_;
   std::string origin_;
+  std::size_t end_;
   std::size_t pos_ = 0;
 };
 
@@ -75,6 +80,7 @@ inline void check_envelope(const std::string& bytes, BinaryReader& r, const char
   std::memcpy(&stored, bytes.data() + bytes.size() - 8, 8);
   if (stored != format::fnv1a64(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size() - 8))
     r.fail("checksum mismatch: the file is corrupt or truncated");
+  r.end_at(bytes.size() - 8);  // the payload: nothing may read the checksum as data
 }
 
 }  // namespace stencil_runtime::detail
