@@ -1,11 +1,9 @@
 #include "triangle/triangle_patch.hpp"
 
-#include <Eigen/Dense>
-#include <boost/multiprecision/eigen.hpp>
 #include <algorithm>
 #include <map>
 
-#include "algebra/exact_linear_system.hpp"
+#include "algebra/limit_stencil.hpp"
 #include "algebra/integer_division.hpp"
 #include "base/error.hpp"
 #include "triangle/triangle_masks.hpp"
@@ -15,32 +13,6 @@ namespace {
 
 std::string where(const TriangleScheme& s, int valence) {
   return "scheme '" + s.name + "', valence " + std::to_string(valence);
-}
-
-// W(0): x A = x, sum x = 1.
-std::vector<Rational> fixed_vector(const std::vector<SparseRow<Rational>>& a, const std::string& context) {
-  const LinearSolution sol = left_fixed_vector(a);
-  if (sol.status != LinearSolution::Status::Unique) throw Error(context + ": the limit stencil has " + sol.describe());
-  return sol.values;
-}
-
-std::vector<Real> fixed_vector(const std::vector<SparseRow<Real>>& a, const std::string& context) {
-  using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
-  using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
-  const Eigen::Index m = static_cast<Eigen::Index>(a.size());
-  // Columns of (A - I), transposed; the last equation (dependent, rows of A sum
-  // to 1) is replaced by sum x = 1.
-  Matrix s = Matrix::Zero(m, m);
-  for (Eigen::Index r = 0; r < m; ++r)
-    for (const auto& [c, w] : a[static_cast<std::size_t>(r)]) s(static_cast<Eigen::Index>(c), r) += w;
-  for (Eigen::Index r = 0; r < m; ++r) s(r, r) -= 1;
-  s.row(m - 1).setOnes();
-  Vector rhs = Vector::Zero(m);
-  rhs(m - 1) = 1;
-  const auto lu = s.fullPivLu();
-  if (lu.rank() < m) throw Error(context + ": the limit stencil is not unique (eigenvalue 1 is not simple)");
-  const Vector x = lu.solve(rhs);
-  return std::vector<Real>(x.data(), x.data() + m);
 }
 
 template <class T>
@@ -221,7 +193,7 @@ TrianglePatch<T> solve_triangle_patch(const TriangleScheme& scheme, int valence,
     for (const auto& row : inner)
       for (const auto& [c, x] : row)
         if (c >= two_ring) throw Error("internal: " + context + ": the two-ring is not closed under the step");
-    const std::vector<T> w0 = fixed_vector(inner, context);
+    const std::vector<T> w0 = limit_stencil(inner, context);
     SparseRow<T>& origin = stored(0, 0);
     for (std::size_t c = 0; c < w0.size(); ++c)
       if (w0[c] != 0) origin.emplace_back(c, w0[c]);
