@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <random>
 #include <thread>
 
@@ -14,24 +15,32 @@
 #include "base/error.hpp"
 #include "cli.hpp"
 #include "tables/triangle_tables.hpp"
+#include "triangle/triangle_masks.hpp"
 #include "triangle/triangle_patch.hpp"
 #include "triangle/triangle_scheme_loader.hpp"
 #include "triangle/triangle_sector.hpp"
 
 namespace {
 
-// The wedge's real points within `rings` of B, as a triangle mesh.
+// The wedge's real points within `rings` of B, as a triangle mesh. `closed`:
+// ray k is ray 0 again (a dart's ring; its slit, ray 0, is tagged sharp by
+// the caller), the ray's points known by both names.
 struct WedgeMesh {
   std::map<sg::WedgePoint, int> vertex;
   std::vector<int> sizes, indices;
   std::map<int, int> patch_face;  // position p -> face (B, e_p, e_{p+1})
 
-  WedgeMesh(const sg::BoundaryWedge& wedge, long rings) {
+  WedgeMesh(const sg::BoundaryWedge& wedge, long rings, bool closed = false) {
     const int k = wedge.faces();
     auto id = [&](int s, long a, long b) {
       const auto q = wedge.canonical(s, a, b);
       REQUIRE(q);
       REQUIRE(!wedge.phantom(*q));
+      if (closed && q->sector == k && q->b == 0) {  // the same vertex as ray 0's
+        const int v = vertex.emplace(sg::WedgePoint{0, q->a, 0}, static_cast<int>(vertex.size())).first->second;
+        vertex.emplace(*q, v);
+        return v;
+      }
       return vertex.emplace(*q, static_cast<int>(vertex.size())).first->second;
     };
     auto face = [&](int s, long a0, long b0, long a1, long b1, long a2, long b2) {
@@ -48,21 +57,38 @@ struct WedgeMesh {
   }
 };
 
+// A dart's slit: ray 0 from B to the mesh's rim, infinitely sharp.
+bfr_reference::Creasing slit(const WedgeMesh& mesh, long rings) {
+  bfr_reference::Creasing creasing;
+  for (long a = 0; a < rings; ++a) {
+    creasing.crease_pairs.push_back(mesh.vertex.at(sg::WedgePoint{0, a, 0}));
+    creasing.crease_pairs.push_back(mesh.vertex.at(sg::WedgePoint{0, a + 1, 0}));
+    creasing.crease_sharpness.push_back(10.0f);
+  }
+  return creasing;
+}
+
+// Every node but B's own where the sector is a dart: OpenSubdiv's limit at a
+// dart vertex is the smooth one, not the dart's (the next test).
+template <class T = sg::Rational>
 double worst_difference(const sg::TriangleScheme& loop, const sg::BoundarySector& sector, long n, bool corner_tag) {
   const sg::BoundaryWedge wedge(sector.faces);
-  WedgeMesh mesh(wedge, 5);
+  const bool dart = sector.kind == sg::SectorKind::Dart;
+  const long rings = dart ? 6 : 5;
+  WedgeMesh mesh(wedge, rings, dart);
   std::mt19937 rng(77u + 31u * static_cast<unsigned>(sector.faces) + static_cast<unsigned>(sector.position));
   std::uniform_real_distribution<double> U(-1, 1);
   std::vector<std::array<double, 3>> positions(mesh.vertex.size());
   for (auto& p : positions) p = {U(rng), U(rng), U(rng)};
-  bfr_reference::Creasing creasing;
+  bfr_reference::Creasing creasing = dart ? slit(mesh, rings) : bfr_reference::Creasing{};
   if (corner_tag) creasing.corners = {0}, creasing.corner_sharpness = {10.0f};  // B is vertex 0
   bfr_reference::BfrLimit bfr(positions, mesh.sizes, mesh.indices, OpenSubdiv::Sdc::SCHEME_LOOP, {}, creasing);
-  const auto patch = sg::solve_triangle_sector(loop, sector, n, sg::solve_regular(loop, n));
+  const auto patch = sg::solve_triangle_sector<T>(loop, sector, n, sg::solve_regular(loop, n));
   const int face = mesh.patch_face.at(sector.position);
   double worst = 0;
   for (long j = 0; j <= n; ++j)
     for (long i = 0; i + j <= n; ++i) {
+      if (dart && i == 0 && j == 0) continue;
       std::map<int, double> ours;
       const auto& w = patch.at(i, j);
       for (std::size_t h = 0; h < w.size(); ++h)
@@ -197,6 +223,184 @@ TEST_CASE("Loop corner sectors of 1..8 faces equal Bfr with a sharp corner", "[t
       }
 }
 
+TEST_CASE("Loop dart sectors of valence 3..8 equal Bfr at rates 1..8, but at the dart vertex", "[triangle][sector][dart][opensubdiv]") {
+  const sg::TriangleScheme loop = sg::load_triangle_scheme("loop");
+  for (int k = 3; k <= 8; ++k)
+    for (int p = 0; p < k; ++p)
+      for (long n : {1L, 2L, 3L, 5L, 8L}) {
+        INFO("k = " << k << ", p = " << p << ", n = " << n);
+        const sg::BoundarySector dart{sg::SectorKind::Dart, k, p};
+        // Loop's smooth rule is rational at valences 3, 4 and 6 only.
+        CHECK(sg::exact_triangle_sector(loop, dart) == (k == 3 || k == 4 || k == 6));
+        const double worst = sg::exact_triangle_sector(loop, dart) ? worst_difference<sg::Rational>(loop, dart, n, false)
+                                                                   : worst_difference<sg::Real>(loop, dart, n, false);
+        CHECK(worst < 1e-13);
+      }
+  CHECK_THROWS_WITH(sg::solve_triangle_sector(loop, {sg::SectorKind::Dart, 5, 0}, 2, sg::solve_regular(loop, 2)),
+                    Catch::Contains("irrational"));
+}
+
+namespace {
+
+// The dart's layout points one Loop step on (its child at B, same chart
+// positions in half units) among OpenSubdiv's refined vertices, found by
+// Far's parent-to-child relations: the point at even (a, b) is the child of
+// the coarse vertex there, any other the child of the coarse edge it halves.
+std::vector<int> refined_layout(const OpenSubdiv::Far::TopologyRefiner& refiner, const WedgeMesh& mesh,
+                                const sg::BoundaryWedge& wedge, const std::vector<sg::WedgePoint>& layout) {
+  const auto& level = refiner.GetLevel(0);
+  auto coarse = [&](int s, long a, long b) {
+    const auto q = wedge.canonical(s, a, b);
+    REQUIRE(q);
+    return mesh.vertex.at(*q);
+  };
+  std::vector<int> out;
+  for (const sg::WedgePoint& x : layout) {
+    if (x.a % 2 == 0 && x.b % 2 == 0) {
+      out.push_back(level.GetVertexChildVertex(coarse(x.sector, x.a / 2, x.b / 2)));
+      continue;
+    }
+    int child = -1;
+    for (const auto& d : sg::kTriangleNeighbours) {
+      if ((x.a - d[0]) % 2 != 0 || (x.b - d[1]) % 2 != 0) continue;
+      const long qa = (x.a - d[0]) / 2, qb = (x.b - d[1]) / 2;
+      const int edge = level.FindEdge(coarse(x.sector, qa, qb), coarse(x.sector, qa + d[0], qb + d[1]));
+      REQUIRE(edge >= 0);
+      child = level.GetEdgeChildVertex(edge);
+      break;
+    }
+    REQUIRE(child >= 0);
+    out.push_back(child);
+  }
+  return out;
+}
+
+template <class T>
+void check_dart_limit_and_plane(const sg::TriangleScheme& loop, int k, int p) {
+  namespace osd = OpenSubdiv;
+  const sg::BoundarySector dart{sg::SectorKind::Dart, k, p};
+  const sg::BoundaryWedge wedge(k);
+  const long rings = 5;
+  WedgeMesh mesh(wedge, rings, true);
+  const bfr_reference::Creasing creasing = slit(mesh, rings);
+  std::mt19937 rng(901u + 13u * static_cast<unsigned>(k) + static_cast<unsigned>(p));
+  std::uniform_real_distribution<double> U(-1, 1);
+  const std::size_t nv = static_cast<std::size_t>(std::max_element(mesh.vertex.begin(), mesh.vertex.end(), [](const auto& x, const auto& y) {
+                                                   return x.second < y.second;
+                                                 })->second) + 1;
+  std::vector<Vec> positions(nv);
+  for (auto& x : positions) x = {U(rng), U(rng), U(rng)};
+  auto refiner = bfr_reference::make_refiner(static_cast<int>(nv), mesh.sizes, mesh.indices, osd::Sdc::SCHEME_LOOP, {}, creasing);
+  refiner->RefineUniform(osd::Far::TopologyRefiner::UniformOptions(1));
+  struct Primvar {
+    double p[3];
+    void Clear() { p[0] = p[1] = p[2] = 0; }
+    void AddWithWeight(const Primvar& s, double w) {
+      for (int c = 0; c < 3; ++c) p[c] += w * s.p[c];
+    }
+  };
+  std::vector<Primvar> coarse(nv), fine(static_cast<std::size_t>(refiner->GetLevel(1).GetNumVertices()));
+  for (std::size_t v = 0; v < nv; ++v)
+    for (int c = 0; c < 3; ++c) coarse[v].p[c] = positions[v][static_cast<std::size_t>(c)];
+  osd::Far::PrimvarRefinerReal<double> primvars(*refiner);
+  Primvar* src = coarse.data();
+  Primvar* dst = fine.data();
+  primvars.Interpolate(1, src, dst);
+
+  const auto patch = sg::solve_triangle_sector<T>(loop, dart, 8, sg::solve_regular(loop, 8));
+  const std::vector<int> child = refined_layout(*refiner, mesh, wedge, patch.layout);
+  auto at_coarse = [&](std::size_t h) { return positions[static_cast<std::size_t>(mesh.vertex.at(patch.layout[h]))]; };
+  auto at_fine = [&](std::size_t h) {
+    const Primvar& x = fine[static_cast<std::size_t>(child[h])];
+    return Vec{x.p[0], x.p[1], x.p[2]};
+  };
+  auto apply = [&](const auto& weights, auto point) {
+    Vec out{0, 0, 0};
+    for (std::size_t h = 0; h < patch.layout.size(); ++h)
+      for (std::size_t c = 0; c < 3; ++c) out[c] += sg::to_double(weights[h]) * point(h)[c];
+    return out;
+  };
+  // The limit stencil is the left eigenvector of OpenSubdiv's own step: the
+  // same point from the coarse and the refined points.
+  const Vec l0 = apply(patch.at(0, 0), at_coarse), l1 = apply(patch.at(0, 0), at_fine);
+  const Vec d{l1[0] - l0[0], l1[1] - l0[1], l1[2] - l0[2]};
+  CHECK(std::sqrt(dot(d, d)) < 1e-13);
+  // The tangent plane (the slit folded shut) is kept by OpenSubdiv's step: the
+  // refined tangent vectors lie in the coarse ones' plane.
+  std::string why;
+  const auto t = sg::triangle_sector_tangents(patch, why);
+  INFO(why);
+  REQUIRE(t);
+  const Vec u0 = apply(t->u, at_coarse), v0 = apply(t->v, at_coarse);
+  const Vec normal = unit(cross(u0, v0));
+  for (const Vec& x : {apply(t->u, at_fine), apply(t->v, at_fine)}) CHECK(std::fabs(dot(normal, x)) < 1e-12 * std::sqrt(dot(x, x)));
+  bfr_reference::BfrLimit bfr(positions, mesh.sizes, mesh.indices, osd::Sdc::SCHEME_LOOP, {}, creasing);
+  // Oriented as du x dv next to B: Bfr's normal 1e-3 into the face (not
+  // nearer: below its approximation level Bfr's patch ends at the smooth
+  // limit, not the dart's, and its normals there turn away from both; that
+  // the normals of our surface next to B converge to this plane is
+  // test_loop_creases.cpp's check).
+  const auto near = bfr.derivatives(mesh.patch_face.at(p), 1e-3, 1e-3);
+  CHECK(dot(normal, unit(cross(near[1], near[2]))) > 0.5);
+}
+
+}  // namespace
+
+// OpenSubdiv's own limit at a dart vertex is its smooth limit mask (wrong
+// there: test_creases.cpp shows it for Catmull-Clark); its refinement rules
+// are right. So the dart's limit stencil and tangent plane are checked
+// against one step of Far's refinement: a left eigenvector for 1, and a
+// plane that step keeps, oriented as Bfr's surface near B.
+TEST_CASE("Loop darts' limit stencils and tangent planes are kept by OpenSubdiv's refinement", "[triangle][sector][dart][opensubdiv]") {
+  const sg::TriangleScheme loop = sg::load_triangle_scheme("loop");
+  for (int k = 3; k <= 8; ++k)
+    for (int p = 0; p < k; ++p) {
+      INFO("k = " << k << ", p = " << p);
+      if (sg::exact_triangle_sector(loop, {sg::SectorKind::Dart, k, p})) check_dart_limit_and_plane<sg::Rational>(loop, k, p);
+      else check_dart_limit_and_plane<sg::Real>(loop, k, p);
+    }
+}
+
+// Every face round a dart gives the same tangent plane (each position's
+// stencils are solved apart, over its own layout).
+TEST_CASE("the faces round a Loop dart agree on its tangent plane", "[triangle][sector][dart]") {
+  const sg::TriangleScheme loop = sg::load_triangle_scheme("loop");
+  for (int k = 3; k <= 8; ++k) {
+    const sg::BoundaryWedge wedge(k);
+    WedgeMesh mesh(wedge, 5, true);
+    std::mt19937 rng(33u + static_cast<unsigned>(k));
+    std::uniform_real_distribution<double> U(-1, 1);
+    std::vector<Vec> positions(mesh.vertex.size());
+    for (auto& x : positions) x = {U(rng), U(rng), U(rng)};
+    std::optional<Vec> first;
+    for (int p = 0; p < k; ++p) {
+      INFO("k = " << k << ", p = " << p);
+      const sg::BoundarySector dart{sg::SectorKind::Dart, k, p};
+      std::string why;
+      std::optional<sg::TangentStencils> t;
+      std::vector<sg::WedgePoint> layout;
+      if (sg::exact_triangle_sector(loop, dart)) {
+        const auto patch = sg::solve_triangle_sector<sg::Rational>(loop, dart, 8, sg::solve_regular(loop, 8));
+        t = sg::triangle_sector_tangents(patch, why), layout = patch.layout;
+      } else {
+        const auto patch = sg::solve_triangle_sector<sg::Real>(loop, dart, 8, sg::solve_regular(loop, 8));
+        t = sg::triangle_sector_tangents(patch, why), layout = patch.layout;
+      }
+      INFO(why);
+      REQUIRE(t);
+      auto apply = [&](const std::vector<sg::Real>& w) {
+        Vec out{0, 0, 0};
+        for (std::size_t h = 0; h < layout.size(); ++h)
+          for (std::size_t c = 0; c < 3; ++c) out[c] += sg::to_double(w[h]) * positions[static_cast<std::size_t>(mesh.vertex.at(layout[h]))][c];
+        return out;
+      };
+      const Vec n = unit(cross(apply(t->u), apply(t->v)));
+      if (!first) first = n;
+      CHECK(dot(n, *first) > 1 - 1e-12);
+    }
+  }
+}
+
 // The tables keep a sector's cells, not its stencils; the runtime makes the
 // stencils from them (TriangleTables::expand_sector). They equal the
 // generator's exact stencils at every node and centre of every rate.
@@ -208,8 +412,8 @@ TEST_CASE("Loop sector stencils made by the runtime equal the generator's exact 
   const auto tables = stencil_runtime::TriangleTables::load((dir / "loop" / "loop.sgt").string());
   const sg::TriangleScheme loop = sg::load_triangle_scheme("loop");
   int sectors = 0;
-  for (const auto kind : {sg::SectorKind::Crease, sg::SectorKind::Corner})
-    for (int k = 1; k <= 7; ++k)
+  for (const auto kind : {sg::SectorKind::Crease, sg::SectorKind::Corner, sg::SectorKind::Dart})
+    for (int k = kind == sg::SectorKind::Dart ? 3 : 1; k <= 7; ++k)
       for (int p = 0; p < k; ++p) {
         const stencil_runtime::SectorKey key{static_cast<stencil_runtime::SectorRule>(kind), k, p};
         const auto code = tables.sector_code(key);
@@ -221,7 +425,8 @@ TEST_CASE("Loop sector stencils made by the runtime equal the generator's exact 
         ++sectors;
         INFO(key.name());
         for (int n : {1, 2, 5, 6}) {
-          const auto exact = sg::solve_triangle_sector(loop, {kind, k, p}, 3 * n, sg::solve_regular(loop, 3 * n));
+          const sg::BoundarySector sector{kind, k, p};
+          const auto exact = sg::solve_triangle_sector<sg::Real>(loop, sector, 3 * n, sg::solve_regular(loop, 3 * n));
           const auto& layout = tables.layout(*code);
           REQUIRE(layout.size() == exact.layout.size());
           for (std::size_t h = 0; h < layout.size(); ++h)
@@ -238,7 +443,7 @@ TEST_CASE("Loop sector stencils made by the runtime equal the generator's exact 
           CHECK(worst < 1e-14);
         }
       }
-  CHECK(sectors == 2 * 28 - 3);
+  CHECK(sectors == 2 * 28 - 3 + (28 - 3));
 }
 
 // Threads that ask for a sector's stencils at once all get the same ones (the

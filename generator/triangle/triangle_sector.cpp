@@ -4,8 +4,9 @@
 #include <functional>
 #include <set>
 #include <string>
+#include <type_traits>
 
-#include "algebra/exact_linear_system.hpp"
+#include "algebra/limit_stencil.hpp"
 #include "algebra/integer_division.hpp"
 #include "base/error.hpp"
 #include "base/limits.hpp"
@@ -60,10 +61,30 @@ std::array<WedgePoint, 3> BoundaryWedge::phantom_parts(const WedgePoint& p) cons
 
 namespace {
 
-void add(WedgeRow& row, const WedgeRow& other, const Rational& w) {
+template <class T>
+using Row = std::map<WedgePoint, T>;  // weights over (real) points
+
+template <class T>
+void add(Row<T>& row, const Row<T>& other, const T& w) {
   for (const auto& [q, x] : other) row[q] += w * x;
 }
 
+template <class T>
+T convert(const Rational& x) {
+  if constexpr (std::is_same_v<T, Rational>) return x;
+  else return to_real(x);
+}
+
+Real as_real(const Rational& x) { return to_real(x); }
+const Real& as_real(const Real& x) { return x; }
+
+template <class T>
+T magnitude(const T& x) {
+  return x < 0 ? T(-x) : x;
+}
+
+// Loop's one step on the wedge chart, in T.
+template <class T>
 class WedgeRules {
  public:
   WedgeRules(const TriangleScheme& s, const BoundaryWedge& wedge, SectorKind kind) : s_(s), wedge_(wedge), kind_(kind) {
@@ -71,18 +92,33 @@ class WedgeRules {
       throw Error("scheme '" + s.name + "': boundary patches exist for Loop's refinement only");
     if (!s.has_crease)
       throw Error("scheme '" + s.name + "' names no crease_curve, so it has no rule along a boundary");
-    if (kind != SectorKind::Crease && kind != SectorKind::Corner)
+    if (kind != SectorKind::Crease && kind != SectorKind::Corner && kind != SectorKind::Dart)
       throw Error(std::string("internal: no triangle sector of kind ") + sector_kind_name(kind));
-    w6_ = *s.exact_neighbour_weight(6);
+    if (kind == SectorKind::Dart && wedge.faces() < 3)
+      throw Error("internal: a dart of valence " + std::to_string(wedge.faces()));
+    edge_end_ = convert<T>(s.edge_end), edge_opposite_ = convert<T>(s.edge_opposite);
+    crease_centre_ = convert<T>(s.crease_centre), crease_neighbour_ = convert<T>(s.crease_neighbour);
+    w6_ = convert<T>(*s.exact_neighbour_weight(6));
+    if (kind == SectorKind::Dart) {
+      if constexpr (std::is_same_v<T, Rational>) {
+        const auto w = s.exact_neighbour_weight(wedge.faces());
+        if (!w)
+          throw Error("scheme '" + s.name + "', valence " + std::to_string(wedge.faces()) +
+                      ": the smooth rule at a dart is irrational; solve it in high precision");
+        dart_ = *w;
+      } else {
+        dart_ = s.real_neighbour_weight(wedge.faces());
+      }
+    }
   }
 
-  WedgeRow refined(const WedgePoint& p) const {
+  Row<T> refined(const WedgePoint& p) const {
     if (wedge_.phantom(p)) {
       const auto parts = wedge_.phantom_parts(p);
-      WedgeRow row;
-      add(row, refined(parts[0]), Rational(1));
-      add(row, refined(parts[1]), Rational(1));
-      add(row, refined(parts[2]), Rational(-1));
+      Row<T> row;
+      add(row, refined(parts[0]), T(1));
+      add(row, refined(parts[1]), T(1));
+      add(row, refined(parts[2]), T(-1));
       return row;
     }
     if (p.a % 2 == 0 && p.b % 2 == 0) return vertex(WedgePoint{p.sector, p.a / 2, p.b / 2});
@@ -91,16 +127,16 @@ class WedgeRules {
       if ((p.a - d[0]) % 2 != 0 || (p.b - d[1]) % 2 != 0) continue;
       const long qa = floor_div(p.a - d[0], 2), qb = floor_div(p.b - d[1], 2);
       const WedgePoint c0 = real(p.sector, qa, qb), c1 = real(p.sector, qa + d[0], qb + d[1]);
-      WedgeRow row;
-      if (same_ray(c0, c1)) {
-        row[c0] += Rational(1, 2), row[c1] += Rational(1, 2);
+      Row<T> row;
+      if (same_ray(c0, c1)) {  // a boundary edge, or a side of a dart's slit
+        row[c0] += T(Rational(1, 2)), row[c1] += T(Rational(1, 2));
         return row;
       }
       const long* l = kTriangleNeighbours[(i + 1) % 6];
       const long* r = kTriangleNeighbours[(i + 5) % 6];
-      row[c0] += s_.edge_end, row[c1] += s_.edge_end;
-      row[real(p.sector, qa + l[0], qb + l[1])] += s_.edge_opposite;
-      row[real(p.sector, qa + r[0], qb + r[1])] += s_.edge_opposite;
+      row[c0] += edge_end_, row[c1] += edge_end_;
+      row[real(p.sector, qa + l[0], qb + l[1])] += edge_opposite_;
+      row[real(p.sector, qa + r[0], qb + r[1])] += edge_opposite_;
       return row;
     }
     throw Error("internal: no Loop rule for a refined wedge point");
@@ -121,22 +157,26 @@ class WedgeRules {
     return x.sector == y.sector;
   }
 
-  WedgeRow vertex(const WedgePoint& q) const {
-    WedgeRow row;
+  Row<T> vertex(const WedgePoint& q) const {
+    Row<T> row;
+    const int k = wedge_.faces();
     if (q.a == 0) {  // B
       if (kind_ == SectorKind::Corner) {
-        row[q] += 1;
+        row[q] += T(1);
+      } else if (kind_ == SectorKind::Dart) {  // the smooth rule at valence k: e_k is e_0 again, seen once
+        row[q] += T(1) - T(k) * dart_;
+        for (int j = 0; j < k; ++j) row[real(j, 1, 0)] += dart_;
       } else {
-        row[q] += s_.crease_centre;
-        row[real(0, 1, 0)] += s_.crease_neighbour;
-        row[real(wedge_.faces(), 1, 0)] += s_.crease_neighbour;
+        row[q] += crease_centre_;
+        row[real(0, 1, 0)] += crease_neighbour_;
+        row[real(k, 1, 0)] += crease_neighbour_;
       }
     } else if (wedge_.on_boundary(q)) {  // along its ray
-      row[q] += s_.crease_centre;
-      row[real(q.sector, q.a - 1, 0)] += s_.crease_neighbour;
-      row[real(q.sector, q.a + 1, 0)] += s_.crease_neighbour;
+      row[q] += crease_centre_;
+      row[real(q.sector, q.a - 1, 0)] += crease_neighbour_;
+      row[real(q.sector, q.a + 1, 0)] += crease_neighbour_;
     } else {
-      row[q] += 1 - 6 * w6_;
+      row[q] += T(1) - T(6) * w6_;
       for (const auto& d : kTriangleNeighbours) row[real(q.sector, q.a + d[0], q.b + d[1])] += w6_;
     }
     return row;
@@ -145,7 +185,7 @@ class WedgeRules {
   const TriangleScheme& s_;
   const BoundaryWedge& wedge_;
   SectorKind kind_;
-  Rational w6_;
+  T edge_end_, edge_opposite_, crease_centre_, crease_neighbour_, w6_, dart_ = 0;
 };
 
 // The three regular children of face p (frame p, refined lattice): their corners.
@@ -153,21 +193,21 @@ constexpr long kRegularChildren[3][3][2] = {{{1, 0}, {2, 0}, {2, 1}}, {{1, 1}, {
 
 }  // namespace
 
-WedgeRow refined_wedge_point(const TriangleScheme& scheme, const BoundaryWedge& wedge, SectorKind kind,
-                             const WedgePoint& p) {
-  return WedgeRules(scheme, wedge, kind).refined(p);
+bool exact_triangle_sector(const TriangleScheme& scheme, const BoundarySector& sector) {
+  return sector.kind != SectorKind::Dart || scheme.exact_neighbour_weight(sector.faces).has_value();
 }
 
-TriangleSectorPatch solve_triangle_sector(const TriangleScheme& scheme, const BoundarySector& sector, long g,
-                                          const BivariateSolution& regular) {
+template <class T>
+TriangleSectorPatch<T> solve_triangle_sector(const TriangleScheme& scheme, const BoundarySector& sector, long g,
+                                             const BivariateSolution& regular) {
   const int k = sector.faces, p = sector.position;
   if (k < 1 || k > limits::kMaxValence || p < 0 || p >= k)
     throw Error("internal: no boundary sector of " + std::to_string(k) + " faces with face " + std::to_string(p));
   if (regular.n != g) throw Error("internal: the regular solution is for another grid");
   const BoundaryWedge wedge(k);
-  const WedgeRules rules(scheme, wedge, sector.kind);
-  std::map<WedgePoint, WedgeRow> memo;
-  auto refined = [&](const WedgePoint& x) -> const WedgeRow& {
+  const WedgeRules<T> rules(scheme, wedge, sector.kind);
+  std::map<WedgePoint, Row<T>> memo;
+  auto refined = [&](const WedgePoint& x) -> const Row<T>& {
     auto it = memo.find(x);
     if (it == memo.end()) it = memo.emplace(x, rules.refined(x)).first;
     return it->second;
@@ -197,7 +237,7 @@ TriangleSectorPatch solve_triangle_sector(const TriangleScheme& scheme, const Bo
     if (next.size() == points.size()) break;
     points = std::move(next);
   }
-  TriangleSectorPatch out;
+  TriangleSectorPatch<T> out;
   out.sector = sector;
   out.grid = g;
   out.layout.push_back(WedgePoint{});
@@ -212,7 +252,7 @@ TriangleSectorPatch solve_triangle_sector(const TriangleScheme& scheme, const Bo
   std::map<WedgePoint, std::size_t> index;
   for (std::size_t h = 0; h < out.layout.size(); ++h) index[out.layout[h]] = h;
   const std::size_t m = out.layout.size();
-  auto dense = [&](const WedgeRow& row, const Rational& w, std::vector<Rational>& into) {
+  auto dense = [&](const Row<T>& row, const T& w, std::vector<T>& into) {
     for (const auto& [q, x] : row) {
       const auto it = index.find(q);
       if (it == index.end()) throw Error("internal: a refined point needs a point outside the sector's layout");
@@ -221,27 +261,34 @@ TriangleSectorPatch solve_triangle_sector(const TriangleScheme& scheme, const Bo
   };
 
   // A0 and W(0).
-  std::vector<std::vector<std::pair<std::size_t, Rational>>> a0(m);
+  std::vector<std::vector<std::pair<std::size_t, T>>> a0(m);
   for (std::size_t h = 0; h < m; ++h) {
-    std::vector<Rational> row(m);
-    dense(refined(out.layout[h]), Rational(1), row);
+    std::vector<T> row(m, T(0));
+    dense(refined(out.layout[h]), T(1), row);
     for (std::size_t c = 0; c < m; ++c)
       if (row[c] != 0) a0[h].emplace_back(c, row[c]);
   }
   out.child_at_vertex = a0;
-  const LinearSolution fixed = left_fixed_vector(a0);
-  if (fixed.status != LinearSolution::Status::Unique)
-    throw Error("scheme '" + scheme.name + "', " + sector.name() + ": the limit stencil has " + fixed.describe());
+  const std::vector<T> fixed = limit_stencil(a0, "scheme '" + scheme.name + "', " + sector.name());
+  {
+    std::vector<T> diff = fixed;
+    for (T& x : diff) x = -x;
+    for (std::size_t h = 0; h < m; ++h)
+      for (const auto& [c, x] : a0[h]) diff[c] += fixed[h] * x;
+    for (const T& d : diff) out.eigen_residual = std::max(out.eigen_residual, magnitude(d));
+    if constexpr (std::is_same_v<T, Rational>)
+      if (out.eigen_residual != 0) throw Error("internal: " + sector.name() + ": the exact limit stencil is not fixed");
+  }
 
   out.stencils.assign(static_cast<std::size_t>((g + 1) * (g + 1)), {});
-  std::function<const std::vector<Rational>&(long, long)> solve = [&](long i, long j) -> const std::vector<Rational>& {
-    std::vector<Rational>& w = out.stencils[static_cast<std::size_t>(j * (g + 1) + i)];
+  std::function<const std::vector<T>&(long, long)> solve = [&](long i, long j) -> const std::vector<T>& {
+    std::vector<T>& w = out.stencils[static_cast<std::size_t>(j * (g + 1) + i)];
     if (!w.empty()) return w;
-    std::vector<Rational> result(m);
+    std::vector<T> result(m, T(0));
     if (i == 0 && j == 0) {
-      result = fixed.values;
+      result = fixed;
     } else if (2 * (i + j) <= g) {  // the child at B: the same patch, one step on
-      const std::vector<Rational>& fine = solve(2 * i, 2 * j);
+      const std::vector<T>& fine = solve(2 * i, 2 * j);
       for (std::size_t h = 0; h < m; ++h)
         if (fine[h] != 0)
           for (const auto& [c, x] : a0[h]) result[c] += fine[h] * x;
@@ -250,7 +297,7 @@ TriangleSectorPatch solve_triangle_sector(const TriangleScheme& scheme, const Bo
       for (long ra = floor_div(xa, g) - 2; ra <= floor_div(xa, g) + 3; ++ra)
         for (long rb = floor_div(xb, g) - 2; rb <= floor_div(xb, g) + 3; ++rb) {
           const Rational phi = regular.at(xa - g * ra, xb - g * rb);
-          if (phi != 0) dense(refined(canonical(ra, rb)), phi, result);
+          if (phi != 0) dense(refined(canonical(ra, rb)), convert<T>(phi), result);
         }
     }
     return w = std::move(result);
@@ -260,21 +307,48 @@ TriangleSectorPatch solve_triangle_sector(const TriangleScheme& scheme, const Bo
   return out;
 }
 
-std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatch& patch, std::string& why) {
-  if (patch.sector.kind != SectorKind::Crease) {
+template <class T>
+std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatch<T>& patch, std::string& why) {
+  const SectorKind kind = patch.sector.kind;
+  if (kind != SectorKind::Crease && kind != SectorKind::Dart) {
     why = "a corner has no tangent plane";
     return std::nullopt;
   }
   const long g = patch.grid;
   if (g < 2) throw Error("internal: a sector's tangents need a grid of at least 2");
   const std::size_t m = patch.layout.size();
-  std::vector<std::vector<Real>> a0(m, std::vector<Real>(m, Real(0)));
-  for (std::size_t r = 0; r < m; ++r)
-    for (const auto& [c, w] : patch.child_at_vertex.at(r)) a0[r][c] += to_real(w);
-  auto real = [&](long i, long j) {
-    std::vector<Real> w;
-    for (const Rational& x : patch.at(i, j)) w.push_back(to_real(x));
-    return w;
+  const int k = patch.sector.faces;
+  // A dart's slit folded shut: each point on ray k onto its twin on ray 0 (the
+  // same mesh point), where the layout holds both. Its A0 then has no slit modes (ray k minus ray 0, such as
+  // e_k - e_0 for 1/2, zero on any mesh), and its plane needs no boundary curve.
+  const bool dart = kind == SectorKind::Dart;
+  std::map<WedgePoint, std::size_t> index;
+  for (std::size_t h = 0; h < m; ++h) index[patch.layout[h]] = h;
+  // A point of ray k whose twin the layout lacks stands for itself.
+  auto twin_of = [&](std::size_t h) -> std::optional<std::size_t> {
+    const WedgePoint& q = patch.layout[h];
+    if (!dart || q.sector != k || q.b != 0) return std::nullopt;
+    const auto twin = index.find(WedgePoint{0, q.a, 0});
+    if (twin == index.end()) return std::nullopt;
+    return twin->second;
+  };
+  std::vector<std::size_t> to(m);
+  std::size_t n = 0;
+  for (std::size_t h = 0; h < m; ++h)
+    if (!twin_of(h)) to[h] = n++;
+  for (std::size_t h = 0; h < m; ++h)
+    if (const auto twin = twin_of(h)) to[h] = to[*twin];
+  std::vector<std::vector<Real>> a0(n, std::vector<Real>(n, Real(0)));
+  std::vector<char> row_done(n, 0);
+  for (std::size_t r = 0; r < m; ++r) {
+    if (row_done[to[r]]) continue;  // a twin's row repeats its ray-0 point's on the folded mesh
+    row_done[to[r]] = 1;
+    for (const auto& [c, w] : patch.child_at_vertex.at(r)) a0[to[r]][to[c]] += as_real(w);
+  }
+  auto folded = [&](const std::vector<T>& w) {
+    std::vector<Real> out(n, Real(0));
+    for (std::size_t h = 0; h < m; ++h) out[to[h]] += as_real(w[h]);
+    return out;
   };
   // The samples: every node, numbered j-major over the triangle; the cells: the
   // grid's up and down triangles, counter-clockwise in (u, v).
@@ -284,7 +358,7 @@ std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatc
     for (long i = 0; i + j <= g; ++i) {
       number[{i, j}] = samples.size();
       samples.emplace_back();
-      for (const Rational& x : patch.at(i, j)) samples.back().push_back(to_double(x));
+      for (const Real& x : folded(patch.at(i, j))) samples.back().push_back(to_double(x));
     }
   std::vector<std::vector<std::size_t>> cells;
   for (long j = 0; j < g; ++j)
@@ -292,27 +366,46 @@ std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatc
       cells.push_back({number[{i, j}], number[{i + 1, j}], number[{i, j + 1}]});
       if (i + j + 2 <= g) cells.push_back({number[{i + 1, j}], number[{i + 1, j + 1}], number[{i, j + 1}]});
     }
-  // The boundary curve's tangent at B: e_k - e_0 (layout positions 1 and 1 + k).
-  std::vector<Real> boundary(m, Real(0));
-  boundary[1] = -1;
-  boundary[1 + static_cast<std::size_t>(patch.sector.faces)] = 1;
-  return boundary_tangent_stencils(a0, real(g, 0), real(0, g), boundary, samples, cells, why);
+  // The boundary curve's tangent at B: e_k - e_0 (layout positions 1 and 1 + k); none at a dart.
+  std::vector<Real> boundary;
+  if (!dart) {
+    boundary.assign(m, Real(0));
+    boundary[1] = -1;
+    boundary[1 + static_cast<std::size_t>(k)] = 1;
+  }
+  auto t = boundary_tangent_stencils(a0, folded(patch.at(g, 0)), folded(patch.at(0, g)), boundary, samples, cells, why);
+  if (t && dart)  // back onto the layout: weight on ray 0, none on its twins
+    for (std::vector<Real>* s : {&t->u, &t->v}) {
+      std::vector<Real> spread(m, Real(0));
+      for (std::size_t h = 0; h < m; ++h)
+        if (!twin_of(h)) spread[h] = (*s)[to[h]];
+      *s = std::move(spread);
+    }
+  return t;
 }
 
-TriangleSectorDescent triangle_sector_descent(const TriangleScheme& scheme, const BoundarySector& sector,
-                                              const std::vector<SectorPoint>& regular_layout) {
+namespace {
+
+template <class T>
+TriangleSectorDescent sector_descent(const TriangleScheme& scheme, const BoundarySector& sector,
+                                     const std::vector<SectorPoint>& regular_layout) {
   constexpr long kGrid = 8;  // the characteristic map's regularity is checked on this grid
-  TriangleSectorPatch patch = solve_triangle_sector(scheme, sector, kGrid, solve_regular(scheme, kGrid));
+  TriangleSectorPatch<T> patch = solve_triangle_sector<T>(scheme, sector, kGrid, solve_regular(scheme, kGrid));
   TriangleSectorDescent out;
   out.sector = sector;
-  out.limit = patch.at(0, 0);
+  out.exact = std::is_same_v<T, Rational>;
+  out.eigen_residual = as_real(patch.eigen_residual);
+  for (const T& x : patch.at(0, 0)) out.limit.push_back(as_real(x));
   out.tangents = triangle_sector_tangents(patch, out.no_tangents);
-  out.child_at_vertex = std::move(patch.child_at_vertex);
+  for (const auto& row : patch.child_at_vertex) {
+    out.child_at_vertex.emplace_back();
+    for (const auto& [c, w] : row) out.child_at_vertex.back().emplace_back(c, as_real(w));
+  }
   out.layout = std::move(patch.layout);
   std::map<WedgePoint, std::size_t> index;
   for (std::size_t h = 0; h < out.layout.size(); ++h) index[out.layout[h]] = h;
   const BoundaryWedge wedge(sector.faces);
-  const WedgeRules rules(scheme, wedge, sector.kind);
+  const WedgeRules<T> rules(scheme, wedge, sector.kind);
   for (int c = 0; c < 3; ++c) {
     const long(&corner)[3][2] = kRegularChildren[c];
     for (const SectorPoint& q : regular_layout) {
@@ -323,12 +416,12 @@ TriangleSectorDescent triangle_sector_descent(const TriangleScheme& scheme, cons
       const long fb = corner[0][1] + a * (corner[1][1] - corner[0][1]) + b * (corner[2][1] - corner[1][1]);
       const auto fine = wedge.canonical(sector.position, fa, fb);
       if (!fine) throw Error("internal: a regular cell of " + sector.name() + " reaches beyond the phantom rows");
-      std::vector<std::pair<std::size_t, Rational>> row;
+      std::vector<std::pair<std::size_t, Real>> row;
       for (const auto& [x, w] : rules.refined(*fine)) {
         if (w == 0) continue;
         const auto it = index.find(x);
         if (it == index.end()) throw Error("internal: a regular cell of " + sector.name() + " needs a point outside its layout");
-        row.emplace_back(it->second, w);
+        row.emplace_back(it->second, as_real(w));
       }
       std::sort(row.begin(), row.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
       out.regular_children[static_cast<std::size_t>(c)].push_back(std::move(row));
@@ -337,16 +430,33 @@ TriangleSectorDescent triangle_sector_descent(const TriangleScheme& scheme, cons
   return out;
 }
 
-std::vector<BoundarySector> triangle_sectors(int max_faces, bool corners) {
+}  // namespace
+
+TriangleSectorDescent triangle_sector_descent(const TriangleScheme& scheme, const BoundarySector& sector,
+                                              const std::vector<SectorPoint>& regular_layout) {
+  return exact_triangle_sector(scheme, sector) ? sector_descent<Rational>(scheme, sector, regular_layout)
+                                               : sector_descent<Real>(scheme, sector, regular_layout);
+}
+
+std::vector<BoundarySector> triangle_sectors(int max_faces, bool sharp) {
   std::vector<BoundarySector> out;
-  for (SectorKind kind : {SectorKind::Crease, SectorKind::Corner}) {
-    if (kind == SectorKind::Corner && !corners) continue;
-    for (int k = 1; k <= max_faces; ++k) {
+  for (SectorKind kind : {SectorKind::Crease, SectorKind::Corner, SectorKind::Dart}) {
+    if (kind != SectorKind::Crease && !sharp) continue;
+    for (int k = kind == SectorKind::Dart ? 3 : 1; k <= max_faces; ++k) {
       if (k == 3 && kind == SectorKind::Crease) continue;  // regular boundary patches (phantom points)
       for (int p = 0; p < k; ++p) out.push_back({kind, k, p});
     }
   }
   return out;
 }
+
+template struct TriangleSectorPatch<Rational>;
+template struct TriangleSectorPatch<Real>;
+template TriangleSectorPatch<Rational> solve_triangle_sector(const TriangleScheme&, const BoundarySector&, long,
+                                                             const BivariateSolution&);
+template TriangleSectorPatch<Real> solve_triangle_sector(const TriangleScheme&, const BoundarySector&, long,
+                                                         const BivariateSolution&);
+template std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatch<Rational>&, std::string&);
+template std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatch<Real>&, std::string&);
 
 }  // namespace sg

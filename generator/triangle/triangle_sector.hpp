@@ -19,8 +19,15 @@
 //
 // Rules: inside, the scheme's regular ones; along the rays the crease curve
 // (vertex crease_centre, crease_neighbour; edge midpoint); B follows the crease
-// curve over e_0 and e_k (Crease) or stays put (Corner). All are rational, so
-// the stencils are exact.
+// curve over e_0 and e_k (Crease), stays put (Corner), or follows the scheme's
+// smooth rule at valence k over e_0..e_{k-1} (Dart). A dart is the same chart
+// with rays 0 and k the two sides of its slit: the infinitely sharp crease that
+// ends at B, cut open (the runtime gathers the same mesh points on both, as it
+// gathers the copies the cut makes). The slit's modes (ray k minus ray 0) are
+// zero on any mesh and do not reach the rest: the subspace with equal sides is
+// kept by A0, so W(x) there is the dart's surface. The crease and corner rules
+// are rational, so their stencils are exact; a dart's are where Loop's smooth
+// rule is (valence 3, 4, 6), and in 80 digits with residuals elsewhere.
 //
 // Method (as the quad sectors): with A0 the one-step matrix of the patch's
 // points onto its child at B, W(x) = W(2x) A0 for x in that child
@@ -68,37 +75,40 @@ class BoundaryWedge {
   int k_;
 };
 
-using WedgeRow = std::map<WedgePoint, Rational>;  // weights over (real) points
-
+// T: Rational (exact) or Real (80 digits: a dart where Loop's smooth rule is irrational).
+template <class T = Rational>
 struct TriangleSectorPatch {
   BoundarySector sector;
   long grid = 1;
-  std::vector<WedgePoint> layout;                // the control points: B, e_0..e_k, then by (a, sector, b)
-  std::vector<std::vector<Rational>> stencils;  // W(i/g, j/g) over `layout`, index j * (g + 1) + i, i + j <= g
+  std::vector<WedgePoint> layout;         // the control points: B, e_0..e_k, then by (a, sector, b)
+  std::vector<std::vector<T>> stencils;  // W(i/g, j/g) over `layout`, index j * (g + 1) + i, i + j <= g
   // A0: the refined points at the layout's positions (the child at B) over the layout.
-  std::vector<std::vector<std::pair<std::size_t, Rational>>> child_at_vertex;
-  const std::vector<Rational>& at(long i, long j) const { return stencils[static_cast<std::size_t>(j * (grid + 1) + i)]; }
+  std::vector<std::vector<std::pair<std::size_t, T>>> child_at_vertex;
+  T eigen_residual = 0;  // max |W(0) A0 - W(0)| (zero when exact)
+  const std::vector<T>& at(long i, long j) const { return stencils[static_cast<std::size_t>(j * (grid + 1) + i)]; }
 };
 
-// The refined point p (canonical, on the lattice refined once: halves of the
-// coarse one) in the coarse real points. A phantom is b1 + b2 - r of refined
-// real points. Throws sg::Error for a scheme without crease curve or a kind
-// other than Crease and Corner.
-WedgeRow refined_wedge_point(const TriangleScheme& scheme, const BoundaryWedge& wedge, SectorKind kind,
-                             const WedgePoint& p);
+// Whether the sector's rules are rational (every kind but a dart at a valence
+// where the scheme's smooth rule is irrational).
+bool exact_triangle_sector(const TriangleScheme& scheme, const BoundarySector& sector);
 
 // The patch of `sector` at the grid g; `regular` is the regular scaling
-// function on (1/g)Z^2 (solve_regular). Loop schemes only.
-TriangleSectorPatch solve_triangle_sector(const TriangleScheme& scheme, const BoundarySector& sector, long g,
-                                          const BivariateSolution& regular);
+// function on (1/g)Z^2 (solve_regular). Loop schemes only; T = Rational
+// throws sg::Error where the rules are irrational (exact_triangle_sector).
+template <class T = Rational>
+TriangleSectorPatch<T> solve_triangle_sector(const TriangleScheme& scheme, const BoundarySector& sector, long g,
+                                             const BivariateSolution& regular);
 
 // The tangent plane at B of a crease sector's patch (algebra/tangent_stencils.hpp,
 // boundary_tangent_stencils): the two leading eigenvalues of A0 below 1 with a
 // regular characteristic map on the patch, whose eigenvectors hold the
-// boundary curve's tangent e_k - e_0. `patch` at any grid g >= 2 (its corner
-// stencils give the edges' far ends, its grid the map's cells). Nothing, with
-// `why`, for a corner (no tangent plane) or where the spectrum gives none.
-std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatch& patch, std::string& why);
+// boundary curve's tangent e_k - e_0. A dart's: those of A0 with the slit
+// folded shut (ray k's points onto ray 0's), no boundary curve to hold; its
+// stencils are 0 on ray k. `patch` at any grid g >= 2 (its corner stencils
+// give the edges' far ends, its grid the map's cells). Nothing, with `why`,
+// for a corner (no tangent plane) or where the spectrum gives none.
+template <class T>
+std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatch<T>& patch, std::string& why);
 
 // What the tables keep of a sector's patch: no stencils (every rate of every
 // sector would be large); the runtime makes them from this by the same
@@ -106,13 +116,15 @@ std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatc
 struct TriangleSectorDescent {
   BoundarySector sector;
   std::vector<WedgePoint> layout;
-  std::vector<Rational> limit;  // W(0)
+  bool exact = true;        // rational rules: every weight below is exact
+  Real eigen_residual = 0;  // of `limit` (zero when exact)
+  std::vector<Real> limit;  // W(0)
   // The four cells of one Loop step in the order of triangle_children.hpp: the
   // child at B (A0, rows over `layout` in `layout`'s order), then the regular
   // cells, up (1, 0), up (0, 1) and down (0, 0), each unrotated: per point of
   // valence 6's layout (as the tables store it), its row over `layout`.
-  std::vector<std::vector<std::pair<std::size_t, Rational>>> child_at_vertex;
-  std::array<std::vector<std::vector<std::pair<std::size_t, Rational>>>, 3> regular_children;
+  std::vector<std::vector<std::pair<std::size_t, Real>>> child_at_vertex;
+  std::array<std::vector<std::vector<std::pair<std::size_t, Real>>>, 3> regular_children;
   std::optional<TangentStencils> tangents;  // none for a corner, or where the spectrum gives no plane
   std::string no_tangents;                  // why not
 };
@@ -121,7 +133,8 @@ TriangleSectorDescent triangle_sector_descent(const TriangleScheme& scheme, cons
 
 // The sectors the runtime needs for boundary vertices in 1..max_faces faces:
 // every position of every k but 3 (in three faces the patches are regular,
-// with phantoms), as Crease; with `corners`, also Corner in every k.
-std::vector<BoundarySector> triangle_sectors(int max_faces, bool corners);
+// with phantoms), as Crease; with `sharp`, also Corner in every k and Dart at
+// valences 3..max_faces.
+std::vector<BoundarySector> triangle_sectors(int max_faces, bool sharp);
 
 }  // namespace sg

@@ -94,6 +94,9 @@ void put_sectors(std::string& out, const TriangleScheme& scheme, const TriangleT
   put<std::uint32_t>(out, static_cast<std::uint32_t>(data.size()));
   for (std::size_t s = 0; s < data.size(); ++s) {
     const TriangleSectorDescent& d = data[s];
+    if (!d.exact && !(d.eigen_residual < Real("1e-60")))  // as the tables' own high-precision patches
+      throw Error("scheme '" + scheme.name + "', " + d.sector.name() + ": the high-precision residual " +
+                  to_string(d.eigen_residual, 3) + " is too large");
     put<std::uint8_t>(out, static_cast<std::uint8_t>(d.sector.kind));
     put<std::uint32_t>(out, static_cast<std::uint32_t>(d.sector.faces));
     put<std::uint32_t>(out, static_cast<std::uint32_t>(d.sector.position));
@@ -103,8 +106,8 @@ void put_sectors(std::string& out, const TriangleScheme& scheme, const TriangleT
       put<std::int32_t>(out, static_cast<std::int32_t>(p.a));
       put<std::int32_t>(out, static_cast<std::int32_t>(p.b));
     }
-    for (const Rational& w : d.limit) put<double>(out, to_double(w));
-    auto rows = [](const std::vector<std::vector<std::pair<std::size_t, Rational>>>& exact) {
+    for (const Real& w : d.limit) put<double>(out, to_double(w));
+    auto rows = [](const std::vector<std::vector<std::pair<std::size_t, Real>>>& exact) {
       std::vector<std::vector<std::pair<std::size_t, double>>> r;
       for (const auto& row : exact) {
         r.emplace_back();
