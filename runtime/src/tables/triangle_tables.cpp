@@ -88,10 +88,11 @@ void TriangleTables::read_sectors(detail::BinaryReader& r, const std::function<s
     Sector sector;
     const auto rule = r.get<std::uint8_t>();
     const auto faces = r.get<std::uint32_t>(), position = r.get<std::uint32_t>();
-    if (rule > 1 || faces < 1 || faces > static_cast<std::uint32_t>(limits::kMaxValence) || position >= faces ||
-        (rule == 0 && faces == 3))
+    if (rule > 2 || faces < 1 || faces > static_cast<std::uint32_t>(limits::kMaxValence) || position >= faces ||
+        (rule == 0 && faces == 3) || (rule == 2 && faces < 3))
       r.fail("sector " + std::to_string(s) + ": invalid kind (rule " + std::to_string(rule) + ", " + std::to_string(faces) +
-             " faces, face " + std::to_string(position) + "; a boundary vertex in three faces has the regular patch)");
+             " faces, face " + std::to_string(position) + "; a boundary vertex in three faces has the regular patch, a "
+             "dart has at least three)");
     sector.key = {static_cast<SectorRule>(rule), static_cast<int>(faces), static_cast<int>(position)};
     const std::string where = "sector " + std::to_string(s) + " (" + sector.key.name() + ")";
     if (t.sector_code(sector.key)) r.fail(where + " is stored twice");
@@ -147,10 +148,10 @@ void TriangleTables::read_sectors(detail::BinaryReader& r, const std::function<s
     }
     Valence& v = *sector.data;
     v.valence = code;
-    v.exact = true;
+    v.exact = sector.key.rule != SectorRule::Dart;  // a dart's may come from 80 digits (Loop's smooth rule)
     if (left() < 1) r.fail(where + ": truncated before its tangent flag");
     const auto flag = r.get<std::uint8_t>();
-    if (flag > 1 || (flag == 1 && sector.key.rule != SectorRule::Crease)) r.fail(where + ": invalid tangent flag");
+    if (flag > 1 || (flag == 1 && sector.key.rule == SectorRule::Corner)) r.fail(where + ": invalid tangent flag");
     if (flag == 1) read_tangents(r, left(), points, where, v.tangents);
     v.regions.push_back(std::move(region));
     for (std::size_t slot = 0; slot < t.rates_.size(); ++slot) sector.rates.push_back(std::make_unique<SectorRate>());

@@ -53,7 +53,7 @@ Key key_of(const ChartPoint& p) { return {p.sector, p.a, p.b}; }
 }  // namespace
 
 bool loop_sector_vertex(const TriangleTopology& t, int v, SectorRule rule) {
-  return t.on_boundary(v) && (rule == SectorRule::Corner || t.valence(v) != 3);
+  return t.on_boundary(v) && (rule == SectorRule::Corner || rule == SectorRule::Dart || t.valence(v) != 3);
 }
 
 std::optional<TrianglePatch> loop_sector_patch(const TriangleTopology& t, std::size_t f, int corner,

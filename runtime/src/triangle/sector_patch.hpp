@@ -17,7 +17,8 @@ namespace stencil_runtime {
 
 // Whether B needs a sector's patch: on the boundary (of the mesh, or of the
 // mesh cut along its infinitely sharp edges) in other than three faces, or
-// with the corner rule.
+// with the corner or dart rule (a dart: the end of a slit, whose two sides are
+// the wedge's rays 0 and k, the cut's copies of the same points).
 bool loop_sector_vertex(const TriangleTopology& topology, int vertex, SectorRule rule);
 
 // The patch of face f, whose corner `corner` is B (with rule `rule`), or

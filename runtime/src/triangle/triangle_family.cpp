@@ -47,6 +47,10 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
   phantoms = PhantomPoints{};
   phantoms.first = topo.vertices();
   for (std::size_t f = 0; f < topo.faces(); ++f) {
+    for (int c = 0; c < 3; ++c) {  // a dart whose slit is one edge between two darts: a step splits it
+      const int v = topo.vertex(f, c);
+      if (rules[static_cast<std::size_t>(v)] == SectorRule::Dart && !topo.on_boundary(v)) return false;
+    }
     const bool at_boundary = topo.touches_boundary(f);
     // A corner on the boundary in other than three faces, or a corner: the sector's patch (sector_patch.hpp).
     int sector_corner = -1, sectors = 0;
@@ -63,6 +67,10 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
     } else if (at_boundary || (topo.has_boundary() && regular_loop_vertex(topo, topo.vertex(f, 0)) &&
                         regular_loop_vertex(topo, topo.vertex(f, 1)) && regular_loop_vertex(topo, topo.vertex(f, 2)))) {
       patch = regular_boundary_patch(topo, f, tables, phantoms);
+      // Inside, next to an extraordinary vertex of low valence, its vertices'
+      // fans do not unfold onto one lattice, though the face is regular: the
+      // tables' chart walk finds its points.
+      if (!patch && !at_boundary) patch = find_triangle_patch(topo, f, tables);
       if (!patch && topo.touches_marked(f, no_surface)) {
         patch.emplace();
         patch->points.assign(tables.layout(6).size(), topo.vertex(f, 0));  // a hole: never evaluated
@@ -79,9 +87,9 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
 // The vertices of a Loop mesh cut along its infinitely sharp edges (`cut`,
 // whose links are `links`), checked once on the input (steps keep every
 // vertex's number of faces and rule): inside ones need their valence in the
-// tables (darts and cone points are refused); one on a boundary of the cut
-// mesh, the mesh's own or a crease, in three faces with the crease rule has
-// the regular boundary patch (boundary_patch.hpp), any other needs its
+// tables (cone points are refused); one on a boundary of the cut mesh, the
+// mesh's own or a crease, in three faces with the crease rule has the regular
+// boundary patch (boundary_patch.hpp), any other and every dart needs its
 // sector's patches in the tables (sector_patch.hpp). With `none`
 // (`no_surface`) the faces at the mesh's own boundary have no surface, so any
 // vertex will do there.
@@ -95,11 +103,9 @@ void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const P
     if (cut.rule[v] == SectorRule::Cone)
       throw MeshError(who + " is a cone point (infinitely sharp, on no infinitely sharp edge); " + scheme +
                       " has no patches for cone points yet");
-    if (cut.rule[v] == SectorRule::Dart)  // inside the mesh, on the slit's end (a boundary of the cut when its neighbour is split)
-      throw MeshError(who + " ends an infinitely sharp crease (a dart); " + scheme +
-                      " evaluates infinitely sharp creases and corners, not darts yet (their sectors take the smooth "
-                      "rule at the vertex)" + plan);
-    if (!links.boundary[v]) {
+    // A dart is on the slit's end; the cut leaves it inside when the slit's
+    // other end is a dart too (one sharp edge), until a step splits the edge.
+    if (!links.boundary[v] && cut.rule[v] != SectorRule::Dart) {
       if (cut.rule[v] == SectorRule::Corner)
         throw MeshError(who + " is an infinitely sharp corner; " + scheme + " has no patches for corners yet" + plan);
       valences.add_lazy(k, [&] { return who; });
@@ -113,7 +119,8 @@ void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const P
       const SectorKey key{cut.rule[v], k, p};
       if (tables.sector_code(key)) continue;
       const std::string what =
-          cut.rule[v] == SectorRule::Corner
+          cut.rule[v] == SectorRule::Dart ? " ends an infinitely sharp crease (a dart) at valence " + std::to_string(k)
+          : cut.rule[v] == SectorRule::Corner
               ? " is a corner in " + std::to_string(k) + (k == 1 ? " face" : " faces") +
                     " (a sharp vertex, three or more boundary or infinitely sharp edges, or with edge-and-corner a "
                     "boundary vertex in one face)"
@@ -122,6 +129,9 @@ void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const P
       if (!tables.has_sectors())
         throw MeshError(who + what + ", and the " + scheme + " tables hold no patches for boundary vertices (tables "
                         "from before version 7); regenerate them with this stencilgen");
+      if (cut.rule[v] == SectorRule::Dart && !tables.sector_code({SectorRule::Dart, 3, 0}))
+        throw MeshError(who + what + ", and the " + scheme + " tables hold no patches for darts (written before "
+                        "stencilgen wrote them); regenerate them with this stencilgen");
       // Tables hold the sectors of up to as many faces as their largest valence: the call that covers it.
       valences.add_boundary(k, who + what);
       break;
@@ -427,8 +437,10 @@ Point TriangleFamily::vertex_normal(const TrianglePatch& patch, double det, cons
   const std::vector<double>* tv = tables_.tangent_v(patch.valence);
   if ((!tu || !tv) && TriangleTables::is_sector_code(patch.valence)) {
     const SectorKey& s = tables_.sector(patch.valence);
-    throw EvaluationError(s.rule == SectorRule::Corner
-                              ? "a corner has no tangent plane, so there is no normal at it"
+    throw EvaluationError(s.rule == SectorRule::Corner ? "a corner has no tangent plane, so there is no normal at it"
+                          : s.rule == SectorRule::Dart
+                              ? "the spectrum of Loop's subdivision at a dart of valence " + std::to_string(s.faces) +
+                                    " (the end of an infinitely sharp crease) gives no tangent plane, so there is no normal at it"
                               : "Loop's boundary rules give no tangent plane at a boundary vertex in " + std::to_string(s.faces) +
                                     " faces that the spectrum of its subdivision shows (docs/runtime.md), so there is no "
                                     "normal at it");
