@@ -8,7 +8,8 @@
 // features beside them; creases that bend (a hexagonal loop), corners on a
 // ring and crossings (boundary sectors of the cut mesh). Also: tessellations
 // closed across creases; darts (the ends of creases inside the mesh, of
-// valence 3..8), and the refusals that remain (cone points).
+// valence 3..8), cone points (a sharp vertex on no sharp edge), and the
+// refusal that remains (sharp boundary edges under `none`).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -26,6 +27,7 @@
 #include "open_meshes.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
+#include "stencil_runtime/closest_point.hpp"
 #include "stencil_runtime/mesh_io.hpp"
 #include "stencil_runtime/tessellation.hpp"
 
@@ -60,6 +62,7 @@ struct Case {
   Mesh mesh;
   Features features;
   std::set<int> darts;  // OpenSubdiv's limit at a dart vertex is the smooth one: their own nodes are compared elsewhere
+  std::set<int> cones;
 };
 
 // For each vertex in `from`, one infinitely sharp edge to a neighbour (the
@@ -214,6 +217,25 @@ std::vector<Case> crease_cases() {
     c.darts = {8 + 3};
     out.push_back(c);
   }
+  // Cone points: sharp vertices on no sharp edge (B held, the smooth rules round it).
+  {
+    Case c{"torus 8x6, a cone point of valence 6 next to a sharp ring", triangle_torus(8, 6), {}};
+    ring(c.features, 8, 2, 10);
+    c.features.corner(3 * 8 + 3, 10);
+    c.cones = {3 * 8 + 3};
+    out.push_back(c);
+  }
+  {
+    Case c{"icosahedron, a cone point of valence 5", read_obj((kMeshes / "icosahedron.obj").string()), {}};
+    c.features.corner(c.mesh.face_vertices[0], 10);
+    c.cones = {c.mesh.face_vertices[0]};
+    out.push_back(c);
+  }
+  {
+    Case c{"tri-mix, cone points of valence 3, 4 and 8", read_obj((kMeshes / "tri-mix.obj").string()), {}};
+    for (int v : vertices_of_valence(c.mesh, {3, 4, 8})) c.features.corner(v, 10), c.cones.insert(v);
+    out.push_back(c);
+  }
   return out;
 }
 
@@ -260,7 +282,7 @@ TEST_CASE("Loop: tessellations stay closed across infinitely sharp creases", "[r
   }
 }
 
-TEST_CASE("Loop: the infinitely sharp features not evaluated yet are refused, naming the vertex", "[runtime][creases][loop]") {
+TEST_CASE("Loop: boundary edges tagged infinitely sharp under `none` are refused, naming the edge", "[runtime][creases][loop]") {
   const auto tables = loop_tables();
   const Mesh torus = triangle_torus(8, 6);
   auto refusal = [&](const Features& f) {
@@ -271,11 +293,6 @@ TEST_CASE("Loop: the infinitely sharp features not evaluated yet are refused, na
     }
     return std::string("accepted");
   };
-  {
-    Features cone;
-    cone.corner(5, 10);
-    CHECK_THAT(refusal(cone), Catch::Contains("vertex 5 is a cone point"));
-  }
   {
     // `none` with a tagged boundary edge: OpenSubdiv gives the faces at both
     // its ends a surface where both boundary edges are sharp; refused, for
@@ -344,4 +361,66 @@ TEST_CASE("Loop: at a dart the surface reaches its limit point and the normal is
     }
   }
   CHECK(darts >= 9);
+}
+
+// A cone point stays where its control vertex is, from every face round it,
+// and has no normal (no tangent plane); next to it the surface is Bfr's (the
+// cases above).
+TEST_CASE("Loop: a cone point's limit is its control vertex and it has no normal", "[runtime][creases][loop][cone]") {
+  const auto tables = loop_tables();
+  int cones = 0;
+  for (const Case& c : crease_cases()) {
+    if (c.cones.empty()) continue;
+    const Surface surface = surface_with(tables, c.mesh, c.features);
+    for (int cone : c.cones) {
+      INFO(c.name << ", cone point " << cone);
+      ++cones;
+      for (std::size_t f = 0; f < c.mesh.face_count(); ++f)
+        for (int k = 0; k < 3; ++k) {
+          if (c.mesh.face_vertices[3 * f + static_cast<std::size_t>(k)] != cone) continue;
+          CHECK(distance(surface.evaluate(f, grid(k == 1, k == 2, 1)), c.mesh.positions[static_cast<std::size_t>(cone)]) <
+                1e-14 * extent(c.mesh));
+          CHECK_THROWS_WITH(surface.normal(f, k == 1, k == 2), Catch::Contains("a cone point has no tangent plane"));
+        }
+    }
+  }
+  CHECK(cones >= 5);
+}
+
+// Closest points on meshes with darts and cone points (their sectors' hulls
+// bound the search as a boundary sector's do): on the surface, and no farther
+// than dense exact samples.
+TEST_CASE("Loop: closest points on meshes with darts and cone points lie on the surface and no farther than dense samples",
+          "[runtime][creases][loop][distance]") {
+  const auto tables = loop_tables();
+  std::mt19937 rng(31);
+  int meshes = 0;
+  for (const Case& c : crease_cases()) {
+    if (c.darts.empty() && c.cones.empty()) continue;
+    if (c.name.rfind("tri-torus", 0) == 0) continue;  // 192 faces: the smaller ones cover the same sectors
+    ++meshes;
+    const Surface surface = surface_with(tables, c.mesh, c.features);
+    const double size = extent(c.mesh);
+    std::vector<Point> samples;
+    Point lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (std::size_t f = 0; f < c.mesh.face_count(); ++f)
+      for (long j = 0; j <= 10; ++j)
+        for (long i = 0; i + j <= 10; ++i) {
+          samples.push_back(surface.evaluate(f, grid(i, j, 10)));
+          for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], samples.back()[k]), hi[k] = std::max(hi[k], samples.back()[k]);
+        }
+    const ClosestPointQuery query(surface);
+    for (int k = 0; k < 60; ++k) {
+      Point q;
+      for (int a = 0; a < 3; ++a) q[a] = std::uniform_real_distribution<double>(lo[a] - 0.3 * size, hi[a] + 0.3 * size)(rng);
+      const ClosestPoint found = query.find(q);
+      REQUIRE(found.found);
+      double nearest = 1e300;
+      for (const Point& s : samples) nearest = std::min(nearest, distance(q, s));
+      INFO(c.name << ", query " << k);
+      CHECK(found.distance <= nearest + 1e-9 * size);
+      CHECK(distance(surface.evaluate(found.face, found.u, found.v, 1e-12).point, found.point) < 1e-9 * size);
+    }
+  }
+  CHECK(meshes >= 6);
 }

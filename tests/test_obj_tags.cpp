@@ -138,13 +138,25 @@ TEST_CASE("tags the runtime cannot honour are refused, tags without effect chang
                                                                Catch::Contains("regenerate them"));
     CHECK_NOTHROW(SurfaceTopology::create(tables, m));
   }
-  // An infinitely sharp crease Loop cannot evaluate yet (a single edge: darts at both ends) names its vertex.
+  // An infinitely sharp crease of one edge on Loop's tetrahedron: darts of
+  // valence 3 at both ends, which the tables cover; a dart of valence 7 with
+  // tables up to valence 6 is refused naming the vertex and the call that
+  // covers it.
   {
     const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4", "sgt").string());
     std::ofstream(dir / "tet-crease.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
                                              "t crease 2/1/0 0 1 11\n";
-    CHECK_THROWS_WITH(SurfaceTopology::create(loop, read_obj((dir / "tet-crease.obj").string())),
-                      Catch::Contains("vertex 0 ends an infinitely sharp crease (a dart)") && Catch::Contains("not darts yet"));
+    CHECK_NOTHROW(SurfaceTopology::create(loop, read_obj((dir / "tet-crease.obj").string())));
+    {
+      std::ifstream in(kMeshes / "tri-torus.obj");
+      std::ofstream out(dir / "torus-dart.obj");
+      out << in.rdbuf() << "t crease 2/1/0 18 9 11\n";  // vertex 18 has valence 7, vertex 9 valence 6
+    }
+    const auto up_to_6 = Tables::load(generated_table("loop", "--valence 3-6 --n 4", "sgt").string());
+    CHECK_THROWS_WITH(SurfaceTopology::create(up_to_6, read_obj((dir / "torus-dart.obj").string())),
+                      Catch::Contains("vertex 18 ends an infinitely sharp crease (a dart) at valence 7") &&
+                          Catch::Contains("--valence"));
+    CHECK_NOTHROW(SurfaceTopology::create(loop, read_obj((dir / "torus-dart.obj").string())));
   }
   // Smooth triangles are Catmull-Clark's rule: refused, with the line, on nonpoly's mesh with triangles.
   {

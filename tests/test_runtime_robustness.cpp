@@ -391,10 +391,10 @@ TEST_CASE("triangle tables' children and regular polynomial are checked at load"
   refused(at + 24, 100000, "child 0: invalid entry 0");               // a column beyond the layout
   refused(at + 16, 0x7fffffff, "child 0: truncated rows");
   // The sectors (version 7) end the file: boundary vertices in 1..6 faces (6:
-  // the tables always hold the regular valence), 18 crease, 21 corner and 18
-  // dart sectors, the first a crease vertex in one face. One byte less is truncated.
+  // the tables always hold the regular valence), 18 crease, 21 corner, 18
+  // dart and 4 cone sectors, the first a crease vertex in one face. One byte less is truncated.
   std::string sectors_pattern;
-  put(sectors_pattern, 57u);
+  put(sectors_pattern, 61u);
   sectors_pattern.push_back('\0');
   for (std::uint32_t x : {1u, 0u}) put(sectors_pattern, x);
   const std::size_t sectors_at = body.rfind(sectors_pattern);
@@ -404,7 +404,7 @@ TEST_CASE("triangle tables' children and regular polynomial are checked at load"
   refused(sectors_at, 1000000, "truncated sector list");
   refused(sectors_at + 5, 0, "sector 0: invalid kind");
   refused(sectors_at + 5, 3, "a boundary vertex in three faces has the regular patch");
-  refused(sectors_at + 4, 2u | (1u << 8), "a dart has at least three");  // rule 2 (a dart) in one face
+  refused(sectors_at + 4, 2u | (1u << 8), "a dart or cone point has at least three");  // rule 2 (a dart) in one face
   // Sector 0 is a boundary vertex in one face: B, e_0, e_1 and three more points (layout from byte 17, 12 bytes each).
   refused(sectors_at + 13, 100, "a layout of 100 points");
   refused(sectors_at + 13, 2, "a layout of 2 points");

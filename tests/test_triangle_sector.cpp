@@ -75,7 +75,7 @@ double worst_difference(const sg::TriangleScheme& loop, const sg::BoundarySector
   const sg::BoundaryWedge wedge(sector.faces);
   const bool dart = sector.kind == sg::SectorKind::Dart;
   const long rings = dart ? 6 : 5;
-  WedgeMesh mesh(wedge, rings, dart);
+  WedgeMesh mesh(wedge, rings, dart || sector.kind == sg::SectorKind::Cone);  // a cone point's ring is closed
   std::mt19937 rng(77u + 31u * static_cast<unsigned>(sector.faces) + static_cast<unsigned>(sector.position));
   std::uniform_real_distribution<double> U(-1, 1);
   std::vector<std::array<double, 3>> positions(mesh.vertex.size());
@@ -401,6 +401,27 @@ TEST_CASE("the faces round a Loop dart agree on its tangent plane", "[triangle][
   }
 }
 
+// A cone point: B held, everything round it smooth (OpenSubdiv's corner rule
+// on a vertex inside the mesh on no sharp edge). Bfr's limit there is the
+// vertex itself, as ours.
+TEST_CASE("Loop cone points of valence 3..8 equal Bfr with a sharp vertex", "[triangle][sector][cone][opensubdiv]") {
+  const sg::TriangleScheme loop = sg::load_triangle_scheme("loop");
+  for (int k = 3; k <= 8; ++k)
+    for (long n : {1L, 2L, 3L, 5L, 8L}) {
+      INFO("k = " << k << ", n = " << n);
+      const sg::BoundarySector cone{sg::SectorKind::Cone, k, 0};
+      CHECK(sg::exact_triangle_sector(loop, cone));
+      CHECK(worst_difference(loop, cone, n, true) < 1e-13);
+    }
+  std::string why;
+  const auto patch = sg::solve_triangle_sector(loop, {sg::SectorKind::Cone, 5, 0}, 2, sg::solve_regular(loop, 2));
+  CHECK(patch.layout.size() >= 6);
+  CHECK(!sg::triangle_sector_tangents(patch, why));
+  CHECK(why == "a cone point has no tangent plane");
+  CHECK_THROWS_WITH(sg::solve_triangle_sector(loop, {sg::SectorKind::Cone, 5, 1}, 2, sg::solve_regular(loop, 2)),
+                    Catch::Contains("position 0 only"));
+}
+
 // The tables keep a sector's cells, not its stencils; the runtime makes the
 // stencils from them (TriangleTables::expand_sector). They equal the
 // generator's exact stencils at every node and centre of every rate.
@@ -412,9 +433,9 @@ TEST_CASE("Loop sector stencils made by the runtime equal the generator's exact 
   const auto tables = stencil_runtime::TriangleTables::load((dir / "loop" / "loop.sgt").string());
   const sg::TriangleScheme loop = sg::load_triangle_scheme("loop");
   int sectors = 0;
-  for (const auto kind : {sg::SectorKind::Crease, sg::SectorKind::Corner, sg::SectorKind::Dart})
-    for (int k = kind == sg::SectorKind::Dart ? 3 : 1; k <= 7; ++k)
-      for (int p = 0; p < k; ++p) {
+  for (const auto kind : {sg::SectorKind::Crease, sg::SectorKind::Corner, sg::SectorKind::Dart, sg::SectorKind::Cone})
+    for (int k = kind >= sg::SectorKind::Dart ? 3 : 1; k <= 7; ++k)
+      for (int p = 0; p < (kind == sg::SectorKind::Cone ? 1 : k); ++p) {
         const stencil_runtime::SectorKey key{static_cast<stencil_runtime::SectorRule>(kind), k, p};
         const auto code = tables.sector_code(key);
         if (k == 3 && kind == sg::SectorKind::Crease) {  // a regular boundary patch: not stored
@@ -443,7 +464,7 @@ TEST_CASE("Loop sector stencils made by the runtime equal the generator's exact 
           CHECK(worst < 1e-14);
         }
       }
-  CHECK(sectors == 2 * 28 - 3 + (28 - 3));
+  CHECK(sectors == 2 * 28 - 3 + (28 - 3) + 5);
 }
 
 // Threads that ask for a sector's stencils at once all get the same ones (the

@@ -19,7 +19,7 @@ int run(int argc, char** argv) {
       "extraordinary vertices of the given valences; quad schemes also get, up to the largest valence V, the\n"
       "patches at boundary vertices in 1..V faces, at corners, at darts and at cone points (what a mesh's\n"
       "boundaries and infinitely sharp creases and corners need); Loop likewise gets, in its binary tables, the\n"
-      "patches at boundary vertices in 1..V faces, at corners and at darts (not at cone points). Triangle schemes\n"
+      "patches at boundary vertices in 1..V faces, at corners, at darts and at cone points. Triangle schemes\n"
       "are exact where their weights are rational (e.g. valences 3, 4, 6) and solved in high precision (80 digits,\n"
       "residual reported or, for Loop's darts, checked below 1e-60) elsewhere.\n\n"
       "  stencilgen --scheme nonpoly --valence 3-8 --n 24 --out tables\n"

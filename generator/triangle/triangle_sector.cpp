@@ -15,13 +15,27 @@
 
 namespace sg {
 
-BoundaryWedge::BoundaryWedge(int faces) : k_(faces) {
-  if (faces < 1 || faces > limits::kMaxValence)
+BoundaryWedge::BoundaryWedge(int faces, bool closed) : k_(faces), closed_(closed) {
+  if (faces < (closed ? 3 : 1) || faces > limits::kMaxValence)
     throw Error("internal: no boundary sector of " + std::to_string(faces) + " faces");
 }
 
 std::optional<WedgePoint> BoundaryWedge::canonical(int s, long a, long b) const {
   if (a == 0 && b == 0) return WedgePoint{};
+  if (closed_) {  // at most three turns bring a point into its wedge
+    for (int turn = 0; turn <= 6; ++turn) {
+      s = ((s % k_) + k_) % k_;
+      if (a >= 1 && b >= 0 && b < a) return WedgePoint{s, a, b};
+      if (b < 0) {
+        into_previous_frame(a, b);
+        --s;
+      } else {
+        into_next_frame(a, b);
+        ++s;
+      }
+    }
+    return std::nullopt;
+  }
   // Each turn goes one way only (clockwise while b < 0, else counter-clockwise),
   // so six turns bring any point round to where it lies or past the rays.
   for (int turn = 0; turn <= 6; ++turn) {
@@ -92,8 +106,8 @@ class WedgeRules {
       throw Error("scheme '" + s.name + "': boundary patches exist for Loop's refinement only");
     if (!s.has_crease)
       throw Error("scheme '" + s.name + "' names no crease_curve, so it has no rule along a boundary");
-    if (kind != SectorKind::Crease && kind != SectorKind::Corner && kind != SectorKind::Dart)
-      throw Error(std::string("internal: no triangle sector of kind ") + sector_kind_name(kind));
+    if ((kind == SectorKind::Cone) != wedge.closed())
+      throw Error(std::string("internal: a triangle sector of kind ") + sector_kind_name(kind) + " on the wrong chart");
     if (kind == SectorKind::Dart && wedge.faces() < 3)
       throw Error("internal: a dart of valence " + std::to_string(wedge.faces()));
     edge_end_ = convert<T>(s.edge_end), edge_opposite_ = convert<T>(s.edge_opposite);
@@ -161,7 +175,7 @@ class WedgeRules {
     Row<T> row;
     const int k = wedge_.faces();
     if (q.a == 0) {  // B
-      if (kind_ == SectorKind::Corner) {
+      if (kind_ == SectorKind::Corner || kind_ == SectorKind::Cone) {
         row[q] += T(1);
       } else if (kind_ == SectorKind::Dart) {  // the smooth rule at valence k: e_k is e_0 again, seen once
         row[q] += T(1) - T(k) * dart_;
@@ -204,7 +218,10 @@ TriangleSectorPatch<T> solve_triangle_sector(const TriangleScheme& scheme, const
   if (k < 1 || k > limits::kMaxValence || p < 0 || p >= k)
     throw Error("internal: no boundary sector of " + std::to_string(k) + " faces with face " + std::to_string(p));
   if (regular.n != g) throw Error("internal: the regular solution is for another grid");
-  const BoundaryWedge wedge(k);
+  const bool cone = sector.kind == SectorKind::Cone;
+  if (cone && p != 0) throw Error("internal: a cone point's patch is made for position 0 only");
+  const BoundaryWedge wedge(k, cone);
+  const int rays = cone ? k - 1 : k;  // e_0..e_rays
   const WedgeRules<T> rules(scheme, wedge, sector.kind);
   std::map<WedgePoint, Row<T>> memo;
   auto refined = [&](const WedgePoint& x) -> const Row<T>& {
@@ -227,7 +244,7 @@ TriangleSectorPatch<T> solve_triangle_sector(const TriangleScheme& scheme, const
       for (const auto& d : kTriangleNeighbours) children.insert(canonical(c[0] + d[0], c[1] + d[1]));
     }
   std::set<WedgePoint> points{WedgePoint{}};
-  for (int t = 0; t <= k; ++t) points.insert(WedgePoint{t, 1, 0});
+  for (int t = 0; t <= rays; ++t) points.insert(WedgePoint{t, 1, 0});
   for (;;) {
     std::set<WedgePoint> next = points;
     for (const auto& x : points)
@@ -241,7 +258,7 @@ TriangleSectorPatch<T> solve_triangle_sector(const TriangleScheme& scheme, const
   out.sector = sector;
   out.grid = g;
   out.layout.push_back(WedgePoint{});
-  for (int t = 0; t <= k; ++t) out.layout.push_back(WedgePoint{t, 1, 0});
+  for (int t = 0; t <= rays; ++t) out.layout.push_back(WedgePoint{t, 1, 0});
   std::vector<WedgePoint> rest;
   for (const auto& x : points)
     if (x.a >= 2 || (x.a == 1 && x.b != 0)) rest.push_back(x);
@@ -311,7 +328,7 @@ template <class T>
 std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatch<T>& patch, std::string& why) {
   const SectorKind kind = patch.sector.kind;
   if (kind != SectorKind::Crease && kind != SectorKind::Dart) {
-    why = "a corner has no tangent plane";
+    why = kind == SectorKind::Cone ? "a cone point has no tangent plane" : "a corner has no tangent plane";
     return std::nullopt;
   }
   const long g = patch.grid;
@@ -404,7 +421,7 @@ TriangleSectorDescent sector_descent(const TriangleScheme& scheme, const Boundar
   out.layout = std::move(patch.layout);
   std::map<WedgePoint, std::size_t> index;
   for (std::size_t h = 0; h < out.layout.size(); ++h) index[out.layout[h]] = h;
-  const BoundaryWedge wedge(sector.faces);
+  const BoundaryWedge wedge(sector.faces, sector.kind == SectorKind::Cone);
   const WedgeRules<T> rules(scheme, wedge, sector.kind);
   for (int c = 0; c < 3; ++c) {
     const long(&corner)[3][2] = kRegularChildren[c];
@@ -440,11 +457,12 @@ TriangleSectorDescent triangle_sector_descent(const TriangleScheme& scheme, cons
 
 std::vector<BoundarySector> triangle_sectors(int max_faces, bool sharp) {
   std::vector<BoundarySector> out;
-  for (SectorKind kind : {SectorKind::Crease, SectorKind::Corner, SectorKind::Dart}) {
+  for (SectorKind kind : {SectorKind::Crease, SectorKind::Corner, SectorKind::Dart, SectorKind::Cone}) {
     if (kind != SectorKind::Crease && !sharp) continue;
-    for (int k = kind == SectorKind::Dart ? 3 : 1; k <= max_faces; ++k) {
+    const bool ring = kind == SectorKind::Dart || kind == SectorKind::Cone;
+    for (int k = ring ? 3 : 1; k <= max_faces; ++k) {
       if (k == 3 && kind == SectorKind::Crease) continue;  // regular boundary patches (phantom points)
-      for (int p = 0; p < k; ++p) out.push_back({kind, k, p});
+      for (int p = 0; p < (kind == SectorKind::Cone ? 1 : k); ++p) out.push_back({kind, k, p});
     }
   }
   return out;

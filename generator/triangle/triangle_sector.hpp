@@ -17,6 +17,11 @@
 // The patch of face p has B at (0,0), u towards e_p, v towards e_{p+1}; its
 // point (u, v) lies at (u + v, v) in frame p (as triangle_patch.hpp's).
 //
+// A cone point (an infinitely sharp vertex inside the mesh on no infinitely
+// sharp edge) is B held in place with everything round it smooth: the closed
+// ring of k wedges (BoundaryWedge's `closed`), every face alike, so only
+// position 0 is made; its layout has e_0..e_{k-1} (no ray k).
+//
 // Rules: inside, the scheme's regular ones; along the rays the crease curve
 // (vertex crease_centre, crease_neighbour; edge midpoint); B follows the crease
 // curve over e_0 and e_k (Crease), stays put (Corner), or follows the scheme's
@@ -58,21 +63,25 @@ struct WedgePoint {
   auto operator<=>(const WedgePoint&) const = default;
 };
 
+// `closed`: a cone point's chart instead, the whole ring of k wedges round B
+// (frame k is frame 0 again; no rays, no phantoms).
 class BoundaryWedge {
  public:
-  explicit BoundaryWedge(int faces);
+  explicit BoundaryWedge(int faces, bool closed = false);
   int faces() const { return k_; }
+  bool closed() const { return closed_; }
   // The lattice point (a, b) of frame `sector` in canonical form; nullopt when
   // it lies beyond the phantom rows.
   std::optional<WedgePoint> canonical(int sector, long a, long b) const;
-  bool phantom(const WedgePoint& p) const { return (p.sector == 0 && p.b < 0) || (p.sector == k_ && p.b > 0); }
+  bool phantom(const WedgePoint& p) const { return !closed_ && ((p.sector == 0 && p.b < 0) || (p.sector == k_ && p.b > 0)); }
   // A phantom's b1, b2 and r (it is b1 + b2 - r), all real.
   std::array<WedgePoint, 3> phantom_parts(const WedgePoint& p) const;
   // B, or a point on ray 0 or ray k.
-  bool on_boundary(const WedgePoint& p) const { return p.b == 0 && (p.a == 0 || p.sector == 0 || p.sector == k_); }
+  bool on_boundary(const WedgePoint& p) const { return p.b == 0 && (p.a == 0 || (!closed_ && (p.sector == 0 || p.sector == k_))); }
 
  private:
   int k_;
+  bool closed_;
 };
 
 // T: Rational (exact) or Real (80 digits: a dart where Loop's smooth rule is irrational).
@@ -133,8 +142,8 @@ TriangleSectorDescent triangle_sector_descent(const TriangleScheme& scheme, cons
 
 // The sectors the runtime needs for boundary vertices in 1..max_faces faces:
 // every position of every k but 3 (in three faces the patches are regular,
-// with phantoms), as Crease; with `sharp`, also Corner in every k and Dart at
-// valences 3..max_faces.
+// with phantoms), as Crease; with `sharp`, also Corner in every k, Dart at
+// valences 3..max_faces and Cone (position 0) at valences 3..max_faces.
 std::vector<BoundarySector> triangle_sectors(int max_faces, bool sharp);
 
 }  // namespace sg

@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
       "(Catmull-Clark, nonpoly, Loop; not sqrt(3)); `smoothtriangles` is Catmull-Clark's triangle rule. Infinitely\n"
       "sharp creases, corners, darts and cone points (10 or more; a cone point is a sharp vertex on no sharp edge:\n"
       "--normal there says it has none) are exact for quad schemes (the patches of the mesh cut along them); Loop:\n"
-      "creases, corners and darts exactly, cone points refused naming the vertex; unknown tags are warned about.\n"
+      "creases, corners, darts and cone points exactly too; unknown tags are warned about.\n"
       "Meshes with boundaries (quad schemes and Loop; `t interpolateboundary` or --boundary\n"
       "edge-only|edge-and-corner|none): every boundary vertex, in any number of faces, as OpenSubdiv's rules make\n"
       "it, exactly (tables cover vertices in up to as many faces as their largest valence); with none the faces at\n"

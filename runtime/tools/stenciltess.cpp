@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
       "output's boundaries); semi-sharp creases and corners (`t crease`, `t corner`, sharpness below 10, and\n"
       "`t creasemethod chaikin`) and `t smoothtriangles` (Catmull-Clark) as in OpenSubdiv; the output stays closed\n"
       "along creases. Infinitely sharp creases, corners, darts and cone points (10 or more) too, for quad schemes; Loop:\n"
-      "creases, corners and darts, cone points refused naming the vertex.\n"
+      "creases, corners, darts and cone points too.\n"
       "Meshes with boundaries (quad schemes and Loop): every boundary vertex, in any number of faces, with --boundary\n"
       "edge-only (the default), edge-and-corner (or `t interpolateboundary 1/0/0 1`: corners in one face stay put)\n"
       "or none (the faces at boundary vertices are left out: no surface, like holes).\n"

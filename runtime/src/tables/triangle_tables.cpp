@@ -88,16 +88,19 @@ void TriangleTables::read_sectors(detail::BinaryReader& r, const std::function<s
     Sector sector;
     const auto rule = r.get<std::uint8_t>();
     const auto faces = r.get<std::uint32_t>(), position = r.get<std::uint32_t>();
-    if (rule > 2 || faces < 1 || faces > static_cast<std::uint32_t>(limits::kMaxValence) || position >= faces ||
-        (rule == 0 && faces == 3) || (rule == 2 && faces < 3))
+    if (rule > 3 || faces < 1 || faces > static_cast<std::uint32_t>(limits::kMaxValence) || position >= faces ||
+        (rule == 0 && faces == 3) || (rule >= 2 && faces < 3) || (rule == 3 && position != 0))
       r.fail("sector " + std::to_string(s) + ": invalid kind (rule " + std::to_string(rule) + ", " + std::to_string(faces) +
              " faces, face " + std::to_string(position) + "; a boundary vertex in three faces has the regular patch, a "
-             "dart has at least three)");
+             "dart or cone point has at least three, a cone point's is stored for face 0)");
     sector.key = {static_cast<SectorRule>(rule), static_cast<int>(faces), static_cast<int>(position)};
     const std::string where = "sector " + std::to_string(s) + " (" + sector.key.name() + ")";
     if (t.sector_code(sector.key)) r.fail(where + " is stored twice");
+    // A cone point's chart is the closed ring: e_0..e_{k-1}, no ray k.
+    const bool cone = sector.key.rule == SectorRule::Cone;
+    const std::uint32_t rays = cone ? faces : faces + 1;
     const auto points = r.get<std::uint32_t>();
-    if (points < faces + 2 || points > faces + kMaxExtraPoints)
+    if (points < rays + 1 || points > faces + kMaxExtraPoints)
       r.fail(where + ": a layout of " + std::to_string(points) + " points (B and e_0..e_k, and at most " +
              std::to_string(kMaxExtraPoints) + " more)");
     if (points > left() / 20) r.fail(where + ": truncated layout");
@@ -108,10 +111,10 @@ void TriangleTables::read_sectors(detail::BinaryReader& r, const std::function<s
       ChartPoint p{r.get<std::int32_t>(), r.get<std::int32_t>(), r.get<std::int32_t>()};
       const bool vertex = p.sector == 0 && p.a == 0 && p.b == 0;
       const bool inside = p.sector >= 0 && p.sector < k && p.a >= 1 && p.a <= kMaxRing && p.b >= 0 && p.b < p.a;
-      const bool ray = p.sector == k && p.a >= 1 && p.a <= kMaxRing && p.b == 0;
-      // B first, then e_0..e_k, as the family gathers them.
-      const bool in_place = h == 0 ? vertex : h <= faces + 1 ? (p.a == 1 && p.b == 0 && p.sector == static_cast<int>(h) - 1)
-                                                           : (inside || ray) && p.a >= 2;
+      const bool ray = !cone && p.sector == k && p.a >= 1 && p.a <= kMaxRing && p.b == 0;
+      // B first, then e_0..e_k (e_{k-1} for a cone point), as the family gathers them.
+      const bool in_place = h == 0 ? vertex : h <= rays ? (p.a == 1 && p.b == 0 && p.sector == static_cast<int>(h) - 1)
+                                                      : (inside || ray) && p.a >= 2;
       if (!in_place)
         r.fail(where + ": invalid layout point " + std::to_string(h) + " [" + std::to_string(p.sector) + "," +
                std::to_string(p.a) + "," + std::to_string(p.b) + "]");
@@ -151,7 +154,7 @@ void TriangleTables::read_sectors(detail::BinaryReader& r, const std::function<s
     v.exact = sector.key.rule != SectorRule::Dart;  // a dart's may come from 80 digits (Loop's smooth rule)
     if (left() < 1) r.fail(where + ": truncated before its tangent flag");
     const auto flag = r.get<std::uint8_t>();
-    if (flag > 1 || (flag == 1 && sector.key.rule == SectorRule::Corner)) r.fail(where + ": invalid tangent flag");
+    if (flag > 1 || (flag == 1 && (sector.key.rule == SectorRule::Corner || cone))) r.fail(where + ": invalid tangent flag");
     if (flag == 1) read_tangents(r, left(), points, where, v.tangents);
     v.regions.push_back(std::move(region));
     for (std::size_t slot = 0; slot < t.rates_.size(); ++slot) sector.rates.push_back(std::make_unique<SectorRate>());

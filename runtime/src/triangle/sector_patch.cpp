@@ -15,22 +15,30 @@ namespace stencil_runtime {
 namespace {
 
 // The coordinates of chart point w in the frame of wedge t (a turn from frame s
-// to frame s-1 is the 60-degree rotation (a, b) -> (a - b, a)).
-std::pair<long, long> in_frame(const ChartPoint& w, int t) {
+// to frame s-1 is the 60-degree rotation (a, b) -> (a - b, a)). On a cone
+// point's closed ring of k wedges frame k is frame 0: the short way round.
+std::pair<long, long> in_frame(const ChartPoint& w, int t, int k, bool closed) {
   long a = w.a, b = w.b;
   if (a == 0 && b == 0) return {0, 0};
-  for (int s = w.sector; s > t; --s) std::tie(a, b) = std::pair{a - b, a};
-  for (int s = w.sector; s < t; ++s) std::tie(a, b) = std::pair{b, b - a};
+  int turns = t - w.sector;
+  if (closed) {
+    turns = ((turns % k) + k) % k;
+    if (2 * turns > k) turns -= k;
+  }
+  for (; turns < 0; ++turns) std::tie(a, b) = std::pair{a - b, a};
+  for (; turns > 0; --turns) std::tie(a, b) = std::pair{b, b - a};
   return {a, b};
 }
 
 // The real chart point at (a, b) of frame s in canonical form (the generator's
-// BoundaryWedge::canonical without the phantom rows): B, wedge 0..k-1 or ray k.
-std::optional<ChartPoint> canonical(int k, int s, long a, long b) {
+// BoundaryWedge::canonical without the phantom rows): B, wedge 0..k-1 or ray
+// k; on a closed ring, wedge 0..k-1.
+std::optional<ChartPoint> canonical(int k, bool closed, int s, long a, long b) {
   if (a == 0 && b == 0) return ChartPoint{};
   for (int turn = 0; turn <= 6; ++turn) {
+    if (closed) s = ((s % k) + k) % k;
     if (s < 0 || s > k) return std::nullopt;
-    if (s == k) {
+    if (s == k && !closed) {
       if (a >= 1 && b == 0) return ChartPoint{s, static_cast<int>(a), 0};
       if (b >= 0) return std::nullopt;
     } else if (a >= 1 && b >= 0 && b < a) {
@@ -53,6 +61,7 @@ Key key_of(const ChartPoint& p) { return {p.sector, p.a, p.b}; }
 }  // namespace
 
 bool loop_sector_vertex(const TriangleTopology& t, int v, SectorRule rule) {
+  if (rule == SectorRule::Cone) return !t.on_boundary(v);
   return t.on_boundary(v) && (rule == SectorRule::Corner || rule == SectorRule::Dart || t.valence(v) != 3);
 }
 
@@ -60,10 +69,12 @@ std::optional<TrianglePatch> loop_sector_patch(const TriangleTopology& t, std::s
                                                const std::vector<SectorRule>& rules, const TriangleTables& tables) {
   const int b_vertex = t.vertex(f, corner);
   const int k = t.valence(b_vertex);
+  // A cone point's ring is closed and every face alike: the face is position 0.
+  const bool closed = rules[static_cast<std::size_t>(b_vertex)] == SectorRule::Cone;
   // e_0: clockwise round B from the face's half-edge until the boundary edge.
   std::uint32_t h = TriangleTopology::half_edge(f, corner);
   int p = 0;
-  for (;;) {
+  while (!closed) {
     const std::uint32_t back = t.twin(h);
     if (back == TriangleTopology::kNoTwin) break;
     h = TriangleTopology::half_edge(TriangleTopology::face_of(back), TriangleTopology::corner_of(back) + 1);
@@ -94,7 +105,8 @@ std::optional<TrianglePatch> loop_sector_patch(const TriangleTopology& t, std::s
   for (int j = 0; j < k; ++j) {
     const std::size_t face = TriangleTopology::face_of(e);
     const int c = TriangleTopology::corner_of(e);
-    if (!assign(t.vertex(face, c + 1), ChartPoint{j, 1, 0}) || !assign(t.vertex(face, c + 2), ChartPoint{j + 1, 1, 0}))
+    if (!assign(t.vertex(face, c + 1), ChartPoint{j, 1, 0}) ||
+        !assign(t.vertex(face, c + 2), ChartPoint{closed && j + 1 == k ? 0 : j + 1, 1, 0}))
       return std::nullopt;
     seen.insert(face);
     queue.push_back(face);
@@ -115,10 +127,10 @@ std::optional<TrianglePatch> loop_sector_patch(const TriangleTopology& t, std::s
       const ChartPoint& Q = place.at(t.vertex(face, c + 1));
       const ChartPoint& R = place.at(t.vertex(face, c + 2));
       const int frame = P.a == 0 ? Q.sector : P.sector;
-      const auto [pa, pb] = in_frame(P, frame);
-      const auto [qa, qb] = in_frame(Q, frame);
-      const auto [ra, rb] = in_frame(R, frame);
-      const auto s = canonical(k, frame, pa + qa - ra, pb + qb - rb);
+      const auto [pa, pb] = in_frame(P, frame, k, closed);
+      const auto [qa, qb] = in_frame(Q, frame, k, closed);
+      const auto [ra, rb] = in_frame(R, frame, k, closed);
+      const auto s = canonical(k, closed, frame, pa + qa - ra, pb + qb - rb);
       if (!s) return std::nullopt;  // the mesh goes on beyond the wedge: not the lattice here
       if (!wanted.count(key_of(*s))) continue;
       seen.insert(g);
@@ -137,7 +149,7 @@ std::optional<TrianglePatch> loop_sector_patch(const TriangleTopology& t, std::s
     if (it == vertex_at.end()) return std::nullopt;
     const int v = it->second;
     if (i > 0) {  // every point but B regular, on the boundary exactly where the chart's rays are
-      const bool ray = layout[i].b == 0 && (layout[i].sector == 0 || layout[i].sector == k);
+      const bool ray = !closed && layout[i].b == 0 && (layout[i].sector == 0 || layout[i].sector == k);
       if (t.on_boundary(v) != ray || !regular_loop_vertex(t, v) || rules[static_cast<std::size_t>(v)] != SectorRule::Crease)
         return std::nullopt;
     }

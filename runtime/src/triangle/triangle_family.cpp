@@ -46,15 +46,17 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
   patches.reserve(topo.faces());
   phantoms = PhantomPoints{};
   phantoms.first = topo.vertices();
+  const bool cones = std::find(rules.begin(), rules.end(), SectorRule::Cone) != rules.end();
   for (std::size_t f = 0; f < topo.faces(); ++f) {
     for (int c = 0; c < 3; ++c) {  // a dart whose slit is one edge between two darts: a step splits it
       const int v = topo.vertex(f, c);
       if (rules[static_cast<std::size_t>(v)] == SectorRule::Dart && !topo.on_boundary(v)) return false;
     }
     const bool at_boundary = topo.touches_boundary(f);
-    // A corner on the boundary in other than three faces, or a corner: the sector's patch (sector_patch.hpp).
+    // A vertex on the boundary in other than three faces, a corner, a dart or
+    // a cone point: the sector's patch (sector_patch.hpp).
     int sector_corner = -1, sectors = 0;
-    if (at_boundary && !topo.touches_marked(f, no_surface))
+    if ((at_boundary || cones) && !topo.touches_marked(f, no_surface))
       for (int c = 0; c < 3; ++c) {
         const int v = topo.vertex(f, c);
         if (loop_sector_vertex(topo, v, rules[static_cast<std::size_t>(v)])) ++sectors, sector_corner = c;
@@ -87,9 +89,9 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
 // The vertices of a Loop mesh cut along its infinitely sharp edges (`cut`,
 // whose links are `links`), checked once on the input (steps keep every
 // vertex's number of faces and rule): inside ones need their valence in the
-// tables (cone points are refused); one on a boundary of the cut mesh, the
-// mesh's own or a crease, in three faces with the crease rule has the regular
-// boundary patch (boundary_patch.hpp), any other and every dart needs its
+// tables; one on a boundary of the cut mesh, the mesh's own or a crease, in
+// three faces with the crease rule has the regular boundary patch
+// (boundary_patch.hpp), any other, every dart and every cone point needs its
 // sector's patches in the tables (sector_patch.hpp). With `none`
 // (`no_surface`) the faces at the mesh's own boundary have no surface, so any
 // vertex will do there.
@@ -100,9 +102,16 @@ void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const P
   for (std::size_t v = 0; v < cut.mesh.vertex_count; ++v) {
     const int k = links.valence[v];
     const std::string who = "vertex " + std::to_string(cut.origin[v]);
-    if (cut.rule[v] == SectorRule::Cone)
-      throw MeshError(who + " is a cone point (infinitely sharp, on no infinitely sharp edge); " + scheme +
-                      " has no patches for cone points yet");
+    if (cut.rule[v] == SectorRule::Cone) {  // inside the cut mesh, its ring closed: one sector for every face
+      if (tables.sector_code({SectorRule::Cone, k, 0})) continue;
+      const std::string what = who + " is a cone point (infinitely sharp, on no infinitely sharp edge) of valence " +
+                               std::to_string(k);
+      if (!tables.has_sectors() || !tables.sector_code({SectorRule::Cone, 3, 0}))
+        throw MeshError(what + ", and the " + scheme + " tables hold no patches for cone points (written before "
+                        "stencilgen wrote them); regenerate them with this stencilgen");
+      valences.add_boundary(k, what);
+      continue;
+    }
     // A dart is on the slit's end; the cut leaves it inside when the slit's
     // other end is a dart too (one sharp edge), until a step splits the edge.
     if (!links.boundary[v] && cut.rule[v] != SectorRule::Dart) {
@@ -438,6 +447,7 @@ Point TriangleFamily::vertex_normal(const TrianglePatch& patch, double det, cons
   if ((!tu || !tv) && TriangleTables::is_sector_code(patch.valence)) {
     const SectorKey& s = tables_.sector(patch.valence);
     throw EvaluationError(s.rule == SectorRule::Corner ? "a corner has no tangent plane, so there is no normal at it"
+                          : s.rule == SectorRule::Cone ? "a cone point has no tangent plane, so there is no normal at it"
                           : s.rule == SectorRule::Dart
                               ? "the spectrum of Loop's subdivision at a dart of valence " + std::to_string(s.faces) +
                                     " (the end of an infinitely sharp crease) gives no tangent plane, so there is no normal at it"
