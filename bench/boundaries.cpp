@@ -17,9 +17,12 @@
 // three faces: regular boundary patches with phantom points), and against the
 // same torus with every 8th ring of edges infinitely sharp (the patches of the
 // mesh cut along them: regular boundary patches on both sides of each ring),
-// and against a flat sheet of the same grid open on all four sides (its
-// corners in one and two faces: boundary sectors, .sgt version 7).
-// Usage: bench_boundaries [CATMULL-CLARK.sgs|-] [LOOP.sgt]
+// against a flat sheet of the same grid open on all four sides (its
+// corners in one and two faces: boundary sectors, .sgt version 7), and
+// against the same torus with 448 dashes of two sharp edges (896 darts of
+// valence 6: dart sectors).
+// Usage: bench_boundaries [CATMULL-CLARK.sgs|-] [LOOP.sgt] [PAIR]  (PAIR: run
+// only the pairs whose name contains it)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -92,6 +95,16 @@ struct Row {
   double ours = 0, osd = 0;
 };
 
+// On every `rows_apart`-th ring of an around x rows torus grid, a dash of two
+// infinitely sharp edges every `apart` vertices: a dart at each end.
+MeshFeatures sharp_dashes(int around, int rows, int rows_apart, int apart) {
+  MeshFeatures out;
+  for (int j = 0; j < rows; j += rows_apart)
+    for (int i = 0; i + 2 < around; i += apart)
+      for (int e = 0; e < 2; ++e) out.edges.push_back({j * around + i + e, j * around + i + e + 1, 10.0});
+  return out;
+}
+
 }  // namespace
 
 struct Pair {
@@ -142,10 +155,14 @@ int run(int argc, char** argv) {
                      triangulated(ring_grid(256, 112, true)), loop, sharp_rings(256, 112, 8)});
     pairs.push_back({"Loop: torus / open sheet 256x112, triangulated", triangulated(ring_grid(256, 112, true)),
                      triangulated(open_sheet(256, 112)), loop, {}});
+    pairs.push_back({"Loop: torus / torus with 448 sharp dashes (896 darts), 256x112", triangulated(ring_grid(256, 112, true)),
+                     triangulated(ring_grid(256, 112, true)), loop, sharp_dashes(256, 112, 8, 8)});
   }
   std::printf("| meshes | mesh | faces | rate | threads | triangles | ours (M tri/s) | ours / closed | Bfr (M tri/s) | Bfr / closed | positions update (ms) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  const std::string only = argc > 3 ? argv[3] : "";
   for (const Pair& pair : pairs) {
+    if (pair.name.find(only) == std::string::npos) continue;
     std::vector<Row> closed_rows;
     for (int open = 0; open < 2; ++open) {
       const Mesh& mesh = open ? pair.open : pair.closed;
