@@ -35,6 +35,12 @@ int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<Sec
   return -1;
 }
 
+// A dart or corner the cut left inside the mesh (see isolated()).
+bool slit_end_inside(const QuadTopology& topo, int v, const std::vector<SectorRule>& rule) {
+  const SectorRule r = rule[static_cast<std::size_t>(v)];
+  return (r == SectorRule::Dart || r == SectorRule::Corner) && !topo.on_boundary(v);
+}
+
 // Whether every face has a patch: at most one extraordinary corner; a face at
 // a boundary vertex in other than two faces (or a corner) its sector's patch;
 // any other face touching the boundary one of the regular boundary patches
@@ -44,6 +50,13 @@ int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<Sec
 // its vertices' rules, `no_surface` per vertex whether the faces at it have no
 // surface (empty: none).
 bool isolated(const QuadTopology& topo, const std::vector<SectorRule>& corner, const std::vector<char>& no_surface) {
+  // A vertex on one infinitely sharp edge (a dart, or a corner by its own
+  // sharpness) is the end of its crease's slit in the cut mesh, except when
+  // the crease is that one edge between two such vertices: nothing is cut then
+  // (no vertex has two sharp edges) and both stay inside, until a step splits
+  // the edge.
+  for (std::size_t v = 0; v < topo.vertices(); ++v)
+    if (slit_end_inside(topo, static_cast<int>(v), corner)) return false;
   for (std::size_t f = 0; f < topo.faces(); ++f) {
     if (topo.touches_boundary(f)) {
       if (topo.touches_marked(f, no_surface)) continue;
@@ -69,7 +82,10 @@ void check_vertices(const SharpCut& cut, const PolygonLinks& links, const Polygo
   for (std::size_t v = 0; v < cut.mesh.vertex_count; ++v) {
     const int k = links.valence[v];
     const std::string who = "vertex " + std::to_string(cut.origin[v]);
-    if (!links.boundary[v]) {
+    // A dart or corner inside the cut mesh (its crease one edge to another
+    // dart or corner) is on its slit after a step: it needs its sector like
+    // the others.
+    if (!links.boundary[v] && cut.rule[v] != SectorRule::Dart && cut.rule[v] != SectorRule::Corner) {
       if (cut.rule[v] != SectorRule::Cone) {
         valences.add_lazy(k, [&] { return who; });
       } else if (!tables.has_sector({SectorRule::Cone, k, 0})) {

@@ -48,9 +48,12 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
   phantoms.first = topo.vertices();
   const bool cones = std::find(rules.begin(), rules.end(), SectorRule::Cone) != rules.end();
   for (std::size_t f = 0; f < topo.faces(); ++f) {
-    for (int c = 0; c < 3; ++c) {  // a dart whose slit is one edge between two darts: a step splits it
+    // A dart or corner on one infinitely sharp edge whose slit is that one
+    // edge between two such vertices: nothing is cut yet, a step splits it.
+    for (int c = 0; c < 3; ++c) {
       const int v = topo.vertex(f, c);
-      if (rules[static_cast<std::size_t>(v)] == SectorRule::Dart && !topo.on_boundary(v)) return false;
+      const SectorRule r = rules[static_cast<std::size_t>(v)];
+      if ((r == SectorRule::Dart || r == SectorRule::Corner) && !topo.on_boundary(v)) return false;
     }
     const bool at_boundary = topo.touches_boundary(f);
     // A vertex on the boundary in other than three faces, a corner, a dart or
@@ -98,7 +101,6 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
 void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const PolygonLinks& uncut,
                          const std::vector<char>& no_surface, const std::string& scheme, const TriangleTables& tables,
                          ValenceCheck& valences) {
-  const std::string plan = " (docs/runtime.md, \"Loop with boundaries\")";
   for (std::size_t v = 0; v < cut.mesh.vertex_count; ++v) {
     const int k = links.valence[v];
     const std::string who = "vertex " + std::to_string(cut.origin[v]);
@@ -112,11 +114,10 @@ void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const P
       valences.add_boundary(k, what);
       continue;
     }
-    // A dart is on the slit's end; the cut leaves it inside when the slit's
-    // other end is a dart too (one sharp edge), until a step splits the edge.
-    if (!links.boundary[v] && cut.rule[v] != SectorRule::Dart) {
-      if (cut.rule[v] == SectorRule::Corner)
-        throw MeshError(who + " is an infinitely sharp corner; " + scheme + " has no patches for corners yet" + plan);
+    // A dart (or a corner on one sharp edge) is on the slit's end; the cut
+    // leaves it inside when the slit's other end is one too, until a step
+    // splits the edge.
+    if (!links.boundary[v] && cut.rule[v] != SectorRule::Dart && cut.rule[v] != SectorRule::Corner) {
       valences.add_lazy(k, [&] { return who; });
       continue;
     }

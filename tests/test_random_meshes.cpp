@@ -1,0 +1,354 @@
+// Random meshes with random boundaries, holes, creases, corners and boundary
+// options, Catmull-Clark and Loop, against OpenSubdiv's Bfr with the same
+// tags: every node of every face at a few rates, positions and derivatives.
+// The meshes are made here from grids, tubes, tori and the bundled meshes by
+// dropping faces at random (which makes boundary vertices of every count of
+// faces, corners, and vertices where two boundaries touch), so they reach
+// configurations no hand-made test names. A mesh the runtime refuses must be
+// refused with a message that names what it lacks; such refusals are counted
+// and shown, and a refusal of anything but a documented limitation fails.
+//
+// The default suite runs a few dozen meshes per scheme; `runtime_tests
+// "[soak]"` runs STENCIL_SOAK_MESHES of them (default 400) with its own seed
+// (STENCIL_SOAK_SEED).
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "bfr_reference.hpp"
+#include "cli.hpp"
+#include "loop_meshes.hpp"
+#include "open_meshes.hpp"
+#include "runtime_api.hpp"
+#include "runtime_checks.hpp"
+#include "sharp_features.hpp"
+
+using namespace stencil_runtime;
+using namespace test_runtime;
+
+namespace {
+
+using test_meshes::bundled;
+
+// A torus of `around` x `rows` quads.
+Mesh quad_torus(int around, int rows) {
+  Mesh m;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double a = 2 * M_PI * i / around, b = 2 * M_PI * j / rows, r = 2 + 0.7 * std::cos(b) + 0.05 * (i % 3);
+      m.positions.push_back({r * std::cos(a), r * std::sin(a), 0.7 * std::sin(b) + 0.03 * (j % 2)});
+    }
+  auto at = [&](int i, int j) { return (j % rows) * around + (i % around); };
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < around; ++i) {
+      m.face_sizes.push_back(4);
+      m.face_vertices.insert(m.face_vertices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
+}
+
+// An open grid of quads each split into two triangles along a random diagonal
+// (inner vertices of valence 4 to 8).
+Mesh triangle_grid(int columns, int rows, std::mt19937& rng) {
+  Mesh m = test_meshes::open_grid(columns, rows);
+  std::vector<int> vertices;
+  for (std::size_t f = 0; f < m.face_count(); ++f) {
+    const int* q = &m.face_vertices[4 * f];
+    if (rng() % 2) vertices.insert(vertices.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+    else vertices.insert(vertices.end(), {q[0], q[1], q[3], q[1], q[2], q[3]});
+  }
+  m.face_vertices = vertices;
+  m.face_sizes.assign(vertices.size() / 3, 3);
+  return m;
+}
+
+// The mesh with each face dropped with probability `p` (the vertices stay, some in no face).
+Mesh drop_faces(const Mesh& m, double p, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  Mesh out;
+  out.positions = m.positions;
+  std::size_t first = 0;
+  for (int k : m.face_sizes) {
+    if (u(rng) >= p) {
+      out.face_sizes.push_back(k);
+      out.face_vertices.insert(out.face_vertices.end(), m.face_vertices.begin() + static_cast<long>(first),
+                               m.face_vertices.begin() + static_cast<long>(first + static_cast<std::size_t>(k)));
+    }
+    first += static_cast<std::size_t>(k);
+  }
+  return out;
+}
+
+std::vector<std::pair<int, int>> edges_of(const Mesh& m) {
+  std::set<std::pair<int, int>> out;
+  std::size_t corner = 0;
+  for (int k : m.face_sizes) {
+    for (int c = 0; c < k; ++c) {
+      const int a = m.face_vertices[corner + static_cast<std::size_t>(c)];
+      const int b = m.face_vertices[corner + static_cast<std::size_t>((c + 1) % k)];
+      out.insert({std::min(a, b), std::max(a, b)});
+    }
+    corner += static_cast<std::size_t>(k);
+  }
+  return {out.begin(), out.end()};
+}
+
+struct Case {
+  Mesh mesh;
+  SharpFeatures features;
+  std::vector<int> holes;
+  std::string what;
+};
+
+// A random mesh of the family and random tags on it.
+Case random_case(bool loop, std::mt19937& rng) {
+  Case c;
+  std::ostringstream what;
+  const int base = static_cast<int>(rng() % 5);
+  const int a = 3 + static_cast<int>(rng() % 4), b = 3 + static_cast<int>(rng() % 4);
+  if (!loop) {
+    switch (base) {
+      case 0: c.mesh = test_meshes::open_grid(a, b), what << "grid " << a << "x" << b; break;
+      case 1: c.mesh = test_meshes::tube(a + 1, b), what << "tube " << a + 1 << "x" << b; break;
+      case 2: c.mesh = quad_torus(a + 1, b), what << "torus " << a + 1 << "x" << b; break;
+      case 3: c.mesh = test_meshes::boundary_fan(1 + static_cast<int>(rng() % 8), 2), what << "boundary fan"; break;
+      default: {
+        const char* names[] = {"cube", "quad-sphere", "torus-3-5", "bumpy-sphere"};
+        const char* name = names[rng() % 4];
+        c.mesh = bundled(name), what << name;
+      }
+    }
+  } else {
+    switch (base) {
+      case 0: c.mesh = triangle_grid(a, b, rng), what << "triangle grid " << a << "x" << b; break;
+      case 1: c.mesh = loop_meshes::triangle_tube(a + 1, b), what << "triangle tube " << a + 1 << "x" << b; break;
+      case 2:
+        c.mesh = loop_meshes::with_flip(loop_meshes::triangle_torus(a + 1, b), a + 1, static_cast<int>(rng() % static_cast<unsigned>(b)));
+        what << "triangle torus with a flip " << a + 1 << "x" << b;
+        break;
+      default: {
+        const char* names[] = {"icosahedron", "tri-mix", "tri-torus"};
+        const char* name = names[rng() % 3];
+        c.mesh = bundled(name), what << name;
+      }
+    }
+  }
+  std::uniform_real_distribution<double> u(0, 1);
+  const double drop = u(rng) < 0.3 ? 0.0 : 0.35 * u(rng);
+  c.mesh = drop_faces(c.mesh, drop, rng);
+  if (c.mesh.face_count() == 0) c.mesh = loop ? loop_meshes::triangle_tube(4, 2) : test_meshes::tube(4, 2);
+  what << ", " << c.mesh.face_count() << " faces kept";
+
+  const float sharpness[] = {0.5f, 1.0f, 2.5f, 10.0f};
+  const double crease_share = u(rng) < 0.3 ? 0.0 : 0.25 * u(rng);
+  for (const auto& [x, y] : edges_of(c.mesh))
+    if (u(rng) < crease_share) c.features.crease(x, y, sharpness[rng() % 4]);
+  const int corners = static_cast<int>(rng() % 3);
+  for (int k = 0; k < corners; ++k)
+    c.features.corner(static_cast<int>(rng() % c.mesh.vertex_count()), sharpness[rng() % 4]);
+  const int holes = c.mesh.face_count() > 4 ? static_cast<int>(rng() % 3) : 0;
+  for (int k = 0; k < holes; ++k) c.holes.push_back(static_cast<int>(rng() % c.mesh.face_count()));
+  std::sort(c.holes.begin(), c.holes.end());
+  c.holes.erase(std::unique(c.holes.begin(), c.holes.end()), c.holes.end());
+  const BoundaryInterpolation options[] = {BoundaryInterpolation::EdgeOnly, BoundaryInterpolation::EdgeAndCorner,
+                                           BoundaryInterpolation::None};
+  const BoundaryInterpolation option = options[rng() % 3];
+  c.features.boundary(option);
+  what << ", " << c.features.ours.edges.size() << " sharp edges, " << corners << " sharp vertices, " << c.holes.size()
+       << " holes, boundary "
+       << (option == BoundaryInterpolation::EdgeOnly ? "edge-only" : option == BoundaryInterpolation::EdgeAndCorner ? "edge-and-corner" : "none");
+  what << "\n  tags:";
+  for (const auto& e : c.features.ours.edges) what << " crease " << e.a << "-" << e.b << " " << e.sharpness << ";";
+  for (const auto& v : c.features.ours.vertices) what << " corner " << v.vertex << " " << v.sharpness << ";";
+  for (int h : c.holes) what << " hole " << h << ";";
+  c.what = what.str();
+  return c;
+}
+
+// The vertices where Bfr's limit point is not the surface's: infinitely sharp
+// darts (one infinitely sharp edge at an inner vertex of no infinite vertex
+// sharpness), where OpenSubdiv's limit mask is its smooth one (shown in
+// test_creases.cpp and test_triangle_sector.cpp against Far's own refinement).
+std::set<int> bfr_dart_vertices(const Case& c) {
+  std::map<std::pair<int, int>, int> faces_at_edge;
+  std::size_t first = 0;
+  std::set<int> holes(c.holes.begin(), c.holes.end());
+  for (std::size_t f = 0; f < c.mesh.face_count(); ++f) {
+    const int k = c.mesh.face_sizes[f];
+    for (int i = 0; i < k; ++i) {
+      const int x = c.mesh.face_vertices[first + static_cast<std::size_t>(i)];
+      const int y = c.mesh.face_vertices[first + static_cast<std::size_t>((i + 1) % k)];
+      ++faces_at_edge[{std::min(x, y), std::max(x, y)}];
+    }
+    first += static_cast<std::size_t>(k);
+  }
+  std::map<int, int> sharp_edges;
+  std::set<int> on_boundary, sharp_vertex;
+  for (const auto& [e, n] : faces_at_edge)
+    if (n != 2) on_boundary.insert(e.first), on_boundary.insert(e.second);
+  for (const auto& e : c.features.ours.edges)
+    if (e.sharpness >= 10) ++sharp_edges[e.a], ++sharp_edges[e.b];
+  for (const auto& v : c.features.ours.vertices)
+    if (v.sharpness >= 10) sharp_vertex.insert(v.vertex);
+  std::set<int> out;
+  for (const auto& [v, n] : sharp_edges)
+    if (n == 1 && !on_boundary.count(v) && !sharp_vertex.count(v)) out.insert(v);
+  return out;
+}
+
+// Limitations the docs state (docs/runtime.md): refusals that name them are not failures.
+bool documented_refusal(const std::string& message) {
+  for (const char* known : {"valence", "faces at", "not covered", "regenerate", "non-manifold", "no surface", "belongs to no face"})
+    if (message.find(known) != std::string::npos) return true;
+  return false;
+}
+
+struct Tally {
+  int compared = 0, refused = 0;
+  double worst_position = 0, worst_derivative = 0;
+  std::map<std::string, int> reasons;
+};
+
+// Compares one case against Bfr; returns a description of the first mismatch, or "".
+std::string compare(const std::shared_ptr<const Tables>& tables, bool loop, const Case& c, Tally& tally) {
+  std::shared_ptr<const SurfaceTopology> topology;
+  try {
+    topology = SurfaceTopology::create(tables, c.mesh.vertex_count(), c.mesh.face_sizes, c.mesh.face_vertices, c.holes,
+                                       c.features.ours);
+  } catch (const Error& e) {
+    ++tally.refused;
+    std::string reason = e.what();
+    std::string kind = reason.substr(0, 60);
+    for (char& ch : kind)
+      if (ch >= '0' && ch <= '9') ch = '#';
+    ++tally.reasons[kind];
+    return documented_refusal(reason) ? "" : "refused: " + reason;
+  }
+  const Surface surface(topology, c.mesh.positions);
+  std::unique_ptr<bfr_reference::BfrLimit> reference;
+  try {
+    reference = std::make_unique<bfr_reference::BfrLimit>(
+        c.mesh.positions, c.mesh.face_sizes, c.mesh.face_vertices,
+        loop ? bfr_reference::osd::Sdc::SCHEME_LOOP : bfr_reference::osd::Sdc::SCHEME_CATMARK, c.holes, c.features.osd);
+  } catch (const std::exception&) {
+    return "";  // OpenSubdiv refused it too: nothing to compare
+  }
+  ++tally.compared;
+  const double size = extent(c.mesh);
+  const std::set<int> darts = bfr_dart_vertices(c);
+  std::size_t first = 0;
+  const int sides = loop ? 3 : 4;
+  for (std::size_t face = 0; face < c.mesh.face_count(); first += static_cast<std::size_t>(c.mesh.face_sizes[face]), ++face) {
+    if (c.mesh.face_sizes[face] != sides) continue;
+    const bool ours_has = !topology->is_hole(face);
+    if (ours_has != reference->has_surface(static_cast<int>(face)))
+      return "face " + std::to_string(face) + ": surface " + (ours_has ? "here but not in Bfr" : "in Bfr but not here");
+    if (!ours_has) continue;
+    auto corner_vertex = [&](long i, long j, long n) -> int {
+      if (loop) {
+        if (i == 0 && j == 0) return c.mesh.face_vertices[first];
+        if (i == n && j == 0) return c.mesh.face_vertices[first + 1];
+        if (i == 0 && j == n) return c.mesh.face_vertices[first + 2];
+        return -1;
+      }
+      if ((i != 0 && i != n) || (j != 0 && j != n)) return -1;
+      const int k = i == 0 ? (j == 0 ? 0 : 3) : (j == 0 ? 1 : 2);
+      return c.mesh.face_vertices[first + static_cast<std::size_t>(k)];
+    };
+    for (long n : {1L, 2L, 3L, 5L})
+      for (long j = 0; j <= n; ++j)
+        for (long i = 0; i + (loop ? j : 0) <= n; ++i) {
+          const int vertex = corner_vertex(i, j, n);
+          if (vertex >= 0 && darts.count(vertex)) continue;
+          const double u = static_cast<double>(i) / static_cast<double>(n), v = static_cast<double>(j) / static_cast<double>(n);
+          const Point ours = surface.evaluate(face, grid(i, j, n));
+          const auto ref = reference->derivatives(static_cast<int>(face), u, v);
+          const double d = distance(ours, ref[0]) / size;
+          tally.worst_position = std::max(tally.worst_position, d);
+          std::ostringstream where;
+          where << "face " << face << " at (" << i << "/" << n << ", " << j << "/" << n << ")";
+          if (!(d < 1e-10)) return where.str() + ": position " + std::to_string(d) + " of the size from Bfr's";
+          if (vertex >= 0) continue;  // a vertex's parametric derivatives: Bfr's are not defined at an EV
+          const Derivatives dd = surface.derivatives(face, grid(i, j, n));
+          const double e = std::max(distance(dd.du, ref[1]), distance(dd.dv, ref[2])) / size;
+          tally.worst_derivative = std::max(tally.worst_derivative, e);
+          if (!(e < 1e-8)) return where.str() + ": derivative " + std::to_string(e) + " of the size from Bfr's";
+        }
+  }
+  return "";
+}
+
+int environment(const char* name, int fallback) {
+  const char* s = std::getenv(name);
+  return s ? std::atoi(s) : fallback;
+}
+
+void run(bool loop, int meshes, unsigned seed) {
+  const auto tables = Tables::load(loop ? generated_table("loop", "--valence 3-8 --n 1-5", "sgt").string()
+                                        : generated_table("catmull-clark", "--valence 3-8 --n 5", "sgs").string());
+  std::mt19937 rng(seed);
+  Tally tally;
+  for (int k = 0; k < meshes; ++k) {
+    const Case c = random_case(loop, rng);
+    INFO("case " << k << " (seed " << seed << "): " << c.what);
+    const std::string mismatch = compare(tables, loop, c, tally);
+    CHECK(mismatch == "");
+  }
+  std::ostringstream summary;
+  summary << (loop ? "Loop" : "Catmull-Clark") << ": " << meshes << " random meshes, " << tally.compared << " compared with Bfr, "
+          << tally.refused << " refused; worst position " << tally.worst_position << ", derivative " << tally.worst_derivative
+          << " of the size";
+  for (const auto& [reason, n] : tally.reasons) summary << "\n  " << n << " x " << reason;
+  WARN(summary.str());
+  CHECK(tally.compared > meshes / 3);
+}
+
+}  // namespace
+
+TEST_CASE("random meshes, boundaries, holes and sharp features equal Bfr (Catmull-Clark)",
+          "[runtime][random][opensubdiv]") {
+  run(false, 30, 20261128u);
+}
+
+TEST_CASE("random meshes, boundaries, holes and sharp features equal Bfr (Loop)",
+          "[runtime][random][opensubdiv][loop]") {
+  run(true, 30, 20261128u);
+}
+
+TEST_CASE("a sharp edge between two darts, or a dart and a corner, equals Bfr",
+          "[runtime][random][opensubdiv][creases]") {
+  // Found by the random meshes: with no vertex on two sharp edges the cut
+  // leaves both ends inside the mesh, where they were taken for regular
+  // vertices (Catmull-Clark) or refused (Loop, a corner).
+  for (bool loop : {false, true}) {
+    const auto tables = Tables::load(loop ? generated_table("loop", "--valence 3-8 --n 1-5", "sgt").string()
+                                          : generated_table("catmull-clark", "--valence 3-8 --n 5", "sgs").string());
+    std::mt19937 rng(3);
+    for (int corner = 0; corner < 2; ++corner)
+      for (bool closed : {false, true}) {
+        Case c;
+        c.mesh = loop ? (closed ? loop_meshes::triangle_torus(6, 5) : triangle_grid(4, 5, rng))
+                      : (closed ? quad_torus(6, 5) : test_meshes::open_grid(4, 5));
+        const int a = closed ? 13 : 11, b = closed ? 19 : 16;  // inside, one row apart
+        c.features.crease(a, b, 10);
+        if (corner) c.features.corner(a, 10);
+        INFO((loop ? "Loop" : "Catmull-Clark") << (closed ? " torus" : " grid") << (corner ? ", a corner and a dart" : ", two darts"));
+        Tally t;
+        CHECK(compare(tables, loop, c, t) == "");
+        CHECK(t.compared == 1);
+      }
+  }
+}
+
+TEST_CASE("soak: many random meshes against Bfr, both schemes", "[.soak]") {
+  const int meshes = environment("STENCIL_SOAK_MESHES", 400);
+  const unsigned seed = static_cast<unsigned>(environment("STENCIL_SOAK_SEED", 1));
+  run(false, meshes, seed);
+  run(true, meshes, seed);
+}
+
