@@ -161,10 +161,15 @@ TEST_CASE("bad tables and bad meshes get clear errors, and nothing is written", 
   CHECK(eval((dir / "none.sgs").string(), cube).output.find("no such table file") != std::string::npos);
   // Meshes.
   const std::string quadv = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
-  // Two quads that meet only at a vertex: it is in two fans, which no surface has.
-  const std::string bowtie = quadv + "v 2 1 0\nv 2 2 0\nv 1 2 0\nf 1 2 3 4\nf 3 5 6 7\n";
-  CHECK(eval(good.string(), write("bowtie.obj", bowtie)).output.find("vertex 2") != std::string::npos);
-  CHECK(eval(good.string(), write("bowtie.obj", bowtie)).output.find("fans") != std::string::npos);
+  // Two quads that meet only at a vertex: as in OpenSubdiv, a corner of both
+  // (the surface passes through it); a vertex in no face is ignored.
+  const std::string bowtie = quadv + "v 2 1 0\nv 2 2 0\nv 1 2 0\nv 5 5 5\nf 1 2 3 4\nf 3 5 6 7\n";
+  const CliResult shared = eval(good.string(), write("bowtie.obj", bowtie), "--face 1 --uv 0,0 --boundary edge-only");
+  CHECK(shared.status == 0);
+  CHECK(shared.output.find("1 1 0") != std::string::npos);
+  // A mesh that folds onto itself along an edge is still refused, naming the edge.
+  CHECK(eval(good.string(), write("fold.obj", quadv + "v 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\nf 2 3 6 5\n")).output.find("edge (") !=
+        std::string::npos);
   CHECK(eval(good.string(), write("badindex.obj", quadv + "f 1 2 3 9\n")).output.find("badindex.obj:5: face index 9") != std::string::npos);
   CHECK(eval(good.string(), cube, "--face 6 --uv 0,0").output.find("face 6 does not exist") != std::string::npos);
   // A rational no stored rate holds, and a decimal: within a bound, said on the line before the point.
@@ -183,7 +188,7 @@ TEST_CASE("bad tables and bad meshes get clear errors, and nothing is written", 
   CHECK(missing.output.find("vertex 0 has valence 3") != std::string::npos);
   CHECK(missing.output.find("stencilgen --scheme nonpoly --valence 3") != std::string::npos);
   // stenciltess: no output file on failure.
-  const CliResult tess = run_stenciltess("--tables " + good.string() + " --mesh " + write("bowtie2.obj", bowtie) +
+  const CliResult tess = run_stenciltess("--tables " + good.string() + " --mesh " + write("fold2.obj", quadv + "v 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\nf 2 3 6 5\n") +
                                          " --rate 4 --out " + (dir / "out.ply").string());
   CHECK(tess.status == 1);
   CHECK_FALSE(fs::exists(dir / "out.ply"));

@@ -89,6 +89,23 @@ TEST_CASE("fit_at_samples recovers Catmull-Clark control points from Bfr's limit
   }
 }
 
+TEST_CASE("a control vertex in no face is refused by the fits, naming it (it has no part in the surface)", "[fitting]") {
+  const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string());
+  Mesh mesh = read_obj((kMeshes / "cube.obj").string());
+  mesh.positions.push_back({5, 5, 5});  // vertex 8, in no face: evaluated meshes ignore it
+  const auto topology = test_runtime::topology_of(tables, mesh);
+  const Surface surface(topology, mesh.positions);
+  const std::vector<Point> points{surface.evaluate(0, test_runtime::grid(1, 1, 2)), surface.evaluate(1, test_runtime::grid(1, 1, 2))};
+  const std::vector<RealSample> samples{{0, 0.5, 0.5}, {1, 0.5, 0.5}};
+  try {
+    fit_at_samples(*topology, samples, points, 0);
+    FAIL("fitted a control vertex in no face");
+  } catch (const FitError& e) {
+    CHECK(std::string(e.what()).find("control vertex 8 ") != std::string::npos);
+  }
+  CHECK_THROWS_AS(fit_surface(topology, mesh.positions, points, FitOptions{}), FitError);
+}
+
 TEST_CASE("fit_at_samples recovers Loop control points from Bfr's limit points at known parameters", "[fitting]") {
   const auto tables = Tables::load(generated_table("loop", "--valence 3-8 --n 8", "sgt").string());
   for (const char* name : {"icosahedron.obj", "tri-torus.obj", "tri-mix.obj"}) {

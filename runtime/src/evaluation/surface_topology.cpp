@@ -12,6 +12,8 @@
 #include "exact_stencil.hpp"
 
 #include "family/family.hpp"
+#include "mesh/manifold_input.hpp"
+#include "mesh/sharpness.hpp"
 #include "quad/quad_family.hpp"
 #include "stencil_runtime/limits.hpp"
 #include "triangle/triangle_family.hpp"
@@ -82,26 +84,45 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   t->vertex_count_ = vertex_count;
   t->face_sizes_ = std::move(face_sizes);
   t->face_vertices_ = std::move(face_vertices);
-  const Connectivity mesh{t->vertex_count_, t->face_sizes_, t->face_vertices_};
+  // Vertices in no face left out, non-manifold vertices split into their fans
+  // (mesh/manifold_input.hpp); the tags are checked on the mesh as given first.
+  ManifoldInput input;
   try {
-    if (t->tables_->family() == SchemeFamily::Quad) {
-      t->family_ = std::make_unique<QuadFamily>(t->tables_, mesh, features);
-    } else {
-      t->family_ = std::make_unique<TriangleFamily>(t->tables_, mesh, features);
-    }
+    if (!features.edges.empty() || !features.vertices.empty())
+      LevelSharpness::of({t->vertex_count_, t->face_sizes_, t->face_vertices_}, features, true);
+    input = make_manifold(t->vertex_count_, t->face_sizes_, t->face_vertices_, features);
   } catch (const MeshError& e) {
     throw MeshError(std::string(e.what()) + kNumbering);
   }
+  const std::vector<int>& vertices = input.changed ? input.face_vertices : t->face_vertices_;
+  const Connectivity mesh{input.changed ? input.origin.size() : t->vertex_count_, t->face_sizes_, vertices};
+  const MeshFeatures& tags = input.changed ? input.features : features;
+  std::unique_ptr<Family> family;
+  try {
+    if (t->tables_->family() == SchemeFamily::Quad) {
+      family = std::make_unique<QuadFamily>(t->tables_, mesh, tags);
+    } else {
+      family = std::make_unique<TriangleFamily>(t->tables_, mesh, tags);
+    }
+  } catch (const MeshError& e) {
+    throw MeshError((input.changed ? name_control_vertices(e.what(), input.origin) : std::string(e.what())) + kNumbering);
+  }
+  if (input.changed) family->gather_from(t->vertex_count_, input.origin);
+  t->family_ = std::move(family);
   if (features.boundary == BoundaryInterpolation::None && t->family_->has_boundary()) {
     refuse_sharp_boundary_edges(t->face_sizes_, t->face_vertices_, features);
     // OpenSubdiv's `none`: the faces at boundary vertices keep their part in
     // the subdivision but have no surface, as holes (the steps keep the
-    // original vertices' numbers, so the prepared topology answers for them).
+    // vertices' numbers, so the prepared topology answers for them). A
+    // non-manifold vertex is on the boundary when any of its fans is.
+    std::vector<char> boundary(t->vertex_count_, 0);
+    for (std::size_t v = 0; v < mesh.vertex_count; ++v)
+      if (t->family_->on_boundary(static_cast<int>(v))) boundary[static_cast<std::size_t>(input.changed ? input.origin[v] : static_cast<int>(v))] = 1;
     if (t->holes_.empty()) t->holes_.assign(t->face_sizes_.size(), 0);
     std::size_t offset = 0;
     for (std::size_t f = 0; f < t->face_sizes_.size(); ++f) {
       for (int c = 0; c < t->face_sizes_[f]; ++c)
-        if (t->family_->on_boundary(t->face_vertices_[offset + static_cast<std::size_t>(c)])) t->holes_[f] = 1;
+        if (boundary[static_cast<std::size_t>(t->face_vertices_[offset + static_cast<std::size_t>(c)])]) t->holes_[f] = 1;
       offset += static_cast<std::size_t>(t->face_sizes_[f]);
     }
     if (std::find(t->holes_.begin(), t->holes_.end(), 0) == t->holes_.end())

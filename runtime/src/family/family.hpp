@@ -114,6 +114,19 @@ class Family {
   virtual ~Family() = default;
 
   const Refinement& refinement() const { return refinement_; }
+  // The mesh this family was made from is over vertices gathered from
+  // `control` control vertices, vertex v being control vertex origin[v]
+  // (mesh/manifold_input.hpp): a first step that copies them.
+  void gather_from(std::size_t control, const std::vector<int>& origin) {
+    RefinementStep step;
+    step.input_vertices = control;
+    SparseEntries row;
+    for (int o : origin) {
+      row.assign(1, {static_cast<std::uint32_t>(o), 1.0});
+      step.add_row(row);
+    }
+    refinement_.prepend(std::move(step));
+  }
   const FaceHierarchy& hierarchy() const { return hierarchy_; }
   // The prepared mesh's faces (all quads or all triangles), over the prepared vertices.
   const Connectivity& prepared() const { return prepared_; }

@@ -39,6 +39,11 @@ class Refinement {
  public:
   explicit Refinement(std::size_t control_vertices = 0) : control_(control_vertices) {}
   void add(RefinementStep step) { steps_.push_back(std::move(step)); }
+  // A step before all the others: the control vertices become its input.
+  void prepend(RefinementStep step) {
+    control_ = step.input_vertices;
+    steps_.insert(steps_.begin(), std::move(step));
+  }
   std::size_t control_vertices() const { return control_; }
   std::size_t prepared_vertices() const { return steps_.empty() ? control_ : steps_.back().rows(); }
   const std::vector<RefinementStep>& steps() const { return steps_; }

@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -95,6 +96,17 @@ Feet feet_of(const ClosestPointQuery& query, const std::vector<Point>& points) {
   return out;
 }
 
+// A control vertex in no face has no part in the surface: no fit can place it
+// (the runtime evaluates such meshes, ignoring it, as OpenSubdiv does).
+void check_every_vertex_used(const SurfaceTopology& topology) {
+  std::vector<char> used(topology.vertex_count(), 0);
+  for (int v : topology.face_vertices()) used[static_cast<std::size_t>(v)] = 1;
+  const auto it = std::find(used.begin(), used.end(), 0);
+  if (it != used.end())
+    throw FitError("control vertex " + std::to_string(it - used.begin()) +
+                   " (numbered from 0) belongs to no face: it has no part in the surface, so no fit can place it; remove it");
+}
+
 }  // namespace
 
 std::vector<Point> fit_at_samples(const SurfaceTopology& topology, const std::vector<RealSample>& samples,
@@ -104,6 +116,7 @@ std::vector<Point> fit_at_samples(const SurfaceTopology& topology, const std::ve
     throw FitError(std::to_string(samples.size()) + " samples for " + std::to_string(points.size()) + " points");
   if (!(smoothing >= 0) || !std::isfinite(smoothing)) throw FitError("the smoothing weight must be finite and >= 0");
   check_points(points, "point");
+  check_every_vertex_used(topology);
   const StencilRows rows = topology.stencils(samples);
   const auto laplacian =
       fitting::control_laplacian(topology.vertex_count(), topology.face_sizes(), topology.face_vertices());
@@ -122,6 +135,7 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
                    std::to_string(topology->vertex_count()) + " vertices");
   check_points(points, "point");
   check_points(initial, "control vertex");
+  check_every_vertex_used(*topology);
   if (options.iterations < 0 || options.iterations > 100000) throw FitError("iterations must be 0..100000");
   for (const double x : {options.smoothing, options.smoothing_decay, options.smoothing_floor, options.max_error})
     if (!(x >= 0) || !std::isfinite(x)) throw FitError("smoothing, its decay and floor, and max_error must be finite and >= 0");

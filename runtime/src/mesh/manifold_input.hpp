@@ -1,0 +1,36 @@
+#pragma once
+// Meshes as modellers save them, made into what the families subdivide: a
+// vertex in no face is left out (it has no part in the surface), and a vertex
+// whose faces form several fans (pieces of surface that meet only there,
+// OpenSubdiv's non-manifold vertex) becomes one vertex per fan. OpenSubdiv
+// makes such a vertex infinitely sharp, so each copy is a corner (or, for a
+// closed fan, a cone point); the fans' own boundary edges are boundaries as
+// anywhere else. The families work on the result; a first refinement step
+// gathers its vertices from the control vertices, so positions, stencil rows
+// and every other interface keep the caller's numbering.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "stencil_runtime/mesh.hpp"
+
+namespace stencil_runtime {
+
+struct ManifoldInput {
+  bool changed = false;            // false: the mesh is used as given (and the rest is empty)
+  std::vector<int> face_vertices;  // over the new vertices, face by face as given
+  std::vector<int> origin;         // per new vertex: the control vertex it is
+  MeshFeatures features;           // the tags on the new vertices, the copies of a non-manifold vertex sharpened
+};
+
+// A mesh that fails the checks of link_polygons (sizes, indices, a face that
+// repeats a vertex, an edge used twice in one direction) is returned
+// unchanged, for link_polygons to name the fault. The features' tags must
+// name edges and vertices of the mesh (LevelSharpness::of checks that first).
+ManifoldInput make_manifold(std::size_t vertex_count, const std::vector<int>& face_sizes,
+                            const std::vector<int>& face_vertices, const MeshFeatures& features);
+
+// `message` with every "vertex K" naming the control vertex that new vertex K is.
+std::string name_control_vertices(const std::string& message, const std::vector<int>& origin);
+
+}  // namespace stencil_runtime
