@@ -14,6 +14,7 @@
 // (STENCIL_SOAK_SEED).
 
 #include <algorithm>
+#include <cmath>
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <map>
@@ -28,6 +29,8 @@
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
 #include "sharp_features.hpp"
+#include "stencil_runtime/closest_point.hpp"
+#include "stencil_runtime/tessellation.hpp"
 
 using namespace stencil_runtime;
 using namespace test_runtime;
@@ -215,6 +218,66 @@ struct Tally {
   std::map<std::string, int> reasons;
 };
 
+// A tessellation at random rates: every point finite and used, no directed
+// edge twice (consistently oriented, nothing overlapping), and the edges with
+// no reverse (the rims along boundaries and holes) closed loops. Closest
+// points to random queries: on the surface at the parameters returned, and no
+// farther than the surface's nodes at rate 4. "" when all holds.
+std::string tessellation_and_distances(const Surface& surface, const Case& c, double size) {
+  std::mt19937 rng(static_cast<unsigned>(c.mesh.face_count() * 7919 + c.mesh.vertex_count()));
+  const auto& rates = surface.topology().tables().rates();
+  std::vector<int> chosen(c.mesh.face_count());
+  for (int& r : chosen) r = rates[rng() % rates.size()];
+  const PolygonSoup soup = tessellate(surface, chosen);
+  std::map<std::pair<int, int>, int> directed;
+  std::vector<int> balance(soup.positions.size(), 0);
+  std::vector<char> used(soup.positions.size(), 0);
+  auto polygon = [&](const int* v, int k) {
+    for (int i = 0; i < k; ++i) {
+      used[static_cast<std::size_t>(v[i])] = 1;
+      ++directed[{v[i], v[(i + 1) % k]}];
+    }
+  };
+  for (const auto& q : soup.quads) polygon(q.data(), 4);
+  for (const auto& t : soup.triangles) polygon(t.data(), 3);
+  for (const auto& [e, n] : directed) {
+    if (n != 1) return "tessellation: edge " + std::to_string(e.first) + "->" + std::to_string(e.second) + " occurs " + std::to_string(n) + " times";
+    if (!directed.count({e.second, e.first})) ++balance[static_cast<std::size_t>(e.first)], --balance[static_cast<std::size_t>(e.second)];
+  }
+  for (std::size_t p = 0; p < soup.positions.size(); ++p) {
+    if (!used[p]) return "tessellation: point " + std::to_string(p) + " unused";
+    if (balance[p] != 0) return "tessellation: the rim is not closed at point " + std::to_string(p);
+    for (float x : soup.positions[p])
+      if (!std::isfinite(x)) return "tessellation: point " + std::to_string(p) + " is not finite";
+  }
+  std::vector<Point> nodes;
+  for (std::size_t f = 0; f < c.mesh.face_count(); ++f) {
+    if (surface.topology().is_hole(f)) continue;
+    const long n = 4;
+    const bool triangle = surface.topology().tables().family() == SchemeFamily::Triangle;
+    for (long j = 0; j <= n; ++j)
+      for (long i = 0; i + (triangle ? j : 0) <= n; ++i) nodes.push_back(surface.evaluate(f, grid(i, j, n)));
+  }
+  ClosestPointOptions options;
+  options.tolerance = 1e-10 * size;
+  options.threads = 1;
+  const ClosestPointQuery query(surface, options);
+  std::uniform_real_distribution<double> u(-0.3, 0.3);
+  for (int k = 0; k < 6; ++k) {
+    const Point& near = nodes[rng() % nodes.size()];
+    const Point q{near[0] + u(rng) * size, near[1] + u(rng) * size, near[2] + u(rng) * size};
+    const ClosestPoint r = query.find(q);
+    if (!r.found) return "closest point: none found";
+    const Point at = surface.evaluate(r.face, r.u, r.v, 1e-12).point;
+    if (distance(at, r.point) > 1e-9 * size) return "closest point: not the surface's point at its parameters";
+    double nearest = 1e300;
+    for (const Point& p : nodes) nearest = std::min(nearest, distance(p, q));
+    if (r.distance > nearest + 1e-9 * size)
+      return "closest point: " + std::to_string(r.distance / size) + " of the size away, a node is at " + std::to_string(nearest / size);
+  }
+  return "";
+}
+
 // Compares one case against Bfr; returns a description of the first mismatch, or "".
 std::string compare(const std::shared_ptr<const Tables>& tables, bool loop, const Case& c, Tally& tally) {
   std::shared_ptr<const SurfaceTopology> topology;
@@ -281,7 +344,7 @@ std::string compare(const std::shared_ptr<const Tables>& tables, bool loop, cons
           if (!(e < 1e-8)) return where.str() + ": derivative " + std::to_string(e) + " of the size from Bfr's";
         }
   }
-  return "";
+  return tessellation_and_distances(surface, c, size);
 }
 
 int environment(const char* name, int fallback) {
@@ -422,4 +485,5 @@ TEST_CASE("soak: many random meshes against Bfr, both schemes", "[.soak]") {
   run(false, meshes, seed);
   run(true, meshes, seed);
 }
+
 

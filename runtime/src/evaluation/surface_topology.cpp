@@ -12,7 +12,9 @@
 #include "exact_stencil.hpp"
 
 #include "family/family.hpp"
+#include "family/sharp_cut.hpp"
 #include "mesh/manifold_input.hpp"
+#include "mesh/polygon_links.hpp"
 #include "mesh/sharpness.hpp"
 #include "quad/quad_family.hpp"
 #include "stencil_runtime/limits.hpp"
@@ -25,29 +27,6 @@ namespace {
 // Appended to every topology error: the library numbers from 0, OBJ files from 1.
 constexpr const char* kNumbering =
     " (faces and vertices are numbered from 0 in file order; an OBJ file's vertex k is vertex k-1 here)";
-
-// With `none`, OpenSubdiv gives a face at a boundary vertex a surface after
-// all when both of that vertex's boundary edges are tagged infinitely sharp
-// (Bfr: no "non-sharp boundary"); the runtime takes every such face away, so
-// it refuses those tags instead of giving a different surface.
-void refuse_sharp_boundary_edges(const std::vector<int>& face_sizes, const std::vector<int>& face_vertices,
-                                 const MeshFeatures& features) {
-  if (std::none_of(features.edges.begin(), features.edges.end(), [](const MeshFeatures::Edge& e) { return e.sharpness >= 10; }))
-    return;
-  std::set<std::pair<int, int>> directed;
-  std::size_t offset = 0;
-  for (int k : face_sizes) {
-    for (int c = 0; c < k; ++c)
-      directed.emplace(face_vertices[offset + static_cast<std::size_t>(c)], face_vertices[offset + static_cast<std::size_t>((c + 1) % k)]);
-    offset += static_cast<std::size_t>(k);
-  }
-  for (const MeshFeatures::Edge& e : features.edges)
-    if (e.sharpness >= 10 && directed.count({e.a, e.b}) != directed.count({e.b, e.a}))
-      throw MeshError("the boundary edge " + std::to_string(e.a) + "-" + std::to_string(e.b) +
-                      " is tagged infinitely sharp under boundary interpolation `none`, where OpenSubdiv gives the faces at "
-                      "its ends a surface when both boundary edges there are sharp; that is not supported yet: remove the "
-                      "tag, or use edge-only, where every boundary edge is sharp" + std::string(kNumbering));
-}
 
 }  // namespace
 
@@ -110,23 +89,23 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   if (input.changed) family->gather_from(t->vertex_count_, input.origin);
   t->family_ = std::move(family);
   if (features.boundary == BoundaryInterpolation::None && t->family_->has_boundary()) {
-    refuse_sharp_boundary_edges(t->face_sizes_, t->face_vertices_, features);
-    // OpenSubdiv's `none`: the faces at boundary vertices keep their part in
-    // the subdivision but have no surface, as holes (the steps keep the
-    // vertices' numbers, so the prepared topology answers for them). A
-    // non-manifold vertex is on the boundary when any of its fans is.
-    std::vector<char> boundary(t->vertex_count_, 0);
+    // OpenSubdiv's `none`: the faces at a boundary vertex keep their part in
+    // the subdivision but have no surface, as holes, unless every boundary
+    // edge there is tagged infinitely sharp (family/sharp_cut.hpp). A
+    // non-manifold vertex counts when any of its fans does.
+    const std::vector<char> own = surfaceless_vertices(mesh, link_polygons(mesh, true), LevelSharpness::of(mesh, tags, true));
+    std::vector<char> surfaceless(t->vertex_count_, 0);
     for (std::size_t v = 0; v < mesh.vertex_count; ++v)
-      if (t->family_->on_boundary(static_cast<int>(v))) boundary[static_cast<std::size_t>(input.changed ? input.origin[v] : static_cast<int>(v))] = 1;
+      if (own[v]) surfaceless[static_cast<std::size_t>(input.changed ? input.origin[v] : static_cast<int>(v))] = 1;
     if (t->holes_.empty()) t->holes_.assign(t->face_sizes_.size(), 0);
     std::size_t offset = 0;
     for (std::size_t f = 0; f < t->face_sizes_.size(); ++f) {
       for (int c = 0; c < t->face_sizes_[f]; ++c)
-        if (boundary[static_cast<std::size_t>(t->face_vertices_[offset + static_cast<std::size_t>(c)])]) t->holes_[f] = 1;
+        if (surfaceless[static_cast<std::size_t>(t->face_vertices_[offset + static_cast<std::size_t>(c)])]) t->holes_[f] = 1;
       offset += static_cast<std::size_t>(t->face_sizes_[f]);
     }
     if (std::find(t->holes_.begin(), t->holes_.end(), 0) == t->holes_.end())
-      throw MeshError("every face has a vertex on the boundary: with the boundary interpolation `none` the mesh has no surface");
+      throw MeshError("every face has a vertex on the boundary (whose boundary edges are not all tagged infinitely sharp): with the boundary interpolation `none` the mesh has no surface");
   }
   return t;
 }

@@ -94,7 +94,7 @@ LevelSharpness sharpen_step(const Connectivity& parent, const LevelSharpness& sh
   // A boundary edge (a half-edge a -> b without b -> a) is infinitely sharp,
   // as OpenSubdiv makes it: b gets it as one more incident edge. Its rows are
   // the step's own boundary rules, and its children are boundary edges again,
-  // so it is not kept in the sharpness of the next level.
+  // so its sharpness is not carried to them (but for an infinitely sharp tag, below).
   std::vector<std::vector<char>> on_boundary(parent.vertex_count);
   for (std::size_t a = 0; a < parent.vertex_count; ++a) on_boundary[a].assign(neighbours[a].size(), 0);
   for (std::size_t a = 0; a < parent.vertex_count; ++a)
@@ -155,8 +155,14 @@ LevelSharpness sharpen_step(const Connectivity& parent, const LevelSharpness& sh
   for (std::size_t v = 0; v < parent.vertex_count; ++v)
     for (std::size_t i = 0; i < neighbours[v].size(); ++i) {
       const int a = static_cast<int>(v), b = neighbours[v][i], e = edge_points[v][i];
-      if (a > b || on_boundary[v][i]) continue;
+      if (a > b) continue;
       const float s = sharpness.edge(a, b);
+      if (on_boundary[v][i]) {
+        // Its rows are the boundary's; a tag of infinite sharpness stays on its
+        // halves, where boundary interpolation `none` asks for it (sharp_cut.hpp).
+        if (s >= kInfiniteSharpness) next.set_edge(a, e, kInfiniteSharpness), next.set_edge(e, b, kInfiniteSharpness);
+        continue;
+      }
       if (s <= 0) continue;
       const SparseEntries mid{{static_cast<std::uint32_t>(a), 0.5}, {static_cast<std::uint32_t>(b), 0.5}};
       const bool stays = next.edge(a, e) > 0 && next.edge(e, b) > 0;

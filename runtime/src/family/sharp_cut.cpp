@@ -77,4 +77,14 @@ SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& lin
   return out;
 }
 
+std::vector<char> surfaceless_vertices(const Connectivity& mesh, const PolygonLinks& links, const LevelSharpness& sharpness) {
+  std::vector<char> out(mesh.vertex_count, 0);
+  for (std::size_t h = 0; h < mesh.face_vertices.size(); ++h) {
+    if (links.twin[h] != PolygonLinks::kNoTwin) continue;
+    const int a = mesh.face_vertices[h], b = mesh.face_vertices[links.next[h]];
+    if (sharpness.edge(a, b) < kInfiniteSharpness) out[static_cast<std::size_t>(a)] = out[static_cast<std::size_t>(b)] = 1;
+  }
+  return out;
+}
+
 }  // namespace stencil_runtime

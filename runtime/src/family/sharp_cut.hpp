@@ -40,16 +40,23 @@ struct SharpCut {
 SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& links, const LevelSharpness& sharpness,
                                bool edge_and_corner);
 
-// With boundary interpolation `none`, per vertex of `cut`: whether it copies a
-// vertex on the mesh's own boundary (`uncut`: the topology the cut was made
-// from, with on_boundary(v)), whose faces have no surface; copies along
-// creases are boundary vertices of the cut mesh only. Empty without `none`.
-template <class Topology>
-std::vector<char> no_surface_vertices(bool no_boundary_surface, const Topology& uncut, const SharpCut& cut) {
+// With boundary interpolation `none`, per vertex of a mesh (`links` over
+// `mesh`): whether the faces at it have no surface. OpenSubdiv (Far's
+// makeBoundaryFacesHoles) takes the surface away from the faces at a boundary
+// vertex unless every boundary edge there is tagged infinitely sharp; the
+// tags' sharpness carries over to the edges' children, so the same test holds
+// at every level of the preparation.
+std::vector<char> surfaceless_vertices(const Connectivity& mesh, const PolygonLinks& links, const LevelSharpness& sharpness);
+
+// The same per vertex of `cut` (each copy as the vertex it copies, `uncut`
+// its mesh); empty without `none`.
+inline std::vector<char> no_surface_vertices(bool no_boundary_surface, const Connectivity& uncut, const LevelSharpness& sharpness,
+                                             const SharpCut& cut) {
   std::vector<char> out;
   if (!no_boundary_surface) return out;
+  const std::vector<char> own = surfaceless_vertices(uncut, link_polygons(uncut, true), sharpness);
   out.resize(cut.mesh.vertex_count);
-  for (std::size_t v = 0; v < out.size(); ++v) out[v] = uncut.on_boundary(cut.origin[v]) ? 1 : 0;
+  for (std::size_t v = 0; v < out.size(); ++v) out[v] = own[static_cast<std::size_t>(cut.origin[v])];
   return out;
 }
 

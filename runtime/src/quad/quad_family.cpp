@@ -77,7 +77,7 @@ bool isolated(const QuadTopology& topo, const std::vector<SectorRule>& corner, c
 // (steps keep a vertex's number of faces, so this is checked once on the
 // input). stencilgen writes sectors for up to as many faces as the largest
 // valence it is given.
-void check_vertices(const SharpCut& cut, const PolygonLinks& links, const PolygonLinks& uncut, bool no_boundary_surface,
+void check_vertices(const SharpCut& cut, const PolygonLinks& links, const std::vector<char>& no_surface,
                     const QuadTables& tables, ValenceCheck& valences) {
   for (std::size_t v = 0; v < cut.mesh.vertex_count; ++v) {
     const int k = links.valence[v];
@@ -97,7 +97,7 @@ void check_vertices(const SharpCut& cut, const PolygonLinks& links, const Polygo
       }
       continue;
     }
-    if (no_boundary_surface && uncut.boundary[static_cast<std::size_t>(cut.origin[v])]) continue;  // no surface there: any will do
+    if (!no_surface.empty() && no_surface[v]) continue;  // no surface there: any will do
     const SectorRule rule = cut.rule[v];
     if ((k == 2 && rule == SectorRule::Crease) || (k == 1 && rule == SectorRule::Corner)) continue;  // regular boundary patches
     if (k > limits::kMaxValence)
@@ -160,7 +160,8 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 4);
   {
     const SharpCut input = cut_along_sharp_edges(mesh, links, sharpness, edge_and_corner);
-    check_vertices(input, input.cut ? link_polygons(input.mesh, true) : links, links, out.no_boundary_surface, t, valences);
+    check_vertices(input, input.cut ? link_polygons(input.mesh, true) : links,
+                   no_surface_vertices(out.no_boundary_surface, mesh, sharpness, input), t, valences);
   }
   if (links.has_boundary) {
     const CurveCreaseRule crease = quad_crease_rule(t, tables.scheme());
@@ -226,7 +227,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   const int before_isolation = out.steps;
   SharpCut cut = cut_of(out.mesh, sharpness, edge_and_corner);
   QuadTopology patch_topo(cut.mesh, true);
-  std::vector<char> no_surface = no_surface_vertices(out.no_boundary_surface, topo, cut);
+  std::vector<char> no_surface = no_surface_vertices(out.no_boundary_surface, out.mesh, sharpness, cut);
   while (!isolated(patch_topo, cut.rule, no_surface)) {
     if (out.steps - before_isolation + (out.polygon_step ? 1 : 0) == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices still share faces after " + std::to_string(limits::kMaxRefinementSteps) +
@@ -234,7 +235,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     step_once();
     cut = cut_of(out.mesh, sharpness, edge_and_corner);
     patch_topo = QuadTopology(cut.mesh, true);
-    no_surface = no_surface_vertices(out.no_boundary_surface, topo, cut);
+    no_surface = no_surface_vertices(out.no_boundary_surface, out.mesh, sharpness, cut);
   }
   // The patches, on the cut mesh. Its extra vertices (copies of those on
   // creases) and the points beyond its boundaries (boundary_patch_ready)

@@ -168,13 +168,10 @@ struct PatchMesh {
     if (sharpness.infinite()) {
       cut = cut_along_sharp_edges(mesh, link_polygons(mesh, true), sharpness, edge_and_corner);
       cut_topology.emplace(cut->mesh, link_polygons(cut->mesh, true));
-      no_surface = no_surface_vertices(no_boundary_surface, topo, *cut);
+      no_surface = no_surface_vertices(no_boundary_surface, mesh, sharpness, *cut);
       rules = cut->rule;
     } else {
-      if (no_boundary_surface) {
-        no_surface.resize(topo.vertices());
-        for (std::size_t v = 0; v < topo.vertices(); ++v) no_surface[v] = topo.on_boundary(static_cast<int>(v)) ? 1 : 0;
-      }
+      if (no_boundary_surface) no_surface = surfaceless_vertices(mesh, link_polygons(mesh, true), sharpness);
       // Nothing to cut: the vertices' rules as the cut gives them (edge-and-corner's corners), on a boundary only.
       rules = topo.has_boundary() ? cut_along_sharp_edges(mesh, link_polygons(mesh, true), sharpness, edge_and_corner).rule
                                   : std::vector<SectorRule>(topo.vertices(), SectorRule::Crease);
@@ -269,7 +266,7 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
     ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 6);
     const SharpCut input = cut_along_sharp_edges(mesh, links, sharpness, edge_and_corner);
     check_loop_vertices(input, input.cut ? link_polygons(input.mesh, true) : links, links,
-                        no_surface_vertices(no_boundary_surface, topo, input), tables.scheme(), t, valences);
+                        no_surface_vertices(no_boundary_surface, mesh, sharpness, input), tables.scheme(), t, valences);
     valences.finish();
   }
   const bool sqrt3 = t.refinement() == TriangleRefinement::Sqrt3;
