@@ -9,7 +9,8 @@
 // refused with a message that names what it lacks; such refusals are counted
 // and shown, and a refusal of anything but a documented limitation fails.
 //
-// The default suite runs a few dozen meshes per scheme; `runtime_tests
+// nonpoly, which nothing else evaluates, is checked for continuity across
+// every edge instead. The default suite runs a few dozen meshes per scheme; `runtime_tests
 // "[soak]"` runs STENCIL_SOAK_MESHES of them (default 400) with its own seed
 // (STENCIL_SOAK_SEED).
 
@@ -113,7 +114,7 @@ struct Case {
 Case random_case(bool loop, std::mt19937& rng) {
   Case c;
   std::ostringstream what;
-  const int base = static_cast<int>(rng() % 5);
+  const int base = static_cast<int>(rng() % (loop ? 5 : 7));
   const int a = 3 + static_cast<int>(rng() % 4), b = 3 + static_cast<int>(rng() % 4);
   if (!loop) {
     switch (base) {
@@ -121,6 +122,8 @@ Case random_case(bool loop, std::mt19937& rng) {
       case 1: c.mesh = test_meshes::tube(a + 1, b), what << "tube " << a + 1 << "x" << b; break;
       case 2: c.mesh = quad_torus(a + 1, b), what << "torus " << a + 1 << "x" << b; break;
       case 3: c.mesh = test_meshes::boundary_fan(1 + static_cast<int>(rng() % 8), 2), what << "boundary fan"; break;
+      case 5: c.mesh = triangle_grid(a, b, rng), what << "triangle grid " << a << "x" << b << " (the polygon step)"; break;
+      case 6: c.mesh = test_meshes::house(rng() % 2 == 0), what << "house (quads and triangles)"; break;
       default: {
         const char* names[] = {"cube", "quad-sphere", "torus-3-5", "bumpy-sphere"};
         const char* name = names[rng() % 4];
@@ -163,6 +166,8 @@ Case random_case(bool loop, std::mt19937& rng) {
                                            BoundaryInterpolation::None};
   const BoundaryInterpolation option = options[rng() % 3];
   c.features.boundary(option);
+  const bool triangles = std::find(c.mesh.face_sizes.begin(), c.mesh.face_sizes.end(), 3) != c.mesh.face_sizes.end();
+  if (!loop && triangles && rng() % 2) c.features.smooth_triangles(), what << ", smooth triangles";
   what << ", " << c.features.ours.edges.size() << " sharp edges, " << corners << " sharp vertices, " << c.holes.size()
        << " holes, boundary "
        << (option == BoundaryInterpolation::EdgeOnly ? "edge-only" : option == BoundaryInterpolation::EdgeAndCorner ? "edge-and-corner" : "none");
@@ -207,7 +212,7 @@ std::set<int> bfr_dart_vertices(const Case& c) {
 
 // Limitations the docs state (docs/runtime.md): refusals that name them are not failures.
 bool documented_refusal(const std::string& message) {
-  for (const char* known : {"valence", "faces at", "not covered", "regenerate", "no surface", "infinitely sharp under boundary interpolation `none`"})
+  for (const char* known : {"valence", "faces at", "not covered", "regenerate", "no surface", "infinitely sharp under boundary interpolation `none`", "smooth triangle rule"})
     if (message.find(known) != std::string::npos) return true;
   return false;
 }
@@ -251,13 +256,19 @@ std::string tessellation_and_distances(const Surface& surface, const Case& c, do
       if (!std::isfinite(x)) return "tessellation: point " + std::to_string(p) + " is not finite";
   }
   std::vector<Point> nodes;
+  const bool triangle = surface.topology().tables().family() == SchemeFamily::Triangle;
   for (std::size_t f = 0; f < c.mesh.face_count(); ++f) {
-    if (surface.topology().is_hole(f)) continue;
+    if (surface.topology().is_hole(f) || c.mesh.face_sizes[f] != (triangle ? 3 : 4)) continue;
     const long n = 4;
-    const bool triangle = surface.topology().tables().family() == SchemeFamily::Triangle;
     for (long j = 0; j <= n; ++j)
       for (long i = 0; i + (triangle ? j : 0) <= n; ++i) nodes.push_back(surface.evaluate(f, grid(i, j, n)));
   }
+  // A mesh of N-gons only (Catmull-Clark's polygon step): the tessellation's
+  // points stand in for the nodes, rounded to float.
+  const double slack = nodes.empty() ? 1e-6 * size : 1e-9 * size;
+  if (nodes.empty())
+    for (const auto& p : soup.positions) nodes.push_back({p[0], p[1], p[2]});
+  if (nodes.empty()) return "";
   ClosestPointOptions options;
   options.tolerance = 1e-10 * size;
   options.threads = 1;
@@ -272,7 +283,7 @@ std::string tessellation_and_distances(const Surface& surface, const Case& c, do
     if (distance(at, r.point) > 1e-9 * size) return "closest point: not the surface's point at its parameters";
     double nearest = 1e300;
     for (const Point& p : nodes) nearest = std::min(nearest, distance(p, q));
-    if (r.distance > nearest + 1e-9 * size)
+    if (r.distance > nearest + slack)
       return "closest point: " + std::to_string(r.distance / size) + " of the size away, a node is at " + std::to_string(nearest / size);
   }
   return "";
@@ -347,6 +358,58 @@ std::string compare(const std::shared_ptr<const Tables>& tables, bool loop, cons
   return tessellation_and_distances(surface, c, size);
 }
 
+// nonpoly has no reference to compare with: the surface is the same from both
+// faces at every node of every edge two quads share (rates 1..5), and its
+// tessellations and closest points hold as above. "" when all holds.
+std::string nonpoly_checks(const std::shared_ptr<const Tables>& tables, const Case& c, Tally& tally) {
+  std::shared_ptr<const SurfaceTopology> topology;
+  try {
+    topology = SurfaceTopology::create(tables, c.mesh.vertex_count(), c.mesh.face_sizes, c.mesh.face_vertices, c.holes,
+                                       c.features.ours);
+  } catch (const Error& e) {
+    ++tally.refused;
+    std::string kind = std::string(e.what()).substr(0, 60);
+    for (char& ch : kind)
+      if (ch >= '0' && ch <= '9') ch = '#';
+    ++tally.reasons[kind];
+    return documented_refusal(e.what()) ? "" : std::string("refused: ") + e.what();
+  }
+  ++tally.compared;
+  const Surface surface(topology, c.mesh.positions);
+  const double size = extent(c.mesh);
+  // Quad corner c's edge c -> c+1 at fraction t from corner c.
+  auto on_edge = [](int corner, long t, long n) -> std::pair<long, long> {
+    switch (corner) {
+      case 0: return {t, 0};
+      case 1: return {n, t};
+      case 2: return {n - t, n};
+      default: return {0, n - t};
+    }
+  };
+  std::map<std::pair<int, int>, std::pair<std::size_t, int>> half_edges;  // (a, b) -> face, corner
+  std::size_t first = 0;
+  for (std::size_t f = 0; f < c.mesh.face_count(); first += static_cast<std::size_t>(c.mesh.face_sizes[f]), ++f) {
+    if (c.mesh.face_sizes[f] != 4 || topology->is_hole(f)) continue;
+    for (int k = 0; k < 4; ++k)
+      half_edges[{c.mesh.face_vertices[first + static_cast<std::size_t>(k)], c.mesh.face_vertices[first + static_cast<std::size_t>((k + 1) % 4)]}] = {f, k};
+  }
+  for (const auto& [edge, here] : half_edges) {
+    const auto there = half_edges.find({edge.second, edge.first});
+    if (there == half_edges.end() || edge.first > edge.second) continue;
+    for (long n = 1; n <= 5; ++n)
+      for (long t = 0; t <= n; ++t) {
+        const auto [i, j] = on_edge(here.second, t, n);
+        const auto [k, l] = on_edge(there->second.second, n - t, n);
+        const double d = distance(surface.evaluate(here.first, grid(i, j, n)), surface.evaluate(there->second.first, grid(k, l, n))) / size;
+        tally.worst_position = std::max(tally.worst_position, d);
+        if (!(d < 1e-12))
+          return "faces " + std::to_string(here.first) + " and " + std::to_string(there->second.first) + " differ by " + std::to_string(d) +
+                 " of the size on their edge " + std::to_string(edge.first) + "-" + std::to_string(edge.second);
+      }
+  }
+  return tessellation_and_distances(surface, c, size);
+}
+
 int environment(const char* name, int fallback) {
   const char* s = std::getenv(name);
   return s ? std::atoi(s) : fallback;
@@ -382,6 +445,28 @@ TEST_CASE("random meshes, boundaries, holes and sharp features equal Bfr (Catmul
 TEST_CASE("random meshes, boundaries, holes and sharp features equal Bfr (Loop)",
           "[runtime][random][opensubdiv][loop]") {
   run(true, 30, 20261128u);
+}
+
+void run_nonpoly(int meshes, unsigned seed) {
+  const auto tables = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 5", "sgs").string());
+  std::mt19937 rng(seed);
+  Tally tally;
+  for (int k = 0; k < meshes; ++k) {
+    const Case c = random_case(false, rng);
+    INFO("case " << k << " (seed " << seed << "): " << c.what);
+    CHECK(nonpoly_checks(tables, c, tally) == "");
+  }
+  std::ostringstream summary;
+  summary << "nonpoly: " << meshes << " random meshes, " << tally.compared << " checked, " << tally.refused
+          << " refused; worst difference across an edge " << tally.worst_position << " of the size";
+  for (const auto& [reason, n] : tally.reasons) summary << "\n  " << n << " x " << reason;
+  WARN(summary.str());
+  CHECK(tally.compared > meshes / 2);
+}
+
+TEST_CASE("random meshes, boundaries, holes and sharp features: nonpoly is continuous, tessellates and finds closest points",
+          "[runtime][random]") {
+  run_nonpoly(20, 20261128u);
 }
 
 TEST_CASE("a sharp edge between two darts, or a dart and a corner, equals Bfr",
@@ -484,6 +569,7 @@ TEST_CASE("soak: many random meshes against Bfr, both schemes", "[.soak]") {
   const unsigned seed = static_cast<unsigned>(environment("STENCIL_SOAK_SEED", 1));
   run(false, meshes, seed);
   run(true, meshes, seed);
+  run_nonpoly(meshes, seed);
 }
 
 
