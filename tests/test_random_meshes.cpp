@@ -125,8 +125,8 @@ Case random_case(bool loop, std::mt19937& rng) {
       case 5: c.mesh = triangle_grid(a, b, rng), what << "triangle grid " << a << "x" << b << " (the polygon step)"; break;
       case 6: c.mesh = test_meshes::house(rng() % 2 == 0), what << "house (quads and triangles)"; break;
       default: {
-        const char* names[] = {"cube", "quad-sphere", "torus-3-5", "bumpy-sphere"};
-        const char* name = names[rng() % 4];
+        const char* names[] = {"cube", "quad-sphere", "torus-3-5", "bumpy-sphere", "chess-piece"};
+        const char* name = names[rng() % 5];
         c.mesh = bundled(name), what << name;
       }
     }
