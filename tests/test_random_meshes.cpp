@@ -223,6 +223,29 @@ struct Tally {
   std::map<std::string, int> reasons;
 };
 
+// A refusal counted by its kind (its first words, numbers blanked); "" when
+// it names a documented limitation, else what it said.
+std::string refused(const Error& e, Tally& tally) {
+  ++tally.refused;
+  const std::string reason = e.what();
+  std::string kind = reason.substr(0, 60);
+  for (char& ch : kind)
+    if (ch >= '0' && ch <= '9') ch = '#';
+  ++tally.reasons[kind];
+  return documented_refusal(reason) ? "" : "refused: " + reason;
+}
+
+// The case's topology, or null with `why` (refused()) when the runtime refuses it.
+std::shared_ptr<const SurfaceTopology> case_topology(const std::shared_ptr<const Tables>& tables, const Case& c, Tally& tally,
+                                                     std::string& why) {
+  try {
+    return SurfaceTopology::create(tables, c.mesh.vertex_count(), c.mesh.face_sizes, c.mesh.face_vertices, c.holes, c.features.ours);
+  } catch (const Error& e) {
+    why = refused(e, tally);
+    return nullptr;
+  }
+}
+
 // A tessellation at random rates: every point finite and used, no directed
 // edge twice (consistently oriented, nothing overlapping), and the edges with
 // no reverse (the rims along boundaries and holes) closed loops. Closest
@@ -291,19 +314,9 @@ std::string tessellation_and_distances(const Surface& surface, const Case& c, do
 
 // Compares one case against Bfr; returns a description of the first mismatch, or "".
 std::string compare(const std::shared_ptr<const Tables>& tables, bool loop, const Case& c, Tally& tally) {
-  std::shared_ptr<const SurfaceTopology> topology;
-  try {
-    topology = SurfaceTopology::create(tables, c.mesh.vertex_count(), c.mesh.face_sizes, c.mesh.face_vertices, c.holes,
-                                       c.features.ours);
-  } catch (const Error& e) {
-    ++tally.refused;
-    std::string reason = e.what();
-    std::string kind = reason.substr(0, 60);
-    for (char& ch : kind)
-      if (ch >= '0' && ch <= '9') ch = '#';
-    ++tally.reasons[kind];
-    return documented_refusal(reason) ? "" : "refused: " + reason;
-  }
+  std::string why;
+  const auto topology = case_topology(tables, c, tally, why);
+  if (!topology) return why;
   const Surface surface(topology, c.mesh.positions);
   std::unique_ptr<bfr_reference::BfrLimit> reference;
   try {
@@ -362,18 +375,9 @@ std::string compare(const std::shared_ptr<const Tables>& tables, bool loop, cons
 // faces at every node of every edge two quads share (rates 1..5), and its
 // tessellations and closest points hold as above. "" when all holds.
 std::string nonpoly_checks(const std::shared_ptr<const Tables>& tables, const Case& c, Tally& tally) {
-  std::shared_ptr<const SurfaceTopology> topology;
-  try {
-    topology = SurfaceTopology::create(tables, c.mesh.vertex_count(), c.mesh.face_sizes, c.mesh.face_vertices, c.holes,
-                                       c.features.ours);
-  } catch (const Error& e) {
-    ++tally.refused;
-    std::string kind = std::string(e.what()).substr(0, 60);
-    for (char& ch : kind)
-      if (ch >= '0' && ch <= '9') ch = '#';
-    ++tally.reasons[kind];
-    return documented_refusal(e.what()) ? "" : std::string("refused: ") + e.what();
-  }
+  std::string why;
+  const auto topology = case_topology(tables, c, tally, why);
+  if (!topology) return why;
   ++tally.compared;
   const Surface surface(topology, c.mesh.positions);
   const double size = extent(c.mesh);

@@ -3,16 +3,9 @@
 #include <numeric>
 #include <string>
 
+#include "mesh/union_find.hpp"
+
 namespace stencil_runtime {
-
-namespace {
-
-std::size_t find(std::vector<std::size_t>& parent, std::size_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
-}  // namespace
 
 SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& links, const LevelSharpness& sharpness,
                                bool edge_and_corner) {
@@ -48,15 +41,15 @@ SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& lin
     const std::size_t t = links.twin[h];
     if (t == PolygonLinks::kNoTwin || t < h || infinite(h)) continue;
     // h runs a -> b in its face; t runs b -> a in the other: a's corners are h and next(t), b's next(h) and t.
-    parent[find(parent, h)] = find(parent, links.next[t]);
-    parent[find(parent, links.next[h])] = find(parent, t);
+    parent[find_root(parent, h)] = find_root(parent, links.next[t]);
+    parent[find_root(parent, links.next[h])] = find_root(parent, t);
   }
   std::vector<int> id_of_root(corners, -1);
   std::vector<char> used(nv, 0);
   out.origin.resize(nv);
   std::iota(out.origin.begin(), out.origin.end(), 0);
   for (std::size_t h = 0; h < corners; ++h) {
-    const std::size_t root = find(parent, h);
+    const std::size_t root = find_root(parent, h);
     int& id = id_of_root[root];
     if (id < 0) {
       const auto v = static_cast<std::size_t>(vertex(h));

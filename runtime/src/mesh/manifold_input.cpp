@@ -8,17 +8,9 @@
 
 #include "sharpness.hpp"
 #include "stencil_runtime/limits.hpp"
+#include "union_find.hpp"
 
 namespace stencil_runtime {
-
-namespace {
-
-std::size_t find(std::vector<std::size_t>& parent, std::size_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
-}  // namespace
 
 ManifoldInput make_manifold(std::size_t vertex_count, const std::vector<int>& face_sizes,
                             const std::vector<int>& face_vertices, const MeshFeatures& features) {
@@ -63,13 +55,13 @@ ManifoldInput make_manifold(std::size_t vertex_count, const std::vector<int>& fa
   std::iota(parent.begin(), parent.end(), std::size_t{0});
   for (std::size_t h = 0; h < nh; ++h) {
     const std::size_t twin = corner_of_edge(face_vertices[next[h]], face_vertices[h]);
-    if (twin != SIZE_MAX) parent[find(parent, h)] = find(parent, next[twin]);  // both at face_vertices[h]
+    if (twin != SIZE_MAX) parent[find_root(parent, h)] = find_root(parent, next[twin]);  // both at face_vertices[h]
   }
   std::vector<std::size_t> fan_root(vertex_count, SIZE_MAX);
   std::vector<char> several(vertex_count, 0);
   for (std::size_t h = 0; h < face_vertices.size(); ++h) {
     const auto v = static_cast<std::size_t>(face_vertices[h]);
-    const std::size_t root = find(parent, h);
+    const std::size_t root = find_root(parent, h);
     if (fan_root[v] == SIZE_MAX) fan_root[v] = root;
     else if (fan_root[v] != root) several[v] = 1;
   }
@@ -89,7 +81,7 @@ ManifoldInput make_manifold(std::size_t vertex_count, const std::vector<int>& fa
   out.face_vertices.resize(face_vertices.size());
   for (std::size_t h = 0; h < face_vertices.size(); ++h) {
     const auto v = static_cast<std::size_t>(face_vertices[h]);
-    const std::size_t root = find(parent, h);
+    const std::size_t root = find_root(parent, h);
     if (root == fan_root[v]) {
       out.face_vertices[h] = number[v];
       continue;
