@@ -24,6 +24,9 @@ namespace stencil_runtime {
 
 namespace {
 
+// holes_: 1 for a face tagged `hole`, this for one that `none` takes the surface from.
+constexpr char kNoBoundarySurface = 2;
+
 // Appended to every topology error: the library numbers from 0, OBJ files from 1.
 constexpr const char* kNumbering =
     " (faces and vertices are numbered from 0 in file order; an OBJ file's vertex k is vertex k-1 here)";
@@ -101,7 +104,8 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
     std::size_t offset = 0;
     for (std::size_t f = 0; f < t->face_sizes_.size(); ++f) {
       for (int c = 0; c < t->face_sizes_[f]; ++c)
-        if (surfaceless[static_cast<std::size_t>(t->face_vertices_[offset + static_cast<std::size_t>(c)])]) t->holes_[f] = 1;
+        if (surfaceless[static_cast<std::size_t>(t->face_vertices_[offset + static_cast<std::size_t>(c)])] && !t->holes_[f])
+          t->holes_[f] = kNoBoundarySurface;
       offset += static_cast<std::size_t>(t->face_sizes_[f]);
     }
     if (std::find(t->holes_.begin(), t->holes_.end(), 0) == t->holes_.end())
@@ -119,7 +123,11 @@ FaceDomain SurfaceTopology::domain(std::size_t face) const {
   if (face >= face_count())
     throw EvaluationError("face " + std::to_string(face) + " does not exist (the mesh has " + std::to_string(face_count()) +
                           " faces, numbered from 0)");
-  if (is_hole(face)) throw EvaluationError("face " + std::to_string(face) + " is a hole (tagged `hole` in the mesh): it has no surface");
+  if (is_hole(face))
+    throw EvaluationError("face " + std::to_string(face) +
+                          (holes_[face] == kNoBoundarySurface
+                               ? " has a vertex on the boundary, and under boundary interpolation `none` such faces have no surface"
+                               : " is a hole (tagged `hole` in the mesh): it has no surface"));
   return family_->domain(face);
 }
 

@@ -109,8 +109,9 @@ ManifoldInput make_manifold(std::size_t vertex_count, const std::vector<int>& fa
     out.features.vertices.push_back({number[v], sharpness});
     for (int c : copies[v]) out.features.vertices.push_back({c, sharpness});
   };
-  for (const MeshFeatures::Vertex& t : features.vertices)
-    if (number[static_cast<std::size_t>(t.vertex)] >= 0) each_copy(static_cast<std::size_t>(t.vertex), t.sharpness);
+  for (const MeshFeatures::Vertex& t : features.vertices)  // checked before; a vertex in no face drops its tag
+    if (t.vertex >= 0 && static_cast<std::size_t>(t.vertex) < vertex_count && number[static_cast<std::size_t>(t.vertex)] >= 0)
+      each_copy(static_cast<std::size_t>(t.vertex), t.sharpness);
   for (std::size_t v = 0; v < vertex_count; ++v)
     if (several[v]) each_copy(v, kInfiniteSharpness);  // as OpenSubdiv sharpens a non-manifold vertex, whatever its tag
   out.changed = true;
