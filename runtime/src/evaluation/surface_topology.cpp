@@ -68,16 +68,18 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   t->face_vertices_ = std::move(face_vertices);
   // Vertices in no face left out, non-manifold vertices split into their fans
   // (mesh/manifold_input.hpp); the tags are checked on the mesh as given first.
+  Connectivity mesh{t->vertex_count_, t->face_sizes_, t->face_vertices_};
   ManifoldInput input;
   try {
-    if (!features.edges.empty() || !features.vertices.empty())
-      LevelSharpness::of({t->vertex_count_, t->face_sizes_, t->face_vertices_}, features, true);
-    input = make_manifold(t->vertex_count_, t->face_sizes_, t->face_vertices_, features);
+    if (!features.edges.empty() || !features.vertices.empty()) LevelSharpness::of(mesh, features, true);
+    input = make_manifold(mesh, features);
   } catch (const MeshError& e) {
     throw MeshError(std::string(e.what()) + kNumbering);
   }
-  const std::vector<int>& vertices = input.changed ? input.face_vertices : t->face_vertices_;
-  const Connectivity mesh{input.changed ? input.origin.size() : t->vertex_count_, t->face_sizes_, vertices};
+  if (input.changed) {
+    mesh.vertex_count = input.origin.size();
+    mesh.face_vertices = std::move(input.face_vertices);
+  }
   const MeshFeatures& tags = input.changed ? input.features : features;
   std::unique_ptr<Family> family;
   try {

@@ -6,60 +6,26 @@
 #include <regex>
 #include <unordered_map>
 
+#include "polygon_links.hpp"
 #include "sharpness.hpp"
-#include "stencil_runtime/limits.hpp"
 #include "union_find.hpp"
 
 namespace stencil_runtime {
 
-ManifoldInput make_manifold(std::size_t vertex_count, const std::vector<int>& face_sizes,
-                            const std::vector<int>& face_vertices, const MeshFeatures& features) {
+ManifoldInput make_manifold(const Connectivity& mesh, const MeshFeatures& features) {
   ManifoldInput out;
-  // The corners' next corner in their face; anything link_polygons refuses leaves the mesh as it is.
-  std::vector<std::size_t> next(face_vertices.size());
-  std::size_t first = 0;
-  for (int k : face_sizes) {
-    if (k < 3 || first + static_cast<std::size_t>(k) > face_vertices.size()) return out;
-    for (std::size_t c = 0; c < static_cast<std::size_t>(k); ++c) {
-      const int v = face_vertices[first + c];
-      if (v < 0 || static_cast<std::size_t>(v) >= vertex_count) return out;
-      for (std::size_t d = 0; d < c; ++d)
-        if (face_vertices[first + d] == v) return out;
-      next[first + c] = first + (c + 1) % static_cast<std::size_t>(k);
-    }
-    first += static_cast<std::size_t>(k);
-  }
-  if (first != face_vertices.size()) return out;
-  // Outgoing corners by vertex (CSR), as link_polygons finds twins: linear, no hashing.
-  const std::size_t nh = face_vertices.size();
-  std::vector<std::size_t> start(vertex_count + 1, 0);
-  for (int v : face_vertices) ++start[static_cast<std::size_t>(v) + 1];
-  for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
-  std::vector<std::size_t> outgoing(nh), fill(start.begin(), start.end() - 1);
-  for (std::size_t h = 0; h < nh; ++h) outgoing[fill[static_cast<std::size_t>(face_vertices[h])]++] = h;
-  // The corner at a whose edge runs a -> b, or SIZE_MAX.
-  auto corner_of_edge = [&](int a, int b) {
-    for (std::size_t k = start[static_cast<std::size_t>(a)]; k < start[static_cast<std::size_t>(a) + 1]; ++k)
-      if (face_vertices[next[outgoing[k]]] == b) return outgoing[k];
-    return SIZE_MAX;
-  };
-  for (std::size_t v = 0; v < vertex_count; ++v)  // link_polygons names a valence out of range
-    if (start[v + 1] - start[v] > static_cast<std::size_t>(limits::kMaxValence)) return out;
-  for (std::size_t v = 0; v < vertex_count; ++v)  // an edge used twice in one direction: link_polygons names it
-    for (std::size_t a = start[v]; a < start[v + 1]; ++a)
-      for (std::size_t b = start[v]; b < a; ++b)
-        if (face_vertices[next[outgoing[a]]] == face_vertices[next[outgoing[b]]]) return out;
-
-  // A vertex's corners in one fan are joined across the edges two faces share.
-  std::vector<std::size_t> parent(face_vertices.size());
+  const PolygonLinks links = link_polygons(mesh, true, Fans::Any);  // names any other fault
+  const std::vector<int>& face_vertices = mesh.face_vertices;
+  const std::size_t vertex_count = mesh.vertex_count, nh = face_vertices.size();
+  // A vertex's corners in one fan are joined across the edges two faces share
+  // (twin runs b -> a, its next corner is at a again).
+  std::vector<std::size_t> parent(nh);
   std::iota(parent.begin(), parent.end(), std::size_t{0});
-  for (std::size_t h = 0; h < nh; ++h) {
-    const std::size_t twin = corner_of_edge(face_vertices[next[h]], face_vertices[h]);
-    if (twin != SIZE_MAX) parent[find_root(parent, h)] = find_root(parent, next[twin]);  // both at face_vertices[h]
-  }
+  for (std::size_t h = 0; h < nh; ++h)
+    if (links.twin[h] != PolygonLinks::kNoTwin) parent[find_root(parent, h)] = find_root(parent, links.next[links.twin[h]]);
   std::vector<std::size_t> fan_root(vertex_count, SIZE_MAX);
   std::vector<char> several(vertex_count, 0);
-  for (std::size_t h = 0; h < face_vertices.size(); ++h) {
+  for (std::size_t h = 0; h < nh; ++h) {
     const auto v = static_cast<std::size_t>(face_vertices[h]);
     const std::size_t root = find_root(parent, h);
     if (fan_root[v] == SIZE_MAX) fan_root[v] = root;
@@ -97,11 +63,21 @@ ManifoldInput make_manifold(std::size_t vertex_count, const std::vector<int>& fa
   out.features = features;
   out.features.edges.clear();
   out.features.vertices.clear();
-  for (const MeshFeatures::Edge& e : features.edges) {  // on the fan that has the edge
-    std::size_t h = corner_of_edge(e.a, e.b);
-    if (h == SIZE_MAX) h = corner_of_edge(e.b, e.a);
-    if (h == SIZE_MAX) continue;  // checked before: cannot happen
-    const int x = out.face_vertices[h], y = out.face_vertices[next[h]];
+  // Each tagged edge on the fan that has it: one of its half-edges, found by a
+  // pass over them all.
+  auto key = [&](int a, int b) {
+    const auto [lo, hi] = std::minmax(a, b);
+    return static_cast<std::uint64_t>(lo) * vertex_count + static_cast<std::uint64_t>(hi);
+  };
+  std::unordered_map<std::uint64_t, std::size_t> tagged;
+  for (const MeshFeatures::Edge& e : features.edges) tagged.emplace(key(e.a, e.b), SIZE_MAX);
+  if (!tagged.empty())
+    for (std::size_t h = 0; h < nh; ++h)
+      if (auto it = tagged.find(key(face_vertices[h], face_vertices[links.next[h]])); it != tagged.end()) it->second = h;
+  for (const MeshFeatures::Edge& e : features.edges) {
+    const std::size_t h = tagged.at(key(e.a, e.b));
+    if (h == SIZE_MAX) continue;  // checked before (LevelSharpness::of): cannot happen
+    const int x = out.face_vertices[h], y = out.face_vertices[links.next[h]];
     const bool forward = face_vertices[h] == e.a;
     out.features.edges.push_back({forward ? x : y, forward ? y : x, e.sharpness});
   }

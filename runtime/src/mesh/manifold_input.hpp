@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "connectivity.hpp"
 #include "stencil_runtime/mesh.hpp"
 
 namespace stencil_runtime {
@@ -23,12 +24,11 @@ struct ManifoldInput {
   MeshFeatures features;           // the tags on the new vertices, the copies of a non-manifold vertex sharpened
 };
 
-// A mesh that fails the checks of link_polygons (sizes, indices, a face that
-// repeats a vertex, an edge used twice in one direction) is returned
-// unchanged, for link_polygons to name the fault. The features' tags must
-// name edges and vertices of the mesh (LevelSharpness::of checks that first).
-ManifoldInput make_manifold(std::size_t vertex_count, const std::vector<int>& face_sizes,
-                            const std::vector<int>& face_vertices, const MeshFeatures& features);
+// Throws link_polygons' MeshError (Fans::Any) for a mesh that fails its
+// checks: sizes, indices, a face that repeats a vertex, a valence out of
+// range, an edge used twice in one direction. The features' tags must name
+// edges and vertices of the mesh (LevelSharpness::of checks that first).
+ManifoldInput make_manifold(const Connectivity& mesh, const MeshFeatures& features);
 
 // `message` with every "vertex K" naming the control vertex that new vertex K is.
 std::string name_control_vertices(const std::string& message, const std::vector<int>& origin);

@@ -11,7 +11,7 @@ namespace {
 std::string edge_name(int a, int b) { return "(" + std::to_string(a) + ", " + std::to_string(b) + ")"; }
 }  // namespace
 
-PolygonLinks link_polygons(const Connectivity& mesh, bool boundaries) {
+PolygonLinks link_polygons(const Connectivity& mesh, bool boundaries, Fans fans) {
   const std::size_t nf = mesh.face_count(), nv = mesh.vertex_count;
   PolygonLinks l;
   l.start.assign(nf + 1, 0);
@@ -74,13 +74,18 @@ PolygonLinks link_polygons(const Connectivity& mesh, bool boundaries) {
     }
     l.twin[h] = found;
   }
+  l.boundary.assign(nv, 0);
+  if (fans == Fans::Any) {
+    for (std::size_t h = 0; h < nh; ++h)
+      if (l.twin[h] == PolygonLinks::kNoTwin) l.boundary[static_cast<std::size_t>(vert(h))] = 1;
+    return l;
+  }
   for (std::size_t v = 0; v < nv; ++v)
     if (l.valence[v] == 0) throw MeshError("vertex " + std::to_string(v) + " belongs to no face");
   // Each vertex must have a single fan of faces: turning round it from one
   // outgoing half-edge (to the previous half-edge of the face, then across)
   // must visit all of its faces. A boundary vertex has exactly one outgoing
   // boundary half-edge, where its open fan starts.
-  l.boundary.assign(nv, 0);
   for (std::size_t v = 0; v < nv; ++v) {
     std::size_t start = outgoing[first[v]];
     int open = 0;

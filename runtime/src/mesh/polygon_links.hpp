@@ -22,13 +22,20 @@ struct PolygonLinks {
   bool has_boundary = false;
 };
 
+// Whether every vertex must be in exactly one fan of faces (what the families
+// subdivide), or may be in none or several (a mesh as a modeller saved it,
+// before mesh/manifold_input.hpp splits it).
+enum class Fans { One, Any };
+
 // Throws MeshError naming the face, edge or vertex for a face with fewer than
 // three vertices, an index that names no vertex, a face that repeats a vertex,
-// an edge used twice in the same direction, a boundary edge (unless
-// `boundaries` allows them), a vertex in no face, or a vertex whose faces form
-// more than one fan (for a boundary vertex: one open fan, from its outgoing
-// boundary edge to its incoming one). Face sizes must add up to the number of
-// face-vertex indices (checked).
-PolygonLinks link_polygons(const Connectivity& mesh, bool boundaries = false);
+// a valence over limits::kMaxValence, an edge used twice in the same
+// direction, a boundary edge (unless `boundaries` allows them), and with
+// Fans::One a vertex in no face or a vertex whose faces form more than one fan
+// (for a boundary vertex: one open fan, from its outgoing boundary edge to its
+// incoming one). Face sizes must add up to the number of face-vertex indices
+// (checked). With Fans::Any, `boundary` marks the vertices with a boundary
+// edge.
+PolygonLinks link_polygons(const Connectivity& mesh, bool boundaries = false, Fans fans = Fans::One);
 
 }  // namespace stencil_runtime
