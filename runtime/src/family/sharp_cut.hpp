@@ -32,6 +32,14 @@ struct SharpCut {
   bool cut = false;              // whether any vertex was split
 };
 
+// A dart or a corner: the end of an infinitely sharp crease's slit, which the
+// cut puts on the cut mesh's boundary. Where the crease is one edge between
+// two such vertices nothing is cut (no vertex has two sharp edges): both stay
+// inside until a step splits the edge, so a mesh with one is not isolated yet,
+// and its sector's tables are needed all the same.
+inline bool ends_slit(SectorRule rule) { return rule == SectorRule::Dart || rule == SectorRule::Corner; }
+inline bool slit_end_inside(SectorRule rule, bool on_cut_boundary) { return ends_slit(rule) && !on_cut_boundary; }
+
 // `links`: of `mesh`. A crease that ends inside the mesh (a vertex on one such
 // edge, a dart) leaves its end one vertex, in all its faces, on the boundary
 // of the cut mesh (the slit), with the dart rule. An infinitely sharp vertex
@@ -49,12 +57,12 @@ SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& lin
 std::vector<char> surfaceless_vertices(const Connectivity& mesh, const PolygonLinks& links, const LevelSharpness& sharpness);
 
 // The same per vertex of `cut` (each copy as the vertex it copies, `uncut`
-// its mesh); empty without `none`.
-inline std::vector<char> no_surface_vertices(bool no_boundary_surface, const Connectivity& uncut, const LevelSharpness& sharpness,
-                                             const SharpCut& cut) {
+// its mesh, `uncut_links` its links); empty without `none`.
+inline std::vector<char> no_surface_vertices(bool no_boundary_surface, const Connectivity& uncut, const PolygonLinks& uncut_links,
+                                             const LevelSharpness& sharpness, const SharpCut& cut) {
   std::vector<char> out;
   if (!no_boundary_surface) return out;
-  const std::vector<char> own = surfaceless_vertices(uncut, link_polygons(uncut, true), sharpness);
+  const std::vector<char> own = surfaceless_vertices(uncut, uncut_links, sharpness);
   out.resize(cut.mesh.vertex_count);
   for (std::size_t v = 0; v < out.size(); ++v) out[v] = own[static_cast<std::size_t>(cut.origin[v])];
   return out;

@@ -35,12 +35,6 @@ int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<Sec
   return -1;
 }
 
-// A dart or corner the cut left inside the mesh (see isolated()).
-bool slit_end_inside(const QuadTopology& topo, int v, const std::vector<SectorRule>& rule) {
-  const SectorRule r = rule[static_cast<std::size_t>(v)];
-  return (r == SectorRule::Dart || r == SectorRule::Corner) && !topo.on_boundary(v);
-}
-
 // Whether every face has a patch: at most one extraordinary corner; a face at
 // a boundary vertex in other than two faces (or a corner) its sector's patch;
 // any other face touching the boundary one of the regular boundary patches
@@ -50,13 +44,8 @@ bool slit_end_inside(const QuadTopology& topo, int v, const std::vector<SectorRu
 // its vertices' rules, `no_surface` per vertex whether the faces at it have no
 // surface (empty: none).
 bool isolated(const QuadTopology& topo, const std::vector<SectorRule>& corner, const std::vector<char>& no_surface) {
-  // A vertex on one infinitely sharp edge (a dart, or a corner by its own
-  // sharpness) is the end of its crease's slit in the cut mesh, except when
-  // the crease is that one edge between two such vertices: nothing is cut then
-  // (no vertex has two sharp edges) and both stay inside, until a step splits
-  // the edge.
   for (std::size_t v = 0; v < topo.vertices(); ++v)
-    if (slit_end_inside(topo, static_cast<int>(v), corner)) return false;
+    if (slit_end_inside(corner[v], topo.on_boundary(static_cast<int>(v)))) return false;
   for (std::size_t f = 0; f < topo.faces(); ++f) {
     if (topo.touches_boundary(f)) {
       if (topo.touches_marked(f, no_surface)) continue;
@@ -82,10 +71,7 @@ void check_vertices(const SharpCut& cut, const PolygonLinks& links, const std::v
   for (std::size_t v = 0; v < cut.mesh.vertex_count; ++v) {
     const int k = links.valence[v];
     const std::string who = "vertex " + std::to_string(cut.origin[v]);
-    // A dart or corner inside the cut mesh (its crease one edge to another
-    // dart or corner) is on its slit after a step: it needs its sector like
-    // the others.
-    if (!links.boundary[v] && cut.rule[v] != SectorRule::Dart && cut.rule[v] != SectorRule::Corner) {
+    if (!links.boundary[v] && !ends_slit(cut.rule[v])) {
       if (cut.rule[v] != SectorRule::Cone) {
         valences.add_lazy(k, [&] { return who; });
       } else if (!tables.has_sector({SectorRule::Cone, k, 0})) {
@@ -111,11 +97,6 @@ void check_vertices(const SharpCut& cut, const PolygonLinks& links, const std::v
   }
 }
 
-// The whole-mesh step's topology cut along the infinitely sharp edges (the
-// mesh itself where there are none), with its corners.
-SharpCut cut_of(const Connectivity& mesh, const LevelSharpness& sharpness, bool edge_and_corner) {
-  return cut_along_sharp_edges(mesh, link_polygons(mesh, true), sharpness, edge_and_corner);
-}
 
 
 // Child c of a face split into quadrants (subdivide_quads) and the parameter
@@ -161,7 +142,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   {
     const SharpCut input = cut_along_sharp_edges(mesh, links, sharpness, edge_and_corner);
     check_vertices(input, input.cut ? link_polygons(input.mesh, true) : links,
-                   no_surface_vertices(out.no_boundary_surface, mesh, sharpness, input), t, valences);
+                   no_surface_vertices(out.no_boundary_surface, mesh, links, sharpness, input), t, valences);
   }
   if (links.has_boundary) {
     const CurveCreaseRule crease = quad_crease_rule(t, tables.scheme());
@@ -225,17 +206,24 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   // ones are boundaries of the cut mesh: sharp_cut.hpp).
   while (sharpness.has_semi_sharp()) step_once();
   const int before_isolation = out.steps;
-  SharpCut cut = cut_of(out.mesh, sharpness, edge_and_corner);
-  QuadTopology patch_topo(cut.mesh, true);
-  std::vector<char> no_surface = no_surface_vertices(out.no_boundary_surface, out.mesh, sharpness, cut);
+  // The whole-mesh step's topology cut along the infinitely sharp edges (the
+  // mesh itself where there are none), with its corners and, under `none`,
+  // the vertices whose faces have no surface.
+  SharpCut cut;
+  std::vector<char> no_surface;
+  auto cut_level = [&] {
+    const PolygonLinks level = link_polygons(out.mesh, true);
+    cut = cut_along_sharp_edges(out.mesh, level, sharpness, edge_and_corner);
+    no_surface = no_surface_vertices(out.no_boundary_surface, out.mesh, level, sharpness, cut);
+    return QuadTopology(cut.mesh, true);
+  };
+  QuadTopology patch_topo = cut_level();
   while (!isolated(patch_topo, cut.rule, no_surface)) {
     if (out.steps - before_isolation + (out.polygon_step ? 1 : 0) == limits::kMaxRefinementSteps)
       throw MeshError("extraordinary vertices still share faces after " + std::to_string(limits::kMaxRefinementSteps) +
                       " subdivision steps");
     step_once();
-    cut = cut_of(out.mesh, sharpness, edge_and_corner);
-    patch_topo = QuadTopology(cut.mesh, true);
-    no_surface = no_surface_vertices(out.no_boundary_surface, out.mesh, sharpness, cut);
+    patch_topo = cut_level();
   }
   // The patches, on the cut mesh. Its extra vertices (copies of those on
   // creases) and the points beyond its boundaries (boundary_patch_ready)

@@ -48,12 +48,9 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
   phantoms.first = topo.vertices();
   const bool cones = std::find(rules.begin(), rules.end(), SectorRule::Cone) != rules.end();
   for (std::size_t f = 0; f < topo.faces(); ++f) {
-    // A dart or corner on one infinitely sharp edge whose slit is that one
-    // edge between two such vertices: nothing is cut yet, a step splits it.
     for (int c = 0; c < 3; ++c) {
       const int v = topo.vertex(f, c);
-      const SectorRule r = rules[static_cast<std::size_t>(v)];
-      if ((r == SectorRule::Dart || r == SectorRule::Corner) && !topo.on_boundary(v)) return false;
+      if (slit_end_inside(rules[static_cast<std::size_t>(v)], topo.on_boundary(v))) return false;
     }
     const bool at_boundary = topo.touches_boundary(f);
     // A vertex on the boundary in other than three faces, a corner, a dart or
@@ -114,10 +111,7 @@ void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const P
       valences.add_boundary(k, what);
       continue;
     }
-    // A dart (or a corner on one sharp edge) is on the slit's end; the cut
-    // leaves it inside when the slit's other end is one too, until a step
-    // splits the edge.
-    if (!links.boundary[v] && cut.rule[v] != SectorRule::Dart && cut.rule[v] != SectorRule::Corner) {
+    if (!links.boundary[v] && !ends_slit(cut.rule[v])) {
       valences.add_lazy(k, [&] { return who; });
       continue;
     }
@@ -165,16 +159,20 @@ struct PatchMesh {
 
   PatchMesh(const Connectivity& mesh, const TriangleTopology& topo, const LevelSharpness& sharpness, bool edge_and_corner,
             bool no_boundary_surface) {
+    if (!sharpness.infinite() && !topo.has_boundary()) {  // closed and nothing to cut: every vertex smooth
+      rules.assign(topo.vertices(), SectorRule::Crease);
+      return;
+    }
+    const PolygonLinks links = link_polygons(mesh, true);
     if (sharpness.infinite()) {
-      cut = cut_along_sharp_edges(mesh, link_polygons(mesh, true), sharpness, edge_and_corner);
+      cut = cut_along_sharp_edges(mesh, links, sharpness, edge_and_corner);
       cut_topology.emplace(cut->mesh, link_polygons(cut->mesh, true));
-      no_surface = no_surface_vertices(no_boundary_surface, mesh, sharpness, *cut);
+      no_surface = no_surface_vertices(no_boundary_surface, mesh, links, sharpness, *cut);
       rules = cut->rule;
     } else {
-      if (no_boundary_surface) no_surface = surfaceless_vertices(mesh, link_polygons(mesh, true), sharpness);
-      // Nothing to cut: the vertices' rules as the cut gives them (edge-and-corner's corners), on a boundary only.
-      rules = topo.has_boundary() ? cut_along_sharp_edges(mesh, link_polygons(mesh, true), sharpness, edge_and_corner).rule
-                                  : std::vector<SectorRule>(topo.vertices(), SectorRule::Crease);
+      if (no_boundary_surface) no_surface = surfaceless_vertices(mesh, links, sharpness);
+      // Nothing to cut: the vertices' rules as the cut gives them (edge-and-corner's corners).
+      rules = cut_along_sharp_edges(mesh, links, sharpness, edge_and_corner).rule;
     }
   }
   const TriangleTopology& topology(const TriangleTopology& uncut) const { return cut_topology ? *cut_topology : uncut; }
@@ -266,7 +264,7 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
     ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 6);
     const SharpCut input = cut_along_sharp_edges(mesh, links, sharpness, edge_and_corner);
     check_loop_vertices(input, input.cut ? link_polygons(input.mesh, true) : links, links,
-                        no_surface_vertices(no_boundary_surface, mesh, sharpness, input), tables.scheme(), t, valences);
+                        no_surface_vertices(no_boundary_surface, mesh, links, sharpness, input), tables.scheme(), t, valences);
     valences.finish();
   }
   const bool sqrt3 = t.refinement() == TriangleRefinement::Sqrt3;
