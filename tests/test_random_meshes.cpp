@@ -4,7 +4,8 @@
 // The meshes are made here from grids, tubes, tori and the bundled meshes by
 // dropping faces at random (which makes boundary vertices of every count of
 // faces, corners, vertices in no face and vertices where two boundaries touch,
-// which OpenSubdiv makes corners), so they reach
+// which OpenSubdiv makes corners) and by flipping a face now and then (its
+// edges then non-manifold, which OpenSubdiv makes infinitely sharp), so they reach
 // configurations no hand-made test names. A mesh the runtime refuses must be
 // refused with a message that names what it lacks; such refusals are counted
 // and shown, and a refusal of anything but a documented limitation fails.
@@ -111,6 +112,15 @@ struct Case {
 };
 
 // A random mesh of the family and random tags on it.
+// The mesh with face f's orientation reversed (its edges then used twice in one direction).
+Mesh flipped(Mesh m, std::size_t f) {
+  std::size_t first = 0;
+  for (std::size_t g = 0; g < f; ++g) first += static_cast<std::size_t>(m.face_sizes[g]);
+  std::reverse(m.face_vertices.begin() + static_cast<std::ptrdiff_t>(first),
+               m.face_vertices.begin() + static_cast<std::ptrdiff_t>(first) + m.face_sizes[f]);
+  return m;
+}
+
 Case random_case(bool loop, std::mt19937& rng) {
   Case c;
   std::ostringstream what;
@@ -150,6 +160,11 @@ Case random_case(bool loop, std::mt19937& rng) {
   c.mesh = drop_faces(c.mesh, drop, rng);
   if (c.mesh.face_count() == 0) c.mesh = loop ? loop_meshes::triangle_tube(4, 2) : test_meshes::tube(4, 2);
   what << ", " << c.mesh.face_count() << " faces kept";
+  if (u(rng) < 0.2) {  // a face flipped against its neighbours: its shared edges non-manifold
+    const std::size_t f = rng() % c.mesh.face_count();
+    c.mesh = flipped(c.mesh, f);
+    what << ", face " << f << " flipped";
+  }
 
   const float sharpness[] = {0.5f, 1.0f, 2.5f, 10.0f};
   const double crease_share = u(rng) < 0.3 ? 0.0 : 0.25 * u(rng);
@@ -565,6 +580,79 @@ TEST_CASE("vertices in no face and non-manifold vertices (fans meeting at a poin
     INFO(message);
     CHECK(message.find("vertex 1 ") != std::string::npos);  // the cube's first vertex, 0 inside
     CHECK(message.find("vertex 0 ") == std::string::npos);
+  }
+}
+
+// Three sheets of `columns` x 3 quads meeting along one chain of `columns`
+// edges (every chain edge in three faces, the chain's inner vertices on a
+// non-manifold crease); `triangles`: each quad split in two.
+Mesh fins(int columns, bool triangles) {
+  Mesh m;
+  for (int i = 0; i <= columns; ++i) m.positions.push_back({double(i), 0.1 * (i % 2), 0});
+  const double directions[3][3] = {{0, 1, 0.1}, {0.1, -0.6, 0.8}, {-0.2, -0.7, -0.7}};
+  for (int sheet = 0; sheet < 3; ++sheet) {
+    const int first = static_cast<int>(m.positions.size());
+    for (int j = 1; j <= 3; ++j)
+      for (int i = 0; i <= columns; ++i) {
+        const double* d = directions[sheet];
+        m.positions.push_back({i + 0.1 * j * d[0], j * d[1] + 0.05 * (i % 3), j * d[2] + 0.03 * ((i + j) % 2)});
+      }
+    auto at = [&](int i, int j) { return j == 0 ? i : first + (j - 1) * (columns + 1) + i; };
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < columns; ++i) {
+        const int q[4] = {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+        if (triangles) {
+          m.face_sizes.insert(m.face_sizes.end(), {3, 3});
+          m.face_vertices.insert(m.face_vertices.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+        } else {
+          m.face_sizes.push_back(4);
+          m.face_vertices.insert(m.face_vertices.end(), q, q + 4);
+        }
+      }
+  }
+  return m;
+}
+
+TEST_CASE("non-manifold edges (fins, a book, a flipped face) equal Bfr", "[runtime][random][opensubdiv]") {
+  // OpenSubdiv makes such edges infinitely sharp and their vertices corners,
+  // except on a non-manifold crease (mesh/manifold_input.hpp).
+  for (bool loop : {false, true}) {
+    const auto tables = Tables::load(loop ? generated_table("loop", "--valence 3-8 --n 1-5", "sgt").string()
+                                          : generated_table("catmull-clark", "--valence 3-8 --n 5", "sgs").string());
+    std::mt19937 rng(9);
+    const Mesh book = fins(1, loop);
+    const Mesh grid = loop ? triangle_grid(5, 5, rng) : test_meshes::open_grid(5, 5);
+    const Mesh torus = loop ? loop_meshes::triangle_torus(6, 5) : quad_torus(6, 5);
+    const std::vector<std::pair<std::string, Mesh>> meshes = {
+        {"fins", fins(4, loop)}, {"book", book}, {"grid with a flipped face", flipped(grid, loop ? 24 : 12)},
+        {"torus with a flipped face", flipped(torus, 7)}};
+    for (const auto& [name, mesh] : meshes)
+      for (const BoundaryInterpolation option :
+           {BoundaryInterpolation::EdgeOnly, BoundaryInterpolation::EdgeAndCorner, BoundaryInterpolation::None}) {
+        if (name == "book" && option == BoundaryInterpolation::None) continue;  // every face at the boundary: no surface
+        Case c;
+        c.mesh = mesh;
+        c.features.boundary(option);
+        if (name == "fins") c.features.crease(8, 9, 2.5);  // a semi-sharp edge on one sheet, next to the chain
+        INFO((loop ? "Loop " : "Catmull-Clark ") << name << ", boundary option " << static_cast<int>(option));
+        Tally t;
+        CHECK(compare(tables, loop, c, t) == "");
+        std::string refusals;
+        for (const auto& [why, count] : t.reasons) refusals += why + "; ";
+        INFO("refused: " << refusals);
+        CHECK(t.compared == 1);
+      }
+  }
+  // The chain's inner vertices follow the crease curve through the chain's
+  // points (not corners): the limit there is (1/6, 2/3, 1/6) of the chain.
+  const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 5", "sgs").string());
+  const Mesh m = fins(4, false);
+  const Surface surface(SurfaceTopology::create(tables, m.vertex_count(), m.face_sizes, m.face_vertices), m.positions);
+  for (int sheet = 0; sheet < 3; ++sheet) {
+    const std::size_t face = static_cast<std::size_t>(sheet) * 12 + 1;  // chain edge (1, 2), corner 0 at vertex 1
+    Point expected{};
+    for (int k = 0; k < 3; ++k) expected[static_cast<std::size_t>(k)] = (m.positions[0][k] + 4 * m.positions[1][k] + m.positions[2][k]) / 6;
+    CHECK(distance(surface.evaluate(face, grid(0, 0, 1)), expected) < 1e-14);
   }
 }
 

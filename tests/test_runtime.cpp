@@ -167,8 +167,16 @@ TEST_CASE("bad tables and bad meshes get clear errors, and nothing is written", 
   const CliResult shared = eval(good.string(), write("bowtie.obj", bowtie), "--face 1 --uv 0,0 --boundary edge-only");
   CHECK(shared.status == 0);
   CHECK(shared.output.find("1 1 0") != std::string::npos);
-  // A mesh that folds onto itself along an edge is still refused, naming the edge.
-  CHECK(eval(good.string(), write("fold.obj", quadv + "v 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\nf 2 3 6 5\n")).output.find("edge (") !=
+  // An edge in three faces (a book of three pages): as in OpenSubdiv,
+  // infinitely sharp, its ends corners of every page.
+  const std::string book = quadv + "v 0 -1 0\nv 1 -1 0\nv 1 0 1\nv 0 0 1\nf 1 2 3 4\nf 2 1 5 6\nf 1 2 7 8\n";
+  const CliResult page = eval(good.string(), write("book.obj", book), "--face 2 --uv 1/2,0 --boundary edge-only");
+  CHECK(page.status == 0);
+  CHECK(page.output.find("\n0.5 0 ") != std::string::npos);  // the edge's midpoint (its crease curve is the edge)
+  // A mesh folded onto itself along an edge: the edge (in three faces) is
+  // cut, which leaves a pillow of two faces whose vertices are in two faces
+  // each: refused, naming one.
+  CHECK(eval(good.string(), write("fold.obj", quadv + "v 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\nf 2 3 6 5\n")).output.find("has valence 2") !=
         std::string::npos);
   CHECK(eval(good.string(), write("badindex.obj", quadv + "f 1 2 3 9\n")).output.find("badindex.obj:5: face index 9") != std::string::npos);
   CHECK(eval(good.string(), cube, "--face 6 --uv 0,0").output.find("face 6 does not exist") != std::string::npos);

@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <numeric>
 #include <regex>
+#include <set>
+#include <tuple>
 #include <unordered_map>
 
 #include "polygon_links.hpp"
@@ -11,6 +13,39 @@
 #include "union_find.hpp"
 
 namespace stencil_runtime {
+
+namespace {
+
+// Per vertex: whether it is on a non-manifold crease, which OpenSubdiv (Far's
+// prepareComponentTagsAndSharpness) leaves smooth along its two non-manifold
+// edges instead of sharpening it: exactly two non-manifold edges, no boundary
+// edge, and more faces than edges (a fin along the crease).
+std::vector<char> non_manifold_creases(const Connectivity& mesh, const PolygonLinks& links) {
+  struct Use {
+    int a, b;  // a < b
+    char non_manifold;
+  };
+  std::vector<Use> uses(mesh.face_vertices.size());
+  for (std::size_t h = 0; h < uses.size(); ++h) {
+    const auto [a, b] = std::minmax(mesh.face_vertices[h], mesh.face_vertices[links.next[h]]);
+    uses[h] = {a, b, links.non_manifold[h]};
+  }
+  std::sort(uses.begin(), uses.end(), [](const Use& x, const Use& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
+  std::vector<int> edges(mesh.vertex_count, 0), torn(mesh.vertex_count, 0), boundary(mesh.vertex_count, 0);
+  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
+    for (j = i + 1; j < uses.size() && uses[j].a == uses[i].a && uses[j].b == uses[i].b;) ++j;
+    const auto a = static_cast<std::size_t>(uses[i].a), b = static_cast<std::size_t>(uses[i].b);
+    ++edges[a], ++edges[b];
+    if (uses[i].non_manifold) ++torn[a], ++torn[b];
+    else if (j - i == 1) ++boundary[a], ++boundary[b];
+  }
+  std::vector<char> out(mesh.vertex_count, 0);
+  for (std::size_t v = 0; v < out.size(); ++v)
+    out[v] = torn[v] == 2 && boundary[v] == 0 && links.valence[v] > edges[v];
+  return out;
+}
+
+}  // namespace
 
 ManifoldInput make_manifold(const Connectivity& mesh, const MeshFeatures& features) {
   ManifoldInput out;
@@ -33,7 +68,8 @@ ManifoldInput make_manifold(const Connectivity& mesh, const MeshFeatures& featur
   }
   const bool unused = std::find(fan_root.begin(), fan_root.end(), SIZE_MAX) != fan_root.end();
   const bool split = std::find(several.begin(), several.end(), 1) != several.end();
-  if (!unused && !split) return out;
+  const bool torn = std::find(links.non_manifold.begin(), links.non_manifold.end(), 1) != links.non_manifold.end();
+  if (!unused && !split && !torn) return out;
 
   // New numbers: the used vertices in order (their first fan), then one per further fan.
   std::vector<int> number(vertex_count, -1);
@@ -88,8 +124,24 @@ ManifoldInput make_manifold(const Connectivity& mesh, const MeshFeatures& featur
   for (const MeshFeatures::Vertex& t : features.vertices)  // checked before; a vertex in no face drops its tag
     if (t.vertex >= 0 && static_cast<std::size_t>(t.vertex) < vertex_count && number[static_cast<std::size_t>(t.vertex)] >= 0)
       each_copy(static_cast<std::size_t>(t.vertex), t.sharpness);
+  // OpenSubdiv makes a non-manifold edge infinitely sharp: here its faces no
+  // longer share it, and each copy is tagged so (a boundary edge tagged so
+  // keeps its faces' surface under `none`, as the uncut edge does there).
+  std::vector<char> sharpened = several;
+  if (torn) {
+    const std::vector<char> crease = non_manifold_creases(mesh, links);
+    std::set<std::pair<int, int>> done;
+    for (std::size_t h = 0; h < nh; ++h) {
+      if (!links.non_manifold[h]) continue;
+      const int x = out.face_vertices[h], y = out.face_vertices[links.next[h]];
+      if (done.insert(std::minmax(x, y)).second) out.features.edges.push_back({x, y, kInfiniteSharpness});
+      sharpened[static_cast<std::size_t>(face_vertices[h])] = sharpened[static_cast<std::size_t>(face_vertices[links.next[h]])] = 1;
+    }
+    for (std::size_t v = 0; v < vertex_count; ++v)
+      if (crease[v]) sharpened[v] = 0;  // its copies follow the crease along the two edges
+  }
   for (std::size_t v = 0; v < vertex_count; ++v)
-    if (several[v]) each_copy(v, kInfiniteSharpness);  // as OpenSubdiv sharpens a non-manifold vertex, whatever its tag
+    if (sharpened[v]) each_copy(v, kInfiniteSharpness);  // as OpenSubdiv sharpens a non-manifold vertex, whatever its tag
   out.changed = true;
   return out;
 }

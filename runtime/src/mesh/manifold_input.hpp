@@ -5,7 +5,13 @@
 // OpenSubdiv's non-manifold vertex) becomes one vertex per fan. OpenSubdiv
 // makes such a vertex infinitely sharp, so each copy is a corner (or, for a
 // closed fan, a cone point); the fans' own boundary edges are boundaries as
-// anywhere else. The families work on the result; a first refinement step
+// anywhere else. An edge in more than two faces, or used twice in one
+// direction (a face flipped against its neighbour), is non-manifold too:
+// OpenSubdiv makes it infinitely sharp and its vertices sharp, except a
+// vertex between two such edges with more faces than edges (a fin along a
+// crease), which follows the crease. Here its faces stop sharing it (each
+// copy tagged infinitely sharp), and the fans that leaves at its vertices
+// become copies as above. The families work on the result; a first refinement step
 // gathers its vertices from the control vertices, so positions, stencil rows
 // and every other interface keep the caller's numbering.
 #include <cstddef>
@@ -26,7 +32,7 @@ struct ManifoldInput {
 
 // Throws link_polygons' MeshError (Fans::Any) for a mesh that fails its
 // checks: sizes, indices, a face that repeats a vertex, a valence out of
-// range, an edge used twice in one direction. The features' tags must name
+// range. The features' tags must name
 // edges and vertices of the mesh (LevelSharpness::of checks that first).
 ManifoldInput make_manifold(const Connectivity& mesh, const MeshFeatures& features);
 

@@ -52,19 +52,30 @@ PolygonLinks link_polygons(const Connectivity& mesh, bool boundaries, Fans fans)
   for (std::size_t v = 0; v < nv; ++v) first[v + 1] = first[v] + static_cast<std::size_t>(l.valence[v]);
   std::vector<std::size_t> outgoing(nh), fill(first.begin(), first.end() - 1);
   for (std::size_t h = 0; h < nh; ++h) outgoing[fill[static_cast<std::size_t>(vert(h))]++] = h;
+  if (fans == Fans::Any) l.non_manifold.assign(nh, 0);
   for (std::size_t v = 0; v < nv; ++v)  // an edge used twice in the same direction
     for (std::size_t a = first[v]; a < first[v + 1]; ++a)
       for (std::size_t b = first[v]; b < a; ++b)
-        if (vert(l.next[outgoing[a]]) == vert(l.next[outgoing[b]]))
+        if (vert(l.next[outgoing[a]]) == vert(l.next[outgoing[b]])) {
+          if (fans == Fans::Any) {
+            l.non_manifold[outgoing[a]] = l.non_manifold[outgoing[b]] = 1;
+            continue;
+          }
           throw MeshError("edge " + edge_name(static_cast<int>(v), vert(l.next[outgoing[a]])) +
                           " is used twice in the same direction (faces " + std::to_string(l.face_of[outgoing[b]]) + " and " +
                           std::to_string(l.face_of[outgoing[a]]) + "): the mesh is non-manifold or inconsistently oriented");
+        }
   l.twin.assign(nh, 0);
   for (std::size_t h = 0; h < nh; ++h) {
     const int a = vert(h), b = vert(l.next[h]);
-    std::size_t found = nh;
+    std::size_t found = nh, reverse = 0;
     for (std::size_t k = first[static_cast<std::size_t>(b)]; k < first[static_cast<std::size_t>(b) + 1]; ++k)
-      if (vert(l.next[outgoing[k]]) == a) found = outgoing[k];
+      if (vert(l.next[outgoing[k]]) == a) found = outgoing[k], ++reverse;
+    if (!l.non_manifold.empty() && (l.non_manifold[h] || reverse > 1)) {  // in three faces or more, or misoriented
+      l.non_manifold[h] = 1;
+      l.twin[h] = PolygonLinks::kNoTwin;
+      continue;
+    }
     if (found == nh) {
       if (!boundaries)
         throw MeshError("edge " + edge_name(a, b) + " of face " + std::to_string(l.face_of[h]) +
@@ -77,7 +88,7 @@ PolygonLinks link_polygons(const Connectivity& mesh, bool boundaries, Fans fans)
   l.boundary.assign(nv, 0);
   if (fans == Fans::Any) {
     for (std::size_t h = 0; h < nh; ++h)
-      if (l.twin[h] == PolygonLinks::kNoTwin) l.boundary[static_cast<std::size_t>(vert(h))] = 1;
+      if (l.twin[h] == PolygonLinks::kNoTwin && !l.non_manifold[h]) l.boundary[static_cast<std::size_t>(vert(h))] = 1;
     return l;
   }
   for (std::size_t v = 0; v < nv; ++v)

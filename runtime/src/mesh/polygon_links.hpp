@@ -19,6 +19,8 @@ struct PolygonLinks {
   std::vector<std::size_t> twin;     // the opposite half-edge (same edge, other face), or kNoTwin
   std::vector<int> valence;          // per vertex: its number of faces (closed: also of edges)
   std::vector<char> boundary;        // per vertex: on the boundary (one more edge than faces)
+  std::vector<char> non_manifold;    // Fans::Any only, per half-edge: its edge is in three faces or more, or used
+                                     // twice in one direction (it has no twin, and is not a boundary)
   bool has_boundary = false;
 };
 
@@ -29,13 +31,14 @@ enum class Fans { One, Any };
 
 // Throws MeshError naming the face, edge or vertex for a face with fewer than
 // three vertices, an index that names no vertex, a face that repeats a vertex,
-// a valence over limits::kMaxValence, an edge used twice in the same
-// direction, a boundary edge (unless `boundaries` allows them), and with
-// Fans::One a vertex in no face or a vertex whose faces form more than one fan
-// (for a boundary vertex: one open fan, from its outgoing boundary edge to its
-// incoming one). Face sizes must add up to the number of face-vertex indices
-// (checked). With Fans::Any, `boundary` marks the vertices with a boundary
-// edge.
+// a valence over limits::kMaxValence, a boundary edge (unless `boundaries`
+// allows them), and with Fans::One an edge used twice in the same direction
+// (or in more than two faces), a vertex in no face or a vertex whose faces form
+// more than one fan (for a boundary vertex: one open fan, from its outgoing
+// boundary edge to its incoming one). Face sizes must add up to the number of
+// face-vertex indices (checked). With Fans::Any, `boundary` marks the vertices
+// with a boundary edge out, and `non_manifold` the half-edges of non-manifold
+// edges.
 PolygonLinks link_polygons(const Connectivity& mesh, bool boundaries = false, Fans fans = Fans::One);
 
 }  // namespace stencil_runtime
