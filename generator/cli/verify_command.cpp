@@ -1,4 +1,5 @@
-// stencilgen verify TABLE.json...: re-checks curve, quad and triangle tables (and a quad scheme's descent.json)
+// stencilgen verify TABLE.json...: re-checks curve, quad and triangle tables (and a quad scheme's descent.json,
+// a Loop scheme's sectors.json)
 // exactly against their scheme.
 #include <iostream>
 
@@ -17,6 +18,7 @@
 #include "quad/quad_table_verify.hpp"
 #include "triangle/triangle_scheme_loader.hpp"
 #include "triangle/triangle_table.hpp"
+#include "triangle/triangle_sectors_json.hpp"
 #include "triangle/triangle_table_verify.hpp"
 
 namespace sg::cli {
@@ -26,7 +28,7 @@ namespace {
 bool verify_file(const std::string& file, const std::string& scheme_spec, const std::vector<std::string>& params) {
   const std::string text = read_file(file, limits::kMaxTableFileBytes, "table");
   if (text.find('\0') != std::string::npos)
-    throw Error(file + ": a binary file; verify checks exact JSON tables (the .json files and descent.json beside it)");
+    throw Error(file + ": a binary file; verify checks exact JSON tables (the .json files, descent.json and sectors.json beside it)");
   const TableDocument table = parse_table_document(text, file);
   // The scheme and parameters the table records, unless given on the command line.
   const std::string& spec = scheme_spec.empty() ? table.scheme : scheme_spec;
@@ -43,6 +45,16 @@ bool verify_file(const std::string& file, const std::string& scheme_spec, const 
       std::cout << file << ": FAIL: differs from the re-solved table (scheme '" << scheme.name << "', valence "
                 << t.valence << ", n = " << t.n << ")\n";
     return check.same;
+  }
+  if (table.format == kTriangleSectorsFormat) {
+    const TriangleScheme scheme = load_triangle_scheme(spec, overrides);
+    const auto failures = verify_triangle_sectors(table, text, scheme);
+    if (failures.empty())
+      std::cout << file << ": OK (" << scheme.name
+                << " sectors: equal to the re-solved ones in every digit; every exact limit stencil sums to 1 and is A0's "
+                   "fixed point, from the file's own rationals)\n";
+    for (const auto& f : failures) std::cout << file << ": FAIL: " << f << "\n";
+    return failures.empty();
   }
   if (table.format == kQuadTableFormat) {
     const QuadScheme scheme = load_quad_scheme(spec, overrides);
@@ -66,7 +78,7 @@ bool verify_file(const std::string& file, const std::string& scheme_spec, const 
   }
   if (table.format != kCurveTableFormat)
     throw Error(file + ": format: unknown table format '" + excerpt(table.format) + "' (expected " + kCurveTableFormat +
-                ", " + kQuadTableFormat + ", " + kQuadDescentFormat + " or " + kTriangleTableFormat + ")");
+                ", " + kQuadTableFormat + ", " + kQuadDescentFormat + ", " + kTriangleTableFormat + " or " + kTriangleSectorsFormat + ")");
   const CurveTable curve = curve_table_from_document(table);
   const CurveScheme scheme = load_curve_scheme(spec, overrides);
   const auto failures = verify_curve_table(curve, scheme);

@@ -9,6 +9,7 @@
 #include "base/limits.hpp"
 #include "common/rate_spec.hpp"
 #include "triangle/triangle_children.hpp"
+#include "triangle/triangle_sectors_json.hpp"
 #include "common/table_set_pipeline.hpp"
 
 namespace sg {
@@ -63,9 +64,11 @@ std::size_t write_triangle_tables(const TriangleScheme& scheme, const TriangleTa
                                   const std::filesystem::path& out_dir, BinaryPrecision precision) {
   OutputTransaction tx(out_dir / scheme.name);
   add_table_files(tx, set.tables, triangle_table_to_json);
-  std::string binary = triangle_tables_to_binary(scheme, set, precision);
+  TriangleSectorSet sectors;
+  std::string binary = triangle_tables_to_binary(scheme, set, precision, &sectors);
   const std::size_t size = binary.size();
   tx.add(scheme.name + ".sgt", std::move(binary));
+  if (!sectors.sectors.empty()) tx.add("sectors.json", triangle_sectors_to_json(scheme, sectors));  // the same, exact
   tx.commit();
   return size;
 }

@@ -403,6 +403,9 @@ std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatc
 
 namespace {
 
+SectorWeight weight_of(const Rational& x) { return {as_real(x), to_string(x)}; }
+SectorWeight weight_of(const Real& x) { return {x, to_string(x, 40)}; }
+
 template <class T>
 TriangleSectorDescent sector_descent(const TriangleScheme& scheme, const BoundarySector& sector,
                                      const std::vector<SectorPoint>& regular_layout) {
@@ -412,11 +415,11 @@ TriangleSectorDescent sector_descent(const TriangleScheme& scheme, const Boundar
   out.sector = sector;
   out.exact = std::is_same_v<T, Rational>;
   out.eigen_residual = as_real(patch.eigen_residual);
-  for (const T& x : patch.at(0, 0)) out.limit.push_back(as_real(x));
+  for (const T& x : patch.at(0, 0)) out.limit.push_back(weight_of(x));
   out.tangents = triangle_sector_tangents(patch, out.no_tangents);
   for (const auto& row : patch.child_at_vertex) {
     out.child_at_vertex.emplace_back();
-    for (const auto& [c, w] : row) out.child_at_vertex.back().emplace_back(c, as_real(w));
+    for (const auto& [c, w] : row) out.child_at_vertex.back().emplace_back(c, weight_of(w));
   }
   out.layout = std::move(patch.layout);
   std::map<WedgePoint, std::size_t> index;
@@ -433,12 +436,12 @@ TriangleSectorDescent sector_descent(const TriangleScheme& scheme, const Boundar
       const long fb = corner[0][1] + a * (corner[1][1] - corner[0][1]) + b * (corner[2][1] - corner[1][1]);
       const auto fine = wedge.canonical(sector.position, fa, fb);
       if (!fine) throw Error("internal: a regular cell of " + sector.name() + " reaches beyond the phantom rows");
-      std::vector<std::pair<std::size_t, Real>> row;
+      std::vector<std::pair<std::size_t, SectorWeight>> row;
       for (const auto& [x, w] : rules.refined(*fine)) {
         if (w == 0) continue;
         const auto it = index.find(x);
         if (it == index.end()) throw Error("internal: a regular cell of " + sector.name() + " needs a point outside its layout");
-        row.emplace_back(it->second, as_real(w));
+        row.emplace_back(it->second, weight_of(w));
       }
       std::sort(row.begin(), row.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
       out.regular_children[static_cast<std::size_t>(c)].push_back(std::move(row));

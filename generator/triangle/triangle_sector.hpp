@@ -119,21 +119,30 @@ TriangleSectorPatch<T> solve_triangle_sector(const TriangleScheme& scheme, const
 template <class T>
 std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatch<T>& patch, std::string& why);
 
+// A weight the tables keep: its value (rounded into the binary tables) and
+// its text for the exact JSON: "p/q" where the sector's rules are rational,
+// else 40 significant digits of the 80-digit solve.
+struct SectorWeight {
+  Real value;
+  std::string text;
+};
+using SectorRows = std::vector<std::vector<std::pair<std::size_t, SectorWeight>>>;
+
 // What the tables keep of a sector's patch: no stencils (every rate of every
 // sector would be large); the runtime makes them from this by the same
 // recursion (docs/table-format.md, "Loop boundary sectors").
 struct TriangleSectorDescent {
   BoundarySector sector;
   std::vector<WedgePoint> layout;
-  bool exact = true;        // rational rules: every weight below is exact
-  Real eigen_residual = 0;  // of `limit` (zero when exact)
-  std::vector<Real> limit;  // W(0)
+  bool exact = true;                // rational rules: every weight below is exact
+  Real eigen_residual = 0;          // of `limit` (zero when exact)
+  std::vector<SectorWeight> limit;  // W(0)
   // The four cells of one Loop step in the order of triangle_children.hpp: the
   // child at B (A0, rows over `layout` in `layout`'s order), then the regular
   // cells, up (1, 0), up (0, 1) and down (0, 0), each unrotated: per point of
   // valence 6's layout (as the tables store it), its row over `layout`.
-  std::vector<std::vector<std::pair<std::size_t, Real>>> child_at_vertex;
-  std::array<std::vector<std::vector<std::pair<std::size_t, Real>>>, 3> regular_children;
+  SectorRows child_at_vertex;
+  std::array<SectorRows, 3> regular_children;
   std::optional<TangentStencils> tangents;  // none for a corner, or where the spectrum gives no plane
   std::string no_tangents;                  // why not
 };

@@ -12,6 +12,7 @@
 #include "stencil_runtime/binary_format.hpp"
 #include "triangle/triangle_children.hpp"
 #include "triangle/triangle_sector.hpp"
+#include "triangle/triangle_sectors_json.hpp"
 #include "triangle/triangle_tangents.hpp"
 
 namespace sg {
@@ -83,14 +84,7 @@ void put_children(std::string& out, const std::vector<TriangleChild>& children) 
 
 // The sectors' layouts, limit stencils, cells and tangents (docs/table-format.md,
 // "Loop boundary sectors"); none for sqrt(3) or a scheme without a crease curve.
-void put_sectors(std::string& out, const TriangleScheme& scheme, const TriangleTableSet& set,
-                 const std::vector<SectorPoint>& regular_layout) {
-  std::vector<BoundarySector> sectors;
-  if (scheme.refinement == TriangleRefinement::Loop && scheme.has_crease)
-    sectors = triangle_sectors(*std::max_element(set.valences.begin(), set.valences.end()), true);
-  std::vector<TriangleSectorDescent> data(sectors.size());
-  tbb::parallel_for(std::size_t(0), sectors.size(),
-                    [&](std::size_t s) { data[s] = triangle_sector_descent(scheme, sectors[s], regular_layout); });
+void put_sectors(std::string& out, const TriangleScheme& scheme, const std::vector<TriangleSectorDescent>& data) {
   put<std::uint32_t>(out, static_cast<std::uint32_t>(data.size()));
   for (std::size_t s = 0; s < data.size(); ++s) {
     const TriangleSectorDescent& d = data[s];
@@ -106,12 +100,12 @@ void put_sectors(std::string& out, const TriangleScheme& scheme, const TriangleT
       put<std::int32_t>(out, static_cast<std::int32_t>(p.a));
       put<std::int32_t>(out, static_cast<std::int32_t>(p.b));
     }
-    for (const Real& w : d.limit) put<double>(out, to_double(w));
-    auto rows = [](const std::vector<std::vector<std::pair<std::size_t, Real>>>& exact) {
+    for (const SectorWeight& w : d.limit) put<double>(out, to_double(w.value));
+    auto rows = [](const SectorRows& exact) {
       std::vector<std::vector<std::pair<std::size_t, double>>> r;
       for (const auto& row : exact) {
         r.emplace_back();
-        for (const auto& [c, w] : row) r.back().emplace_back(c, to_double(w));
+        for (const auto& [c, w] : row) r.back().emplace_back(c, to_double(w.value));
       }
       return r;
     };
@@ -132,7 +126,8 @@ void put_sectors(std::string& out, const TriangleScheme& scheme, const TriangleT
 
 }  // namespace
 
-std::string triangle_tables_to_binary(const TriangleScheme& scheme, const TriangleTableSet& set, BinaryPrecision precision) {
+std::string triangle_tables_to_binary(const TriangleScheme& scheme, const TriangleTableSet& set, BinaryPrecision precision,
+                                      TriangleSectorSet* sectors_out) {
   const TriangleLayouts layouts = union_layouts(scheme, set);
   std::string out(fmt::kTriangleMagic, sizeof fmt::kTriangleMagic);
   put<std::uint32_t>(out, fmt::kTriangleVersion);
@@ -238,7 +233,9 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
         for (double x : w) put_scalar(out, x, precision);
   }
   // Version 7: Loop's boundary sectors, up to the largest valence asked for.
-  put_sectors(out, scheme, set, *regular_layout);
+  TriangleSectorSet sectors = solve_triangle_sectors(scheme, *std::max_element(set.valences.begin(), set.valences.end()), *regular_layout);
+  put_sectors(out, scheme, sectors.sectors);
+  if (sectors_out) *sectors_out = std::move(sectors);
   put<std::uint64_t>(out, fmt::fnv1a64(reinterpret_cast<const unsigned char*>(out.data()), out.size()));
   return out;
 }

@@ -7,6 +7,8 @@
 
 namespace sg {
 
+struct TriangleSectorSet;
+
 // Everything `stencilgen --scheme loop|sqrt3 --valence ... --n ...` produced.
 struct TriangleTableSet {
   std::vector<long> rates;
@@ -16,7 +18,9 @@ struct TriangleTableSet {
 
 // One .sgt file: the scheme's rules, and per valence (6 included: regular
 // triangles use it) the layout and the stencils of all rates, each distinct
-// parameter point stored once (docs/table-format.md).
-std::string triangle_tables_to_binary(const TriangleScheme& scheme, const TriangleTableSet& set, BinaryPrecision precision);
+// parameter point stored once (docs/table-format.md). `sectors_out`: where
+// to keep the sectors solved for it (for sectors.json).
+std::string triangle_tables_to_binary(const TriangleScheme& scheme, const TriangleTableSet& set, BinaryPrecision precision,
+                                      TriangleSectorSet* sectors_out = nullptr);
 
 }  // namespace sg
