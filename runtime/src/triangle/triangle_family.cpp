@@ -48,19 +48,17 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
   phantoms.first = topo.vertices();
   const bool cones = std::find(rules.begin(), rules.end(), SectorRule::Cone) != rules.end();
   for (std::size_t f = 0; f < topo.faces(); ++f) {
-    for (int c = 0; c < 3; ++c) {
-      const int v = topo.vertex(f, c);
-      if (slit_end_inside(rules[static_cast<std::size_t>(v)], topo.on_boundary(v))) return false;
-    }
     const bool at_boundary = topo.touches_boundary(f);
     // A vertex on the boundary in other than three faces, a corner, a dart or
     // a cone point: the sector's patch (sector_patch.hpp).
     int sector_corner = -1, sectors = 0;
-    if ((at_boundary || cones) && !topo.touches_marked(f, no_surface))
-      for (int c = 0; c < 3; ++c) {
-        const int v = topo.vertex(f, c);
-        if (loop_sector_vertex(topo, v, rules[static_cast<std::size_t>(v)])) ++sectors, sector_corner = c;
-      }
+    const bool sector_possible = (at_boundary || cones) && !topo.touches_marked(f, no_surface);
+    for (int c = 0; c < 3; ++c) {
+      const int v = topo.vertex(f, c);
+      const SectorRule rule = rules[static_cast<std::size_t>(v)];
+      if (slit_end_inside(rule, topo.on_boundary(v))) return false;
+      if (sector_possible && loop_sector_vertex(topo, v, rule)) ++sectors, sector_corner = c;
+    }
     std::optional<TrianglePatch> patch;
     if (sectors > 1) {
       return false;
@@ -95,6 +93,16 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
 // sector's patches in the tables (sector_patch.hpp). With `none`
 // (`no_surface`) the faces at the mesh's own boundary have no surface, so any
 // vertex will do there.
+// Tables written before stencilgen wrote a kind of sector hold none of it,
+// not even `first`, its smallest: regenerating, not a larger valence, covers
+// the mesh then.
+void require_sector_rule(const TriangleTables& tables, const SectorKey& first, const std::string& what, const char* kind,
+                         const std::string& scheme) {
+  if (!tables.has_sectors() || !tables.sector_code(first))
+    throw MeshError(what + ", and the " + scheme + " tables hold no patches for " + kind +
+                    " (written before stencilgen wrote them); regenerate them with this stencilgen");
+}
+
 void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const PolygonLinks& uncut,
                          const std::vector<char>& no_surface, const std::string& scheme, const TriangleTables& tables,
                          ValenceCheck& valences) {
@@ -105,9 +113,7 @@ void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const P
       if (tables.sector_code({SectorRule::Cone, k, 0})) continue;
       const std::string what = who + " is a cone point (infinitely sharp, on no infinitely sharp edge) of valence " +
                                std::to_string(k);
-      if (!tables.has_sectors() || !tables.sector_code({SectorRule::Cone, 3, 0}))
-        throw MeshError(what + ", and the " + scheme + " tables hold no patches for cone points (written before "
-                        "stencilgen wrote them); regenerate them with this stencilgen");
+      require_sector_rule(tables, {SectorRule::Cone, 3, 0}, what, "cone points", scheme);
       valences.add_boundary(k, what);
       continue;
     }
@@ -130,12 +136,8 @@ void check_loop_vertices(const SharpCut& cut, const PolygonLinks& links, const P
                     "boundary vertex in one face)"
               : " is on " + std::string(own ? "the boundary in " : "an infinitely sharp crease with ") + std::to_string(k) +
                     (k == 1 ? " face" : " faces") + (own ? "" : " on one side");
-      if (!tables.has_sectors())
-        throw MeshError(who + what + ", and the " + scheme + " tables hold no patches for boundary vertices (tables "
-                        "from before version 7); regenerate them with this stencilgen");
-      if (cut.rule[v] == SectorRule::Dart && !tables.sector_code({SectorRule::Dart, 3, 0}))
-        throw MeshError(who + what + ", and the " + scheme + " tables hold no patches for darts (written before "
-                        "stencilgen wrote them); regenerate them with this stencilgen");
+      require_sector_rule(tables, {SectorRule::Crease, 1, 0}, who + what, "boundary vertices", scheme);
+      if (cut.rule[v] == SectorRule::Dart) require_sector_rule(tables, {SectorRule::Dart, 3, 0}, who + what, "darts", scheme);
       // Tables hold the sectors of up to as many faces as their largest valence: the call that covers it.
       valences.add_boundary(k, who + what);
       break;
