@@ -1,5 +1,6 @@
 #include "quad/ev_tangents.hpp"
 
+#include "algebra/slit_fold.hpp"
 #include "curve/residue_solver.hpp"
 #include "quad/ev_patch_solver.hpp"
 
@@ -32,30 +33,17 @@ std::optional<EvTangents> sector_tangents(const QuadScheme& scheme, const Bounda
   const PatchGrid values = solve_patch_recursion(subdivision, limit, kSamples, solve_by_residues(scheme.curve, kSamples));
   const SectorLayout layout(sector);
   const std::size_t m = subdivision.points;
-  // A dart's e_k is e_0 again (the two sides of its slit): its surface is that
-  // of the patch with e_k folded into e_0, whose A0 has no slit modes (such as
-  // e_k - e_0, eigenvalue 1/2, which is 0 on any mesh). So the tangent plane
-  // is that patch's: its two leading eigenvalues with a regular map, with no
-  // boundary curve to contain; the stencils are then spread back (0 at e_k).
+  // A dart's e_k is e_0 again (the two sides of its slit): its tangent plane
+  // is that of the patch with e_k folded into e_0 (algebra/slit_fold.hpp),
+  // with no boundary curve to contain.
   const bool dart = sector.kind == SectorKind::Dart;
-  std::vector<std::size_t> to(m);
-  for (std::size_t h = 0, next = 0; h < m; ++h) to[h] = dart && h == layout.edge(sector.faces) ? m : next++;
-  if (dart) to[layout.edge(sector.faces)] = to[layout.edge(0)];
-  const std::size_t n = dart ? m - 1 : m;
-  std::vector<std::vector<Real>> a0(n, std::vector<Real>(n, Real(0)));
-  for (std::size_t r = 0; r < m; ++r) {
-    if (dart && r == layout.edge(sector.faces)) continue;  // the copy's row repeats e_0's
-    for (const auto& [c, w] : subdivision.extraordinary_child[r]) a0[to[r]][to[c]] += to_real(w);
-  }
-  auto folded = [&](const std::vector<Rational>& w) {
-    std::vector<Real> out(n, Real(0));
-    for (std::size_t h = 0; h < m; ++h) out[to[h]] += to_real(w[h]);
-    return out;
-  };
+  std::vector<std::size_t> twin(m);
+  for (std::size_t h = 0; h < m; ++h) twin[h] = dart && h == layout.edge(sector.faces) ? layout.edge(0) : h;
+  const SlitFold fold(twin);
   std::vector<std::vector<double>> grid;
   for (const auto& w : values.stencils) {
     grid.emplace_back();
-    for (const Real& x : folded(w)) grid.back().push_back(to_double(x));
+    for (const Real& x : fold.weights(w)) grid.back().push_back(to_double(x));
   }
   // A boundary's curve tangent at the vertex: e_k - e_0 (its left eigenvector for 1/2).
   std::vector<Real> boundary;
@@ -64,16 +52,10 @@ std::optional<EvTangents> sector_tangents(const QuadScheme& scheme, const Bounda
     boundary[layout.edge(sector.faces)] = 1;
     boundary[layout.edge(0)] = -1;
   }
-  auto t = boundary_tangent_stencils(a0, folded(values.at(kSamples, 0)), folded(values.at(kSamples, kSamples)), boundary, grid,
-                                     kSamples, why);
-  if (t && dart) {
-    for (std::vector<Real>* s : {&t->u, &t->v}) {
-      std::vector<Real> spread(m, Real(0));
-      for (std::size_t h = 0; h < m; ++h)
-        if (h != layout.edge(sector.faces)) spread[h] = (*s)[to[h]];
-      *s = std::move(spread);
-    }
-  }
+  auto t = boundary_tangent_stencils(fold.matrix(subdivision.extraordinary_child), fold.weights(values.at(kSamples, 0)),
+                                     fold.weights(values.at(kSamples, kSamples)), boundary, grid, kSamples, why);
+  if (t)
+    for (std::vector<Real>* s : {&t->u, &t->v}) *s = fold.spread(*s);
   return t;
 }
 

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "algebra/limit_stencil.hpp"
+#include "algebra/slit_fold.hpp"
 #include "algebra/integer_division.hpp"
 #include "base/error.hpp"
 #include "base/limits.hpp"
@@ -335,38 +336,19 @@ std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatc
   if (g < 2) throw Error("internal: a sector's tangents need a grid of at least 2");
   const std::size_t m = patch.layout.size();
   const int k = patch.sector.faces;
-  // A dart's slit folded shut: each point on ray k onto its twin on ray 0 (the
-  // same mesh point), where the layout holds both. Its A0 then has no slit modes (ray k minus ray 0, such as
-  // e_k - e_0 for 1/2, zero on any mesh), and its plane needs no boundary curve.
+  // A dart's slit folded shut (algebra/slit_fold.hpp): each point on ray k
+  // onto its twin on ray 0 where the layout holds both (a point of ray k whose
+  // twin the layout lacks stands for itself).
   const bool dart = kind == SectorKind::Dart;
   std::map<WedgePoint, std::size_t> index;
   for (std::size_t h = 0; h < m; ++h) index[patch.layout[h]] = h;
-  // A point of ray k whose twin the layout lacks stands for itself.
-  auto twin_of = [&](std::size_t h) -> std::optional<std::size_t> {
+  std::vector<std::size_t> twin(m);
+  for (std::size_t h = 0; h < m; ++h) {
     const WedgePoint& q = patch.layout[h];
-    if (!dart || q.sector != k || q.b != 0) return std::nullopt;
-    const auto twin = index.find(WedgePoint{0, q.a, 0});
-    if (twin == index.end()) return std::nullopt;
-    return twin->second;
-  };
-  std::vector<std::size_t> to(m);
-  std::size_t n = 0;
-  for (std::size_t h = 0; h < m; ++h)
-    if (!twin_of(h)) to[h] = n++;
-  for (std::size_t h = 0; h < m; ++h)
-    if (const auto twin = twin_of(h)) to[h] = to[*twin];
-  std::vector<std::vector<Real>> a0(n, std::vector<Real>(n, Real(0)));
-  std::vector<char> row_done(n, 0);
-  for (std::size_t r = 0; r < m; ++r) {
-    if (row_done[to[r]]) continue;  // a twin's row repeats its ray-0 point's on the folded mesh
-    row_done[to[r]] = 1;
-    for (const auto& [c, w] : patch.child_at_vertex.at(r)) a0[to[r]][to[c]] += as_real(w);
+    const auto it = dart && q.sector == k && q.b == 0 ? index.find(WedgePoint{0, q.a, 0}) : index.end();
+    twin[h] = it == index.end() ? h : it->second;
   }
-  auto folded = [&](const std::vector<T>& w) {
-    std::vector<Real> out(n, Real(0));
-    for (std::size_t h = 0; h < m; ++h) out[to[h]] += as_real(w[h]);
-    return out;
-  };
+  const SlitFold fold(twin);
   // The samples: every node, numbered j-major over the triangle; the cells: the
   // grid's up and down triangles, counter-clockwise in (u, v).
   std::vector<std::vector<double>> samples;
@@ -375,7 +357,7 @@ std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatc
     for (long i = 0; i + j <= g; ++i) {
       number[{i, j}] = samples.size();
       samples.emplace_back();
-      for (const Real& x : folded(patch.at(i, j))) samples.back().push_back(to_double(x));
+      for (const Real& x : fold.weights(patch.at(i, j))) samples.back().push_back(to_double(x));
     }
   std::vector<std::vector<std::size_t>> cells;
   for (long j = 0; j < g; ++j)
@@ -390,14 +372,10 @@ std::optional<TangentStencils> triangle_sector_tangents(const TriangleSectorPatc
     boundary[1] = -1;
     boundary[1 + static_cast<std::size_t>(k)] = 1;
   }
-  auto t = boundary_tangent_stencils(a0, folded(patch.at(g, 0)), folded(patch.at(0, g)), boundary, samples, cells, why);
-  if (t && dart)  // back onto the layout: weight on ray 0, none on its twins
-    for (std::vector<Real>* s : {&t->u, &t->v}) {
-      std::vector<Real> spread(m, Real(0));
-      for (std::size_t h = 0; h < m; ++h)
-        if (!twin_of(h)) spread[h] = (*s)[to[h]];
-      *s = std::move(spread);
-    }
+  auto t = boundary_tangent_stencils(fold.matrix(patch.child_at_vertex), fold.weights(patch.at(g, 0)), fold.weights(patch.at(0, g)),
+                                     boundary, samples, cells, why);
+  if (t)  // back onto the layout: weight on ray 0, none on its copies
+    for (std::vector<Real>* s : {&t->u, &t->v}) *s = fold.spread(*s);
   return t;
 }
 
