@@ -21,6 +21,7 @@
 
 #include "bfr_reference.hpp"
 #include "cli.hpp"
+#include "closest_point_checks.hpp"
 #include "loop_bfr_difference.hpp"
 #include "bundled_meshes.hpp"
 #include "loop_meshes.hpp"
@@ -408,25 +409,12 @@ TEST_CASE("Loop: closest points on meshes with darts and cone points lie on the 
     ++meshes;
     const Surface surface = surface_with(tables, c.mesh, c.features);
     const double size = extent(c.mesh);
-    std::vector<Point> samples;
-    Point lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-    for (std::size_t f = 0; f < c.mesh.face_count(); ++f)
-      for (long j = 0; j <= 10; ++j)
-        for (long i = 0; i + j <= 10; ++i) {
-          samples.push_back(surface.evaluate(f, grid(i, j, 10)));
-          for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], samples.back()[k]), hi[k] = std::max(hi[k], samples.back()[k]);
-        }
+    const std::vector<Point> samples = surface_nodes(surface, c.mesh, 10);
     const ClosestPointQuery query(surface);
     for (int k = 0; k < 60; ++k) {
-      Point q;
-      for (int a = 0; a < 3; ++a) q[a] = std::uniform_real_distribution<double>(lo[a] - 0.3 * size, hi[a] + 0.3 * size)(rng);
-      const ClosestPoint found = query.find(q);
-      REQUIRE(found.found);
-      double nearest = 1e300;
-      for (const Point& s : samples) nearest = std::min(nearest, distance(q, s));
+      const Point q = random_query(samples, 0.3 * size, rng);
       INFO(c.name << ", query " << k);
-      CHECK(found.distance <= nearest + 1e-9 * size);
-      CHECK(distance(surface.evaluate(found.face, found.u, found.v, 1e-12).point, found.point) < 1e-9 * size);
+      CHECK(closest_point_defect(surface, q, query.find(q), samples, size, 1e-9 * size) == "");
     }
   }
   CHECK(meshes >= 6);

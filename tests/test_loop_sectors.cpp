@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "cli.hpp"
+#include "closest_point_checks.hpp"
 #include "loop_bfr_difference.hpp"
 #include "loop_meshes.hpp"
 #include "runtime_api.hpp"
@@ -191,26 +192,12 @@ TEST_CASE("Loop sectors: closest points lie on the surface and no farther than d
                           mesh.positions);
     const double size = extent(mesh);
     // Dense exact samples: every node at rate 12 of every face (the rim and the sector vertices included).
-    std::vector<Point> samples;
-    Point lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-    for (std::size_t f = 0; f < mesh.face_count(); ++f)
-      for (long j = 0; j <= 12; ++j)
-        for (long i = 0; i + j <= 12; ++i) {
-          samples.push_back(surface.evaluate(f, grid(i, j, 12)));
-          for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], samples.back()[k]), hi[k] = std::max(hi[k], samples.back()[k]);
-        }
+    const std::vector<Point> samples = surface_nodes(surface, mesh, 12);
     const ClosestPointQuery query(surface);
     for (int k = 0; k < 150; ++k) {
-      Point q;
-      for (int c = 0; c < 3; ++c) q[c] = std::uniform_real_distribution<double>(lo[c] - 0.3 * size, hi[c] + 0.3 * size)(rng);
-      const ClosestPoint c = query.find(q);
-      REQUIRE(c.found);
-      double nearest = 1e300;
-      for (const Point& s : samples) nearest = std::min(nearest, distance(q, s));
+      const Point q = random_query(samples, 0.3 * size, rng);
       INFO(name << ", query " << k);
-      CHECK(c.distance <= nearest + 1e-9 * size);
-      CHECK(distance(surface.evaluate(c.face, c.u, c.v, 1e-12).point, c.point) < 1e-9 * size);
-      CHECK(std::abs(distance(q, c.point) - c.distance) < 1e-9 * size);
+      CHECK(closest_point_defect(surface, q, query.find(q), samples, size, 1e-9 * size) == "");
     }
   }
 }

@@ -26,6 +26,7 @@
 
 #include "bfr_reference.hpp"
 #include "cli.hpp"
+#include "closest_point_checks.hpp"
 #include "loop_meshes.hpp"
 #include "open_meshes.hpp"
 #include "runtime_api.hpp"
@@ -293,14 +294,7 @@ std::string tessellation_and_distances(const Surface& surface, const Case& c, do
     for (float x : soup.positions[p])
       if (!std::isfinite(x)) return "tessellation: point " + std::to_string(p) + " is not finite";
   }
-  std::vector<Point> nodes;
-  const bool triangle = surface.topology().tables().family() == SchemeFamily::Triangle;
-  for (std::size_t f = 0; f < c.mesh.face_count(); ++f) {
-    if (surface.topology().is_hole(f) || c.mesh.face_sizes[f] != (triangle ? 3 : 4)) continue;
-    const long n = 4;
-    for (long j = 0; j <= n; ++j)
-      for (long i = 0; i + (triangle ? j : 0) <= n; ++i) nodes.push_back(surface.evaluate(f, grid(i, j, n)));
-  }
+  std::vector<Point> nodes = surface_nodes(surface, c.mesh, 4);
   // A mesh of N-gons only (Catmull-Clark's polygon step): the tessellation's
   // points stand in for the nodes, rounded to float.
   const double slack = nodes.empty() ? 1e-6 * size : 1e-9 * size;
@@ -315,14 +309,7 @@ std::string tessellation_and_distances(const Surface& surface, const Case& c, do
   for (int k = 0; k < 6; ++k) {
     const Point& near = nodes[rng() % nodes.size()];
     const Point q{near[0] + u(rng) * size, near[1] + u(rng) * size, near[2] + u(rng) * size};
-    const ClosestPoint r = query.find(q);
-    if (!r.found) return "closest point: none found";
-    const Point at = surface.evaluate(r.face, r.u, r.v, 1e-12).point;
-    if (distance(at, r.point) > 1e-9 * size) return "closest point: not the surface's point at its parameters";
-    double nearest = 1e300;
-    for (const Point& p : nodes) nearest = std::min(nearest, distance(p, q));
-    if (r.distance > nearest + slack)
-      return "closest point: " + std::to_string(r.distance / size) + " of the size away, a node is at " + std::to_string(nearest / size);
+    if (const std::string defect = closest_point_defect(surface, q, query.find(q), nodes, size, slack); !defect.empty()) return defect;
   }
   return "";
 }
