@@ -22,6 +22,13 @@
 
 namespace {
 
+// f.operator()<T>() with T the arithmetic the sector's rules allow: exact
+// rationals, or 80 digits (a dart where Loop's smooth weight is irrational).
+template <class F>
+auto in_sector_arithmetic(const sg::TriangleScheme& scheme, const sg::BoundarySector& sector, F&& f) {
+  return sg::exact_triangle_sector(scheme, sector) ? f.template operator()<sg::Rational>() : f.template operator()<sg::Real>();
+}
+
 // The wedge's real points within `rings` of B, as a triangle mesh. `closed`:
 // ray k is ray 0 again (a dart's ring; its slit, ray 0, is tagged sharp by
 // the caller), the ray's points known by both names.
@@ -232,8 +239,7 @@ TEST_CASE("Loop dart sectors of valence 3..8 equal Bfr at rates 1..8, but at the
         const sg::BoundarySector dart{sg::SectorKind::Dart, k, p};
         // Loop's smooth rule is rational at valences 3, 4 and 6 only.
         CHECK(sg::exact_triangle_sector(loop, dart) == (k == 3 || k == 4 || k == 6));
-        const double worst = sg::exact_triangle_sector(loop, dart) ? worst_difference<sg::Rational>(loop, dart, n, false)
-                                                                   : worst_difference<sg::Real>(loop, dart, n, false);
+        const double worst = in_sector_arithmetic(loop, dart, [&]<class T>() { return worst_difference<T>(loop, dart, n, false); });
         CHECK(worst < 1e-13);
       }
   CHECK_THROWS_WITH(sg::solve_triangle_sector(loop, {sg::SectorKind::Dart, 5, 0}, 2, sg::solve_regular(loop, 2)),
@@ -356,8 +362,7 @@ TEST_CASE("Loop darts' limit stencils and tangent planes are kept by OpenSubdiv'
   for (int k = 3; k <= 8; ++k)
     for (int p = 0; p < k; ++p) {
       INFO("k = " << k << ", p = " << p);
-      if (sg::exact_triangle_sector(loop, {sg::SectorKind::Dart, k, p})) check_dart_limit_and_plane<sg::Rational>(loop, k, p);
-      else check_dart_limit_and_plane<sg::Real>(loop, k, p);
+      in_sector_arithmetic(loop, {sg::SectorKind::Dart, k, p}, [&]<class T>() { check_dart_limit_and_plane<T>(loop, k, p); });
     }
 }
 
@@ -379,13 +384,10 @@ TEST_CASE("the faces round a Loop dart agree on its tangent plane", "[triangle][
       std::string why;
       std::optional<sg::TangentStencils> t;
       std::vector<sg::WedgePoint> layout;
-      if (sg::exact_triangle_sector(loop, dart)) {
-        const auto patch = sg::solve_triangle_sector<sg::Rational>(loop, dart, 8, sg::solve_regular(loop, 8));
+      in_sector_arithmetic(loop, dart, [&]<class T>() {
+        const auto patch = sg::solve_triangle_sector<T>(loop, dart, 8, sg::solve_regular(loop, 8));
         t = sg::triangle_sector_tangents(patch, why), layout = patch.layout;
-      } else {
-        const auto patch = sg::solve_triangle_sector<sg::Real>(loop, dart, 8, sg::solve_regular(loop, 8));
-        t = sg::triangle_sector_tangents(patch, why), layout = patch.layout;
-      }
+      });
       INFO(why);
       REQUIRE(t);
       auto apply = [&](const std::vector<sg::Real>& w) {
