@@ -22,14 +22,15 @@ Lattice lattice_of(const ChartPoint& p) {
 }
 
 // The corners' fans unfolded onto the lattice: each vertex of a face at a
-// corner of `face`, at its lattice point.
+// corner of `face`, at its lattice point. A vertex may stand at two points
+// (next to an inside vertex of valence 3 the fans of two corners reach the
+// same vertex from two sides): the patch's rules see only adjacency, so it is
+// then a control point twice. Two vertices at one point are no plane fan.
 class Unfolding {
  public:
   bool place(int v, const Lattice& at) {
-    for (const auto& [w, p] : points_) {
-      if (w == v) return p == at;
-      if (p == at) return false;  // two vertices on one point: not a plane fan
-    }
+    for (const auto& [w, p] : points_)
+      if (p == at) return w == v;
     points_.emplace_back(v, at);
     return true;
   }

@@ -67,10 +67,6 @@ bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, 
     } else if (at_boundary || (topo.has_boundary() && regular_loop_vertex(topo, topo.vertex(f, 0)) &&
                         regular_loop_vertex(topo, topo.vertex(f, 1)) && regular_loop_vertex(topo, topo.vertex(f, 2)))) {
       patch = regular_boundary_patch(topo, f, tables, phantoms);
-      // Inside, next to an extraordinary vertex of low valence, its vertices'
-      // fans do not unfold onto one lattice, though the face is regular: the
-      // tables' chart walk finds its points.
-      if (!patch && !at_boundary) patch = find_triangle_patch(topo, f, tables);
       if (!patch && topo.touches_marked(f, no_surface)) {
         patch.emplace();
         patch->points.assign(tables.layout(6).size(), topo.vertex(f, 0));  // a hole: never evaluated
