@@ -630,6 +630,32 @@ TEST_CASE("non-manifold edges (fins, a book, a flipped face) equal Bfr", "[runti
         CHECK(t.compared == 1);
       }
   }
+  // A fin of one quad on two edges of a grid: the grid's middle vertex is on
+  // a non-manifold crease, and the fin's piece there is one face. Edge-only:
+  // every piece follows the crease, as in OpenSubdiv. Edge-and-corner would
+  // make that piece's copy a corner, and a further sharp edge at the vertex
+  // would change OpenSubdiv's one rule there for every piece: refused, named.
+  {
+    const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 5", "sgs").string());
+    Mesh fin = test_meshes::open_grid(4, 4);
+    fin.positions.push_back({2.0, 2.2, 0.8});
+    fin.face_sizes.push_back(4);
+    fin.face_vertices.insert(fin.face_vertices.end(), {11, 12, 13, 25});
+    Case c;
+    c.mesh = fin;
+    Tally t;
+    CHECK(compare(tables, false, c, t) == "");
+    CHECK(t.compared == 1);
+    for (int variant = 0; variant < 2; ++variant) {
+      MeshFeatures features;
+      if (variant == 0) features.boundary = BoundaryInterpolation::EdgeAndCorner;
+      else features.edges.push_back({12, 17, 2.0f});
+      INFO("variant " << variant);
+      CHECK_THROWS_WITH(SurfaceTopology::create(tables, fin.vertex_count(), fin.face_sizes, fin.face_vertices, {}, features),
+                        Catch::Contains("vertex 12 is on a non-manifold crease") &&
+                            Catch::Contains(variant == 0 ? "a piece of one face" : "a further sharp edge (12, 17)"));
+    }
+  }
   // The chain's inner vertices follow the crease curve through the chain's
   // points (not corners): the limit there is (1/6, 2/3, 1/6) of the chain.
   const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 5", "sgs").string());

@@ -45,6 +45,55 @@ std::vector<char> non_manifold_creases(const Connectivity& mesh, const PolygonLi
   return out;
 }
 
+// A vertex on a non-manifold crease is one vertex to OpenSubdiv, with one
+// rule: the crease's, along its two non-manifold edges. Here each of its fans
+// becomes a copy with a rule of its own, which is the same only where every
+// fan runs from one of the two edges to the other, no other edge there is
+// tagged sharp (OpenSubdiv counts it for the whole vertex), and, with
+// edge-and-corner (which makes a boundary vertex in one face a corner), no
+// fan is a single face. Anything else is refused, naming the vertex.
+void check_crease_fans(const Connectivity& mesh, const PolygonLinks& links, std::vector<std::size_t>& parent,
+                       const std::vector<char>& crease, const MeshFeatures& features) {
+  struct Ends {
+    int faces = 0, outs = 0, ins = 0, out = -1, in = -1;
+  };
+  std::unordered_map<std::size_t, Ends> fans;  // by the root of a crease vertex's corners
+  for (std::size_t h = 0; h < mesh.face_vertices.size(); ++h) {
+    if (!crease[static_cast<std::size_t>(mesh.face_vertices[h])]) continue;
+    Ends& e = fans[find_root(parent, h)];
+    ++e.faces;
+    if (links.twin[h] == PolygonLinks::kNoTwin) ++e.outs, e.out = mesh.face_vertices[links.next[h]];
+    const std::size_t f = links.face_of[h];
+    const std::size_t before = h == links.start[f] ? links.start[f + 1] - 1 : h - 1;  // the half-edge into the vertex
+    if (links.twin[before] == PolygonLinks::kNoTwin) ++e.ins, e.in = mesh.face_vertices[before];
+  }
+  auto refuse = [](std::size_t v, const std::string& why) {
+    throw MeshError("vertex " + std::to_string(v) + " is on a non-manifold crease (two edges in more than two faces) " + why +
+                    "; OpenSubdiv subdivides it with one rule for all its faces, which the runtime, treating each piece apart, "
+                    "does not reproduce there");
+  };
+  const bool edge_and_corner = features.boundary == BoundaryInterpolation::EdgeAndCorner;
+  for (std::size_t h = 0; h < mesh.face_vertices.size(); ++h) {
+    const auto v = static_cast<std::size_t>(mesh.face_vertices[h]);
+    if (!crease[v]) continue;
+    const Ends& e = fans.at(find_root(parent, h));
+    if (e.outs != 1 || e.ins != 1 || e.out == e.in) refuse(v, "with a piece of surface that does not run from one of the two edges to the other");
+    if (edge_and_corner && e.faces == 1) refuse(v, "with a piece of one face under edge-and-corner boundary interpolation");
+  }
+  for (const MeshFeatures::Edge& t : features.edges) {
+    if (t.sharpness <= 0) continue;
+    for (const int v : {t.a, t.b}) {
+      if (!crease[static_cast<std::size_t>(v)]) continue;
+      const int other = v == t.a ? t.b : t.a;
+      bool on_crease = false;  // the tag is on one of the two non-manifold edges, sharp there anyway
+      for (const auto& [root, e] : fans)
+        if (static_cast<std::size_t>(mesh.face_vertices[root]) == static_cast<std::size_t>(v) && (e.out == other || e.in == other))
+          on_crease = true;
+      if (!on_crease) refuse(static_cast<std::size_t>(v), "with a further sharp edge (" + std::to_string(t.a) + ", " + std::to_string(t.b) + ")");
+    }
+  }
+}
+
 }  // namespace
 
 ManifoldInput make_manifold(const Connectivity& mesh, const MeshFeatures& features) {
@@ -130,6 +179,7 @@ ManifoldInput make_manifold(const Connectivity& mesh, const MeshFeatures& featur
   std::vector<char> sharpened = several;
   if (torn) {
     const std::vector<char> crease = non_manifold_creases(mesh, links);
+    check_crease_fans(mesh, links, parent, crease, features);
     std::set<std::pair<int, int>> done;
     for (std::size_t h = 0; h < nh; ++h) {
       if (!links.non_manifold[h]) continue;
