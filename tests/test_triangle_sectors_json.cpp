@@ -118,6 +118,14 @@ TEST_CASE("stencilgen verify checks sectors.json, and fails on a changed weight"
   CHECK(r.status == 1);
   CHECK_THAT(r.output, Catch::Contains("differs from the sectors re-solved"));
 
+  bad = good;  // regular points taken away with the regular cells: the file's own points are not trusted
+  bad["regular_points"] = json::array();
+  for (auto& sector : bad["sectors"]) sector["regular_children"] = json::array({json::array(), json::array(), json::array()});
+  write(dir / "bad.json", bad);
+  r = run_stencilgen("verify " + (dir / "bad.json").string());
+  CHECK(r.status == 1);
+  CHECK_THAT(r.output, Catch::Contains("regular_points: not the points of valence 6's patch"));
+
   bad = good;  // a column out of range is named, not used
   bad["sectors"][0]["ev_child"][0][0][0] = 999;
   write(dir / "bad.json", bad);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "algebra/real.hpp"
+#include "base/error.hpp"
 
 namespace sg {
 
@@ -32,6 +33,7 @@ class SlitFold {
   // folded: a copy's row repeats its twin's and is left out; columns add up.
   template <class T>
   std::vector<std::vector<Real>> matrix(const std::vector<std::vector<std::pair<std::size_t, T>>>& rows) const {
+    if (rows.size() != twin_.size()) throw Error("internal: a matrix to fold has a row count other than its points'");
     std::vector<std::vector<Real>> out(kept_, std::vector<Real>(kept_, Real(0)));
     for (std::size_t r = 0; r < rows.size(); ++r) {
       if (twin_[r] != r) continue;

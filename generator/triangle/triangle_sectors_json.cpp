@@ -5,12 +5,22 @@
 #include "base/error.hpp"
 #include "common/hash.hpp"
 #include "common/parameters_json.hpp"
+#include "triangle/triangle_table_binary.hpp"
 
 namespace sg {
 
 using ojson = nlohmann::ordered_json;
 
 namespace {
+
+// A weight of the file: a string of at most kMaxLiteral characters (the
+// generator's are far shorter), as an exact rational.
+constexpr std::size_t kMaxLiteral = 512;
+Rational weight(const DocumentReader<nlohmann::ordered_json>& r, const nlohmann::ordered_json& j, const std::string& field) {
+  if (j.is_string() && j.get_ref<const std::string&>().size() > kMaxLiteral)
+    r.fail(field, "is longer than " + std::to_string(kMaxLiteral) + " characters");
+  return r.rational_literal(j, field);
+}
 
 // Upper bounds a file's counts are checked against before use (the
 // generator's own reach is far below: the second ring, k + 7 points).
@@ -126,6 +136,14 @@ std::vector<std::string> verify_triangle_sectors(const TableDocument& table, con
                       r.integer(p[1], field, -kMaxCoordinate, kMaxCoordinate), r.integer(p[2], field, -kMaxCoordinate, kMaxCoordinate)});
   }
   std::vector<std::string> failures;
+  // Valence 6's layout is the scheme's, whatever rates the tables had: made
+  // here again, not taken from the file.
+  TriangleTableSet six;
+  six.rates = {1};
+  six.valences = {6};
+  six.tables = {{solve_triangle_table(scheme, 6, 1, solve_regular(scheme, 3))}};
+  const std::vector<SectorPoint> regular_layout = regular_points(scheme, six);
+  if (layout != regular_layout) failures.push_back("regular_points: not the points of valence 6's patch");
   // The limit stencils' exactness, from the file's own rationals.
   const ojson& sectors = r.array(r.require(table.doc, "sectors", ""), "sectors");
   for (std::size_t s = 0; s < sectors.size(); ++s) {
@@ -138,7 +156,7 @@ std::vector<std::string> verify_triangle_sectors(const TableDocument& table, con
     const std::size_t n = limit_json.size();
     if (n == 0 || n > static_cast<std::size_t>(kMaxPoints)) r.fail(field_path(field, "limit"), "has no weights or too many");
     std::vector<Rational> limit;
-    for (std::size_t i = 0; i < n; ++i) limit.push_back(r.rational_literal(limit_json[i], field_path(field_path(field, "limit"), i)));
+    for (std::size_t i = 0; i < n; ++i) limit.push_back(weight(r, limit_json[i], field_path(field_path(field, "limit"), i)));
     const ojson& rows = r.array(r.require(entry, "ev_child", field), field_path(field, "ev_child"));
     if (rows.size() != n) r.fail(field_path(field, "ev_child"), "does not have a row per point");
     std::vector<Rational> image(n, Rational(0));
@@ -149,7 +167,7 @@ std::vector<std::string> verify_triangle_sectors(const TableDocument& table, con
       for (const ojson& pair : r.array(rows[i], row_field)) {
         if (!pair.is_array() || pair.size() != 2) r.fail(row_field, "holds an entry that is not [column, weight]");
         const auto column = static_cast<std::size_t>(r.integer(pair[0], row_field, 0, static_cast<long>(n) - 1));
-        image[column] += limit[i] * r.rational_literal(pair[1], row_field);
+        image[column] += limit[i] * weight(r, pair[1], row_field);
       }
     }
     const std::string name = field + " (" + (entry.contains("kind") && entry["kind"].is_string() ? entry["kind"].get<std::string>() : "?") + ")";
@@ -157,7 +175,7 @@ std::vector<std::string> verify_triangle_sectors(const TableDocument& table, con
     if (image != limit) failures.push_back(name + ": the limit stencil is not A0's fixed point (W(0) A0 != W(0))");
   }
   // Everything else: the re-solved sectors, written again, are the file.
-  if (triangle_sectors_to_json(scheme, solve_triangle_sectors(scheme, max_faces, layout)) != text)
+  if (triangle_sectors_to_json(scheme, solve_triangle_sectors(scheme, max_faces, regular_layout)) != text)
     failures.push_back("differs from the sectors re-solved from scheme '" + scheme.name + "'");
   return failures;
 }

@@ -64,6 +64,17 @@ TriangleLayouts union_layouts(const TriangleScheme& scheme, const TriangleTableS
   return out;
 }
 
+}  // namespace
+
+std::vector<SectorPoint> regular_points(const TriangleScheme& scheme, const TriangleTableSet& set) {
+  const TriangleLayouts layouts = union_layouts(scheme, set);
+  for (const auto& [v, regions] : layouts)
+    if (v == 6) return regions.front();
+  throw Error("internal: the tables hold no regular patch (valence 6)");
+}
+
+namespace {
+
 void put_children(std::string& out, const std::vector<TriangleChild>& children) {
   put<std::uint32_t>(out, static_cast<std::uint32_t>(children.size()));
   for (const TriangleChild& c : children) {

@@ -20,6 +20,10 @@ struct TriangleTableSet {
 // triangles use it) the layout and the stencils of all rates, each distinct
 // parameter point stored once (docs/table-format.md). `sectors_out`: where
 // to keep the sectors solved for it (for sectors.json).
+// Valence 6's points as the binary lists them (the union of its layouts over
+// the set's rates, in chart order): what Loop's sectors' regular cells run over.
+std::vector<SectorPoint> regular_points(const TriangleScheme& scheme, const TriangleTableSet& set);
+
 std::string triangle_tables_to_binary(const TriangleScheme& scheme, const TriangleTableSet& set, BinaryPrecision precision,
                                       TriangleSectorSet* sectors_out = nullptr);
 
