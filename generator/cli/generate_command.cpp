@@ -88,7 +88,9 @@ int generate_triangle(const GenerateOptions& o, const std::string& valence_spec)
             << (std::filesystem::path(o.out) / scheme.name).string() << " in " << seconds_since(start)
             << " s; exact at valences " << (exact.empty() ? "none " : exact) << "; high precision (" << kRealDigits
             << " digits, not exact) at " << (approx.empty() ? "none " : approx) << "; binary " << scheme.name
-            << ".sgt: " << bytes << " bytes (" << o.precision << " precision)\n";
+            << ".sgt: " << bytes << " bytes (" << o.precision << " precision)"
+            << (scheme.refinement == TriangleRefinement::Loop && scheme.has_crease ? "; Loop's sectors exactly in sectors.json" : "")
+            << "\n";
   return 0;
 }
 

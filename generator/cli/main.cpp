@@ -18,10 +18,10 @@ int run(int argc, char** argv) {
       "Surface schemes (type \"quad\": nonpoly, catmull-clark; type \"triangle\": loop, sqrt3) get tables around\n"
       "extraordinary vertices of the given valences; quad schemes also get, up to the largest valence V, the\n"
       "patches at boundary vertices in 1..V faces, at corners, at darts and at cone points (what a mesh's\n"
-      "boundaries and infinitely sharp creases and corners need); Loop likewise gets, in its binary tables, the\n"
-      "patches at boundary vertices in 1..V faces, at corners, at darts and at cone points. Triangle schemes\n"
-      "are exact where their weights are rational (e.g. valences 3, 4, 6) and solved in high precision (80 digits,\n"
-      "residual reported or, for Loop's darts, checked below 1e-60) elsewhere.\n\n"
+      "boundaries and infinitely sharp creases and corners need); Loop likewise gets, in its binary tables and\n"
+      "exactly in OUT/loop/sectors.json, the patches at boundary vertices in 1..V faces, at corners, at darts and\n"
+      "at cone points. Triangle schemes are exact where their weights are rational (e.g. valences 3, 4, 6) and\n"
+      "solved in high precision (80 digits, residual reported or, for Loop's darts, checked below 1e-60) elsewhere.\n\n"
       "  stencilgen --scheme nonpoly --valence 3-8 --n 24 --out tables\n"
       "  stencilgen --scheme sqrt3 --valence 3-8 --n 24 --out tables\n"
       "  stencilgen analyze --scheme nonpoly --valence 3-16\n"
@@ -29,6 +29,7 @@ int run(int argc, char** argv) {
       "  stencilgen --scheme nubspline3 --n 12-24 --out tables\n"
       "  stencilgen --scheme fourpoint --param w=1/32 --n 3,5,7 --out tables\n"
       "  stencilgen verify tables/fourpoint/n3.json\n"
+      "  stencilgen verify tables/loop/sectors.json\n"
       "  stencilgen plot --scheme fourpoint --n 21 --out fourpoint.svg\n"
       "  stencilgen list"};
   app.require_subcommand(0, 1);
