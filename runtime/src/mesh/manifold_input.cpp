@@ -80,16 +80,21 @@ void check_crease_fans(const Connectivity& mesh, const PolygonLinks& links, std:
     if (e.outs != 1 || e.ins != 1 || e.out == e.in) refuse(v, "with a piece of surface that does not run from one of the two edges to the other");
     if (edge_and_corner && e.faces == 1) refuse(v, "with a piece of one face under edge-and-corner boundary interpolation");
   }
+  // The crease's two edges at each crease vertex: the ends of its pieces.
+  std::unordered_map<int, std::vector<int>> ends;
+  for (const auto& [root, e] : fans) {
+    std::vector<int>& at = ends[mesh.face_vertices[root]];
+    at.push_back(e.out);
+    at.push_back(e.in);
+  }
   for (const MeshFeatures::Edge& t : features.edges) {
     if (t.sharpness <= 0) continue;
     for (const int v : {t.a, t.b}) {
       if (!crease[static_cast<std::size_t>(v)]) continue;
       const int other = v == t.a ? t.b : t.a;
-      bool on_crease = false;  // the tag is on one of the two non-manifold edges, sharp there anyway
-      for (const auto& [root, e] : fans)
-        if (static_cast<std::size_t>(mesh.face_vertices[root]) == static_cast<std::size_t>(v) && (e.out == other || e.in == other))
-          on_crease = true;
-      if (!on_crease) refuse(static_cast<std::size_t>(v), "with a further sharp edge (" + std::to_string(t.a) + ", " + std::to_string(t.b) + ")");
+      const std::vector<int>& at = ends.at(v);  // the tag on one of the two edges is sharp there anyway
+      if (std::find(at.begin(), at.end(), other) == at.end())
+        refuse(static_cast<std::size_t>(v), "with a further sharp edge (" + std::to_string(t.a) + ", " + std::to_string(t.b) + ")");
     }
   }
 }
