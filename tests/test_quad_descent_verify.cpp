@@ -7,19 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
+#include "json_files.hpp"
 
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
-
-namespace {
-
-json read(const fs::path& p) {
-  std::ifstream in(p);
-  return json::parse(in);
-}
-void write(const fs::path& p, const json& j) { std::ofstream(p) << j.dump(); }
-
-}  // namespace
 
 TEST_CASE("stencilgen verify checks descent.json: subdivision matrices exactly, tangent stencils by their eigen-relation",
           "[verify][derivatives]") {
@@ -31,14 +22,14 @@ TEST_CASE("stencilgen verify checks descent.json: subdivision matrices exactly, 
     CliResult r = run_stencilgen("verify " + file.string());
     CHECK(r.status == 0);
     CHECK_THAT(r.output, Catch::Contains("OK"));
-    const json good = read(file);
+    const json good = read_json_file(file);
 
     json bad = good;  // one digit of a tangent weight (the 20th significant digit)
     std::string& w = bad["valences"][0]["tangents"]["u"][1].get_ref<std::string&>();
     const std::size_t digit = w.find('.') + 19;
     REQUIRE(digit < w.size());
     w[digit] = w[digit] == '1' ? '2' : '1';
-    write(dir / "bad.json", bad);
+    write_json_file(dir / "bad.json", bad);
     r = run_stencilgen("verify " + (dir / "bad.json").string());
     CHECK(r.status == 1);
     CHECK_THAT(r.output, Catch::Contains("tangent stencil u") && Catch::Contains("not a left eigenvector"));
@@ -46,21 +37,21 @@ TEST_CASE("stencilgen verify checks descent.json: subdivision matrices exactly, 
     bad = good;  // the eigenvalue
     std::string& lambda = bad["valences"][1]["tangents"]["eigenvalue"].get_ref<std::string&>();
     lambda[lambda.find('.') + 25] = lambda[lambda.find('.') + 25] == '3' ? '4' : '3';
-    write(dir / "bad.json", bad);
+    write_json_file(dir / "bad.json", bad);
     r = run_stencilgen("verify " + (dir / "bad.json").string());
     CHECK(r.status == 1);
     CHECK_THAT(r.output, Catch::Contains("valence 5: the eigenvalue differs"));
 
     bad = good;  // a weight of A0
     bad["valences"][0]["ev_child"][0][0][1] = "1/3";
-    write(dir / "bad.json", bad);
+    write_json_file(dir / "bad.json", bad);
     r = run_stencilgen("verify " + (dir / "bad.json").string());
     CHECK(r.status == 1);
     CHECK_THAT(r.output, Catch::Contains("valence 3: A0 differs"));
 
     bad = good;  // tangents removed
     bad["valences"][0]["tangents"] = nullptr;
-    write(dir / "bad.json", bad);
+    write_json_file(dir / "bad.json", bad);
     r = run_stencilgen("verify " + (dir / "bad.json").string());
     CHECK(r.status == 1);
     CHECK_THAT(r.output, Catch::Contains("no tangent stencils, but the scheme has them"));
@@ -75,7 +66,7 @@ TEST_CASE("stencilgen verify checks descent.json: subdivision matrices exactly, 
       CHECK(good["sectors"][cone]["tangents"].is_null());
       bad = good;  // the cone point's own row of A0 is the identity: the smooth rule's weight there is caught
       bad["sectors"][cone]["ev_child"][0][0][1] = "1/2";
-      write(dir / "bad.json", bad);
+      write_json_file(dir / "bad.json", bad);
       r = run_stencilgen("verify " + (dir / "bad.json").string());
       CHECK(r.status == 1);
       CHECK_THAT(r.output, Catch::Contains("cone point of valence 3: A0 differs"));
@@ -84,13 +75,13 @@ TEST_CASE("stencilgen verify checks descent.json: subdivision matrices exactly, 
     while (good["sectors"][three]["faces"] != 3) ++three;
     bad = good;  // a weight of a sector's A0 (its vertex's row: the boundary curve's rule)
     bad["sectors"][three]["ev_child"][0][0][1] = "1/3";
-    write(dir / "bad.json", bad);
+    write_json_file(dir / "bad.json", bad);
     r = run_stencilgen("verify " + (dir / "bad.json").string());
     CHECK(r.status == 1);
     CHECK_THAT(r.output, Catch::Contains("boundary vertex in 3 faces, face 0: A0 differs"));
     bad = good;  // a weight of its limit stencil
     bad["sectors"][three]["limit"][0] = "1/2";
-    write(dir / "bad.json", bad);
+    write_json_file(dir / "bad.json", bad);
     r = run_stencilgen("verify " + (dir / "bad.json").string());
     CHECK(r.status == 1);
     CHECK_THAT(r.output, Catch::Contains("boundary vertex in 3 faces, face 0: the limit stencil differs") &&
@@ -100,7 +91,7 @@ TEST_CASE("stencilgen verify checks descent.json: subdivision matrices exactly, 
     const std::size_t at = t.find('.') + 19;
     REQUIRE(at < t.size());
     t[at] = t[at] == '1' ? '2' : '1';
-    write(dir / "bad.json", bad);
+    write_json_file(dir / "bad.json", bad);
     r = run_stencilgen("verify " + (dir / "bad.json").string());
     CHECK(r.status == 1);
     CHECK_THAT(r.output, Catch::Contains("do not span a plane that A0 keeps"));

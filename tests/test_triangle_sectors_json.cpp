@@ -10,18 +10,13 @@
 
 #include "algebra/rational.hpp"
 #include "cli.hpp"
+#include "json_files.hpp"
 #include "tables/triangle_tables.hpp"
 
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
 namespace {
-
-json read(const fs::path& p) {
-  std::ifstream in(p);
-  return json::parse(in);
-}
-void write(const fs::path& p, const json& j) { std::ofstream(p) << j.dump(); }
 
 // A weight as written: "p/q" exact, or 40 digits.
 double value(const json& w) {
@@ -37,7 +32,7 @@ TEST_CASE("sectors.json holds Loop's sectors exactly, as the binary tables hold 
   REQUIRE(run_stencilgen("--scheme loop --valence 3-8 --n 1-3 -q --out " + dir.string()).status == 0);
   const fs::path file = dir / "loop" / "sectors.json";
   REQUIRE(fs::exists(file));
-  const json doc = read(file);
+  const json doc = read_json_file(file);
   CHECK(doc["format"] == "stencilgen-triangle-sectors");
   // Valences up to 8: crease sectors of 1, 2, 4..8 faces, corners of 1..8, darts of valence 3..8, cone points of 3..8.
   const json& sectors = doc["sectors"];
@@ -90,20 +85,27 @@ TEST_CASE("stencilgen verify checks sectors.json, and fails on a changed weight"
   CliResult r = run_stencilgen("verify " + file.string());
   CHECK(r.status == 0);
   CHECK_THAT(r.output, Catch::Contains("OK"));
-  const json good = read(file);
+  const json good = read_json_file(file);
   std::size_t corner = 0;
   while (good["sectors"][corner]["kind"] != "corner") ++corner;
 
   json bad = good;  // a weight of an exact A0: no longer its fixed point
   bad["sectors"][0]["ev_child"][1][0][1] = "1/3";
-  write(dir / "bad.json", bad);
+  write_json_file(dir / "bad.json", bad);
   r = run_stencilgen("verify " + (dir / "bad.json").string());
   CHECK(r.status == 1);
   CHECK_THAT(r.output, Catch::Contains("not A0's fixed point") && Catch::Contains("differs from the sectors re-solved"));
 
+  bad = good;  // a weight too long to be the generator's: refused by its length, naming it
+  bad["sectors"][corner]["limit"][0] = "1/" + std::string(5000, '7');
+  write_json_file(dir / "bad.json", bad);
+  r = run_stencilgen("verify " + (dir / "bad.json").string());
+  CHECK(r.status == 1);
+  CHECK_THAT(r.output, Catch::Contains("limit[0]") && Catch::Contains("longer than 4096 characters"));
+
   bad = good;  // a corner's limit weight
   bad["sectors"][corner]["limit"][0] = "7/8";
-  write(dir / "bad.json", bad);
+  write_json_file(dir / "bad.json", bad);
   r = run_stencilgen("verify " + (dir / "bad.json").string());
   CHECK(r.status == 1);
   CHECK_THAT(r.output, Catch::Contains("sums to 7/8"));
@@ -113,7 +115,7 @@ TEST_CASE("stencilgen verify checks sectors.json, and fails on a changed weight"
   const std::size_t digit = t.find('.') + 19;
   REQUIRE(digit < t.size());
   t[digit] = t[digit] == '1' ? '2' : '1';
-  write(dir / "bad.json", bad);
+  write_json_file(dir / "bad.json", bad);
   r = run_stencilgen("verify " + (dir / "bad.json").string());
   CHECK(r.status == 1);
   CHECK_THAT(r.output, Catch::Contains("differs from the sectors re-solved"));
@@ -121,14 +123,14 @@ TEST_CASE("stencilgen verify checks sectors.json, and fails on a changed weight"
   bad = good;  // regular points taken away with the regular cells: the file's own points are not trusted
   bad["regular_points"] = json::array();
   for (auto& sector : bad["sectors"]) sector["regular_children"] = json::array({json::array(), json::array(), json::array()});
-  write(dir / "bad.json", bad);
+  write_json_file(dir / "bad.json", bad);
   r = run_stencilgen("verify " + (dir / "bad.json").string());
   CHECK(r.status == 1);
   CHECK_THAT(r.output, Catch::Contains("regular_points: not the points of valence 6's patch"));
 
   bad = good;  // a column out of range is named, not used
   bad["sectors"][0]["ev_child"][0][0][0] = 999;
-  write(dir / "bad.json", bad);
+  write_json_file(dir / "bad.json", bad);
   r = run_stencilgen("verify " + (dir / "bad.json").string());
   CHECK(r.status == 1);
   CHECK_THAT(r.output, Catch::Contains("sectors[0].ev_child[0]"));

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/exact_rows.hpp"
 #include "common/hash.hpp"
 #include "common/parameters_json.hpp"
 
@@ -11,22 +12,12 @@ using ojson = nlohmann::ordered_json;
 
 namespace {
 
-// Rows as lists of [column, "p/q"] pairs.
-ojson rows_json(const std::vector<SparseRow>& rows) {
-  ojson out = ojson::array();
-  for (const SparseRow& row : rows) {
-    ojson r = ojson::array();
-    for (const auto& [column, weight] : row) r.push_back({column, to_string(weight)});
-    out.push_back(r);
-  }
-  return out;
-}
-
 // A0 ("ev_child") and the three regular children.
 void put_subdivision(ojson& entry, const PatchSubdivision& s) {
-  entry["ev_child"] = rows_json(s.extraordinary_child);
+  const auto text = [](const Rational& w) { return to_string(w); };
+  entry["ev_child"] = exact_rows_json(s.extraordinary_child, text);
   ojson children = ojson::array();
-  for (const auto& child : s.regular_children) children.push_back(rows_json(child));
+  for (const auto& child : s.regular_children) children.push_back(exact_rows_json(child, text));
   entry["regular_children"] = children;
 }
 

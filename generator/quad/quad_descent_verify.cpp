@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "base/error.hpp"
+#include "common/exact_rows.hpp"
 #include "common/hash.hpp"
 #include "common/json_document.hpp"
 #include "quad/quad_descent.hpp"
@@ -15,25 +16,6 @@ using ojson = nlohmann::ordered_json;
 namespace {
 
 Real magnitude(const Real& x) { return x < 0 ? Real(-x) : x; }
-
-// Stored rows ([column, "p/q"] pairs) as exact sparse rows.
-std::vector<SparseRow> rows_from(const DocumentReader<ojson>& r, const ojson& j, const std::string& field, std::size_t columns) {
-  std::vector<SparseRow> out;
-  const ojson& rows = r.array(j, field);
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    const std::string f = field_path(field, k);
-    SparseRow row;
-    for (std::size_t e = 0; e < r.array(rows[k], f).size(); ++e) {
-      const std::string fe = field_path(f, e);
-      const ojson& pair = r.array(rows[k][e], fe);
-      if (pair.size() != 2) r.fail(fe, "expected [column, weight]");
-      const long column = r.integer(pair[0], field_path(fe, 0), 0, static_cast<long>(columns) - 1);
-      row.emplace_back(static_cast<std::size_t>(column), r.rational_literal(pair[1], field_path(fe, 1)));
-    }
-    out.push_back(std::move(row));
-  }
-  return out;
-}
 
 Real decimal(const DocumentReader<ojson>& r, const ojson& j, const std::string& field) {
   const std::string& text = r.string(j, field);
@@ -71,25 +53,19 @@ void verify_sectors(const DocumentReader<ojson>& r, const ojson& sectors, const 
     const std::string where = sector.name();
     if (r.integer(r.require(e, "points", field), field_path(field, "points"), 1, 1 << 20) != static_cast<long>(points))
       failures.push_back(where + ": " + std::to_string(points) + " points expected");
-    const auto a0 = rows_from(r, r.require(e, "ev_child", field), field_path(field, "ev_child"), points);
+    const auto a0 = exact_rows(r, r.require(e, "ev_child", field), field_path(field, "ev_child"), points);
     if (a0 != d.subdivision.extraordinary_child) failures.push_back(where + ": A0 differs from the re-derived one");
     const ojson& children = r.array(r.require(e, "regular_children", field), field_path(field, "regular_children"));
     if (children.size() != 3) r.fail(field_path(field, "regular_children"), "expected three children");
     for (std::size_t c = 0; c < 3; ++c)
-      if (rows_from(r, children[c], field_path(field_path(field, "regular_children"), c), points) != d.subdivision.regular_children[c])
+      if (exact_rows(r, children[c], field_path(field_path(field, "regular_children"), c), points) != d.subdivision.regular_children[c])
         failures.push_back(where + ": regular child " + std::to_string(c) + " differs from the re-derived one");
     const ojson& limit_json = r.array(r.require(e, "limit", field), field_path(field, "limit"));
     if (limit_json.size() != points) r.fail(field_path(field, "limit"), "expected " + std::to_string(points) + " weights");
     std::vector<Rational> limit;
-    for (std::size_t h = 0; h < points; ++h) limit.push_back(r.rational_literal(limit_json[h], field_path(field_path(field, "limit"), h)));
+    for (std::size_t h = 0; h < points; ++h) limit.push_back(exact_weight(r, limit_json[h], field_path(field_path(field, "limit"), h)));
     if (limit != d.limit) failures.push_back(where + ": the limit stencil differs from the re-derived one");
-    std::vector<Rational> image(points, Rational(0));
-    Rational sum = 0;
-    for (std::size_t row = 0; row < points && row < a0.size(); ++row) {
-      sum += limit[row];
-      for (const auto& [column, weight] : a0[row]) image[column] += limit[row] * weight;
-    }
-    if (image != limit || sum != 1) failures.push_back(where + ": the limit stencil is not A0's fixed point summing to 1");
+    for (const std::string& fault : limit_stencil_faults(limit, a0)) failures.push_back(where + ": " + fault);
     const ojson& t = r.require(e, "tangents", field);
     if (t.is_null() != !d.tangents) {
       failures.push_back(where + (t.is_null() ? ": no tangent stencils, but the scheme has them" : ": tangent stencils, but the scheme has none"));
@@ -161,12 +137,12 @@ std::vector<std::string> verify_quad_descent(const TableDocument& table, const Q
     const QuadDescent::Valence& d = fresh.valences.front();
     const std::size_t points = d.subdivision.extraordinary_child.size();
     const std::string where = "valence " + std::to_string(v);
-    const auto a0 = rows_from(r, r.require(valences[k], "ev_child", field), field_path(field, "ev_child"), points);
+    const auto a0 = exact_rows(r, r.require(valences[k], "ev_child", field), field_path(field, "ev_child"), points);
     if (a0 != d.subdivision.extraordinary_child) failures.push_back(where + ": A0 differs from the re-derived one");
     const ojson& children = r.array(r.require(valences[k], "regular_children", field), field_path(field, "regular_children"));
     if (children.size() != 3) r.fail(field_path(field, "regular_children"), "expected three children");
     for (std::size_t c = 0; c < 3; ++c)
-      if (rows_from(r, children[c], field_path(field_path(field, "regular_children"), c), points) !=
+      if (exact_rows(r, children[c], field_path(field_path(field, "regular_children"), c), points) !=
           d.subdivision.regular_children[c])
         failures.push_back(where + ": regular child " + std::to_string(c) + " differs from the re-derived one");
     if (version < 2) continue;

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include "base/error.hpp"
+#include "common/exact_rows.hpp"
 #include "common/hash.hpp"
 #include "common/parameters_json.hpp"
 #include "triangle/triangle_table_binary.hpp"
@@ -13,15 +14,6 @@ using ojson = nlohmann::ordered_json;
 
 namespace {
 
-// A weight of the file: a string of at most kMaxLiteral characters (the
-// generator's are far shorter), as an exact rational.
-constexpr std::size_t kMaxLiteral = 512;
-Rational weight(const DocumentReader<nlohmann::ordered_json>& r, const nlohmann::ordered_json& j, const std::string& field) {
-  if (j.is_string() && j.get_ref<const std::string&>().size() > kMaxLiteral)
-    r.fail(field, "is longer than " + std::to_string(kMaxLiteral) + " characters");
-  return r.rational_literal(j, field);
-}
-
 // Upper bounds a file's counts are checked against before use (the
 // generator's own reach is far below: the second ring, k + 7 points).
 constexpr long kMaxPoints = 4096;
@@ -31,13 +23,7 @@ ojson point_json(int sector, long a, long b) { return ojson::array({sector, a, b
 
 // Rows as lists of [column, weight] pairs.
 ojson rows_json(const SectorRows& rows) {
-  ojson out = ojson::array();
-  for (const auto& row : rows) {
-    ojson r = ojson::array();
-    for (const auto& [column, w] : row) r.push_back({column, w.text});
-    out.push_back(r);
-  }
-  return out;
+  return exact_rows_json(rows, [](const SectorWeight& w) { return w.text; });
 }
 
 ojson tangents_json(const TangentStencils& t) {
@@ -156,23 +142,12 @@ std::vector<std::string> verify_triangle_sectors(const TableDocument& table, con
     const std::size_t n = limit_json.size();
     if (n == 0 || n > static_cast<std::size_t>(kMaxPoints)) r.fail(field_path(field, "limit"), "has no weights or too many");
     std::vector<Rational> limit;
-    for (std::size_t i = 0; i < n; ++i) limit.push_back(weight(r, limit_json[i], field_path(field_path(field, "limit"), i)));
-    const ojson& rows = r.array(r.require(entry, "ev_child", field), field_path(field, "ev_child"));
-    if (rows.size() != n) r.fail(field_path(field, "ev_child"), "does not have a row per point");
-    std::vector<Rational> image(n, Rational(0));
-    Rational sum(0);
-    for (std::size_t i = 0; i < n; ++i) {
-      sum += limit[i];
-      const std::string row_field = field_path(field_path(field, "ev_child"), i);
-      for (const ojson& pair : r.array(rows[i], row_field)) {
-        if (!pair.is_array() || pair.size() != 2) r.fail(row_field, "holds an entry that is not [column, weight]");
-        const auto column = static_cast<std::size_t>(r.integer(pair[0], row_field, 0, static_cast<long>(n) - 1));
-        image[column] += limit[i] * weight(r, pair[1], row_field);
-      }
-    }
+    for (std::size_t i = 0; i < n; ++i) limit.push_back(exact_weight(r, limit_json[i], field_path(field_path(field, "limit"), i)));
+    const std::string rows_field = field_path(field, "ev_child");
+    const std::vector<ExactRow> a0 = exact_rows(r, r.require(entry, "ev_child", field), rows_field, n);
+    if (a0.size() != n) r.fail(rows_field, "does not have a row per point");
     const std::string name = field + " (" + (entry.contains("kind") && entry["kind"].is_string() ? entry["kind"].get<std::string>() : "?") + ")";
-    if (sum != Rational(1)) failures.push_back(name + ": the limit stencil sums to " + to_string(sum) + ", not 1");
-    if (image != limit) failures.push_back(name + ": the limit stencil is not A0's fixed point (W(0) A0 != W(0))");
+    for (const std::string& fault : limit_stencil_faults(limit, a0)) failures.push_back(name + ": " + fault);
   }
   // Everything else: the re-solved sectors, written again, are the file.
   if (triangle_sectors_to_json(scheme, solve_triangle_sectors(scheme, max_faces, regular_layout)) != text)
