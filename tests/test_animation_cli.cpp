@@ -109,3 +109,45 @@ TEST_CASE("stenciltess --frames refuses a frame with other connectivity, and wri
   CHECK(fs::is_empty(dir / "out"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("stenciltess --frames keeps the files that were there when a frame fails, and never writes over a frame",
+          "[runtime][tools][frames][errors]") {
+  const std::string nonpoly = generated_table("nonpoly", "--valence 3-8 --n 24", "sgs").parent_path().string();
+  const fs::path dir = scratch_dir("animation-keep");
+  const fs::path rest = kMeshes / "cube.obj";
+  make_frames(read_obj(rest.string()), dir, 4);
+  const std::string frames = " --frames '" + (dir / "frame_*.obj").string() + "'";
+  fs::create_directories(dir / "out");
+  std::ofstream(dir / "out" / "f0.ply") << "earlier 0";
+  std::ofstream(dir / "out" / "f1.ply") << "earlier 1";
+  fs::create_directories(dir / "out" / "f2.ply");  // frame 2 cannot be written: frames 0 and 1 must stay as they were
+  CliResult r = run_stenciltess("--tables " + nonpoly + " --mesh " + rest.string() + frames + " --rate 3 --out '" +
+                                (dir / "out" / "f%d.ply").string() + "'");
+  CHECK(r.status == 1);
+  CHECK(r.output.find("f2.ply: is a directory") != std::string::npos);
+  CHECK(bytes_of(dir / "out" / "f0.ply") == "earlier 0");
+  CHECK(bytes_of(dir / "out" / "f1.ply") == "earlier 1");
+  CHECK(!fs::exists(dir / "out" / "f3.ply"));
+  std::size_t files = 0;  // nothing staged is left behind
+  for (const auto& entry : fs::directory_iterator(dir / "out")) files += entry.is_regular_file() ? 1 : 0;
+  CHECK(files == 2);
+
+  // An output pattern that names the frames themselves (frame_2.obj would be
+  // written before it is read): refused before anything is written.
+  const std::string frame2 = bytes_of(dir / "frame_2.obj");
+  r = run_stenciltess("--tables " + nonpoly + " --mesh " + rest.string() + frames + " --rate 3 --out '" +
+                      (dir / "frame_%d.obj").string() + "'");
+  CHECK(r.status == 1);
+  CHECK(r.output.find("frame_0.obj is an input and the output") != std::string::npos);
+  CHECK(bytes_of(dir / "frame_2.obj") == frame2);
+
+  fs::remove_all(dir / "out" / "f2.ply");  // now every frame is written, over the earlier files
+  r = run_stenciltess("--tables " + nonpoly + " --mesh " + rest.string() + frames + " --rate 3 --out '" +
+                      (dir / "out" / "f%d.ply").string() + "'");
+  CHECK(r.status == 0);
+  for (int k = 0; k < 4; ++k) CHECK(bytes_of(dir / "out" / ("f" + std::to_string(k) + ".ply")).rfind("ply\n", 0) == 0);
+  files = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "out")) files += entry.is_regular_file() ? 1 : 0;
+  CHECK(files == 4);
+  fs::remove_all(dir);
+}

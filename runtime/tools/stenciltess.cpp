@@ -12,6 +12,7 @@
 #include "stencil_runtime/limits.hpp"
 #include "stencil_runtime/mesh_io.hpp"
 #include "stencil_runtime/tessellation.hpp"
+#include "staged_files.hpp"
 #include "tool_support.hpp"
 
 namespace {
@@ -20,16 +21,6 @@ using namespace stencil_runtime;
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// Removes the files an animation run wrote when a later frame fails: all or nothing.
-struct WrittenFiles {
-  std::vector<std::string> paths;
-  bool keep = false;
-  ~WrittenFiles() {
-    if (keep) return;
-    for (const auto& p : paths) std::remove(p.c_str());
-  }
-};
 
 }  // namespace
 
@@ -143,37 +134,47 @@ int main(int argc, char** argv) {
       std::printf("wrote %s\n", out.c_str());
       return 0;
     }
-    // Animation: check every frame's connectivity before writing anything.
+    // Animation: check every frame's connectivity, and that no output would
+    // replace an input, before writing anything.
     const std::vector<std::string> files = stencil_tools::expand_pattern(frames);
     if (files.size() > 1000000) throw std::runtime_error(stencil_runtime::quoted_excerpt(frames) + " names more than 1000000 frames");
+    std::vector<std::string> inputs = files, names;
+    inputs.push_back(mesh_path);
+    inputs.push_back(rates_file);
+    for (std::size_t k = 0; k < files.size(); ++k) names.push_back(stencil_tools::frame_name(out, k));
+    stencil_tools::check_outputs_are_not_inputs(names, inputs);
     for (std::size_t k = 0; k < files.size(); ++k) {
       const Mesh frame = read_obj(files[k]);
       if (!topology->same_connectivity(frame.vertex_count(), frame.face_sizes, frame.face_vertices))
         throw std::runtime_error(files[k] + ": frame " + std::to_string(k) + " has another connectivity than " + mesh_path);
     }
-    WrittenFiles written;
+    // Every frame is staged beside its output and moved into place once all
+    // are written: a failure leaves the outputs as they were.
+    stencil_tools::StagedFiles written;
     double per_frame = 0;
     for (std::size_t k = 0; k < files.size(); ++k) {
       const Mesh frame = read_obj(files[k]);
       const auto t1 = Clock::now();
-      surface.set_positions(frame.positions);
-      plan.evaluate(surface, soup.positions.data());
-      if (with_normals) {
-        soup.normals.resize(soup.positions.size());
-        plan.evaluate_normals(surface, soup.normals.data());
+      try {
+        surface.set_positions(frame.positions);
+        plan.evaluate(surface, soup.positions.data());
+        if (with_normals) {
+          soup.normals.resize(soup.positions.size());
+          plan.evaluate_normals(surface, soup.normals.data());
+        }
+      } catch (const std::exception& e) {
+        throw std::runtime_error(files[k] + ": frame " + std::to_string(k) + ": " + e.what());
       }
       per_frame += seconds_since(t1);
-      const std::string name = stencil_tools::frame_name(out, k);
-      write_polygons(soup, name);
-      written.paths.push_back(name);
-      std::fprintf(stderr, "frame %zu/%zu: %s -> %s\n", k + 1, files.size(), files[k].c_str(), name.c_str());
+      write_polygons(soup, written.stage(names[k]));
+      std::fprintf(stderr, "frame %zu/%zu: %s -> %s\n", k + 1, files.size(), files[k].c_str(), names[k].c_str());
     }
-    written.keep = true;
+    written.commit();
     std::printf("%zu frames of %zu limit points, %zu quads + %zu triangles each; %.4f s per frame (%.1f M triangles/s), "
                 "setup %.4f s\n",
                 files.size(), soup.positions.size(), soup.quads.size(), soup.triangles.size(), per_frame / files.size(),
                 soup.triangle_count() * files.size() / per_frame / 1e6, setup);
-    std::printf("wrote %s .. %s\n", written.paths.front().c_str(), written.paths.back().c_str());
+    std::printf("wrote %s .. %s\n", names.front().c_str(), names.back().c_str());
     return 0;
   });
 }

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <new>
+#include <set>
 
 namespace stencil_tools {
 
@@ -147,10 +148,15 @@ std::vector<std::string> expand_pattern(const std::string& pattern) {
 }
 
 void check_output_is_not_input(const std::string& output, const std::vector<std::string>& inputs) {
-  namespace fs = std::filesystem;
-  if (output.empty()) return;
+  check_outputs_are_not_inputs({output}, inputs);
+}
+
+void check_outputs_are_not_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
+  std::set<fs::path> read;
   for (const std::string& input : inputs)
-    if (!input.empty() && fs::weakly_canonical(input) == fs::weakly_canonical(output))
+    if (!input.empty()) read.insert(fs::weakly_canonical(input));
+  for (const std::string& output : outputs)
+    if (!output.empty() && read.count(fs::weakly_canonical(output)))
       throw std::runtime_error(output + " is an input and the output; give the output another name");
 }
 

@@ -54,6 +54,7 @@ std::vector<std::string> expand_pattern(const std::string& pattern);
 // Refuses an output path that names one of the inputs (the run would destroy
 // what it reads); empty paths are ignored.
 void check_output_is_not_input(const std::string& output, const std::vector<std::string>& inputs);
+void check_outputs_are_not_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
 
 // --boundary none|edge-only|edge-and-corner: how a mesh with boundaries is
 // interpolated there; given, it overrides the mesh's `interpolateboundary` tag.
