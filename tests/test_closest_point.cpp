@@ -557,6 +557,16 @@ TEST_CASE("stencildist answers as the library does and refuses bad points files 
   refused(write("empty.xyz", "# nothing\n\n"), "no points");
   refused(write("trunc.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\nend_header\nabc"),
           "truncated");
+  // A header that declares fewer points than the file holds, as text and in binary, and a line with a value too many.
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+  refused(write("more.ply", header + "0 0 0\n1 1 1\n2 2 2\n"), "more.ply:10: more lines than the header's 2 points declare");
+  refused(write("wide.ply", header + "0 0 0\n1 1 1 1\n"), "wide.ply:9: more than the 3 values the header declares");
+  {
+    std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+    const float xyz[9] = {0, 0, 0, 1, 1, 1, 2, 2, 2};
+    binary.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+    refused(write("more-binary.ply", binary), "12 bytes after the 2 points the header declares");
+  }
   {
     const CliResult bad = dist(good, "--out " + good);
     CHECK(bad.status == 1);

@@ -34,6 +34,10 @@ void expect_error(const CliResult& r, const std::string& text) {
 }
 
 void write_file(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
 
 // Appends the FNV-1a checksum the binary formats end with.
 std::string with_checksum(std::string bytes) {
@@ -292,8 +296,33 @@ TEST_CASE("meshes outside the runtime's limits get a clear error naming the line
   const std::string loop = generated_table("loop", "--valence 3-8 --n 24", "sgt").parent_path().string();
   expect_error(run_stencileval("--tables " + loop + " --mesh " + (dir / "spike.obj").string() + " --face 0 --uv 0,0"),
                "vertex 0 has valence 70; the runtime supports valences up to 64");
-  // Numbering: the library counts from 0 and says so.
+  // Numbering: the library counts from 0 and says so, and names the file.
   expect_error(eval((dir / "pillow.obj").string()), "numbered from 0");
+  expect_error(eval((dir / "pillow.obj").string()), "pillow.obj: vertex 0 has valence 2");
+  write_file(dir / "repeat.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 3 3 4\n");
+  expect_error(eval((dir / "repeat.obj").string()), "repeat.obj: face 0 uses vertex 2 twice");
+  // Words after a vertex's numbers are refused by line; numbers (a weight, a colour) and comments are not.
+  write_file(dir / "words.obj", "v 0 0 0\nv 1 0 0 oops\nv 0 1 0\nf 1 2 3\n");
+  expect_error(eval((dir / "words.obj").string()), "words.obj:2: a vertex is three coordinates");
+  // A UTF-8 byte-order mark is not part of the first line: the same surface as without it (it used to drop
+  // the first vertex and shift every index by one).
+  const std::string cube = read_text(fs::path(STENCIL_SOURCE_DIR) / "meshes" / "cube.obj");
+  std::string coloured;  // each line with a colour after it, or a comment
+  for (std::size_t at = 0, end; at < cube.size(); at = end + 1) {
+    end = cube.find('\n', at);
+    const std::string line = cube.substr(at, end - at);
+    coloured += line + (line.rfind("v ", 0) == 0 ? " 0.5 0.25 1" : line.rfind("f ", 0) == 0 ? " # a face" : "") + "\n";
+  }
+  write_file(dir / "bom.obj", "\xEF\xBB\xBF" + cube);
+  write_file(dir / "coloured.obj", coloured);
+  const CliResult plain = eval((fs::path(STENCIL_SOURCE_DIR) / "meshes" / "cube.obj").string(), "--face 2 --uv 1/3,1/5");
+  REQUIRE(plain.status == 0);
+  for (const char* name : {"bom.obj", "coloured.obj"}) {
+    const CliResult r = eval((dir / name).string(), "--face 2 --uv 1/3,1/5");
+    INFO(name << ": " << r.output);
+    CHECK(r.status == 0);
+    CHECK(r.output == plain.output);
+  }
   fs::remove_all(dir);
 }
 

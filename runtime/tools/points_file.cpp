@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -24,8 +25,11 @@ namespace limits = stencil_runtime::limits;
 constexpr std::size_t kMaxPointsFileBytes = std::size_t{4} << 30;
 
 double checked_coordinate(double x, const std::string& where) {
-  if (!std::isfinite(x) || std::fabs(x) > limits::kMaxCoordinate)
-    throw std::runtime_error(where + ": coordinate " + std::to_string(x) + " is not a finite number of magnitude at most 1e37");
+  if (!std::isfinite(x) || std::fabs(x) > limits::kMaxCoordinate) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", x);
+    throw std::runtime_error(where + ": coordinate " + text + " is not a finite number of magnitude at most 1e37");
+  }
   return x;
 }
 
@@ -137,7 +141,8 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
   std::istringstream header(header_text);
   std::string line, format;
   std::size_t line_number = 0, count = 0;
-  bool in_vertex = false, seen_vertex = false;
+  bool in_vertex = false, seen_vertex = false, later_elements = false;
+  std::size_t later_lines = 0;  // the later elements' count: in ASCII, one line each
   struct Property {
     std::string name;
     int bytes = 0;  // 4 float, 8 double
@@ -160,7 +165,13 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
       words >> name >> n;
       if (seen_vertex) {
         in_vertex = false;
-        continue;  // later elements (faces) are not read
+        later_elements = true;
+        std::size_t k = 0;
+        const auto [stop, err] = std::from_chars(n.data(), n.data() + n.size(), k);
+        if (err != std::errc() || stop != n.data() + n.size() || k > limits::kMaxMeshElements)
+          throw std::runtime_error(where + ": element " + stencil_runtime::quoted_excerpt(name) + " has no valid count");
+        later_lines += k;
+        continue;  // later elements (faces) are not read, only counted
       }
       if (name != "vertex") throw std::runtime_error(where + ": the first element must be 'vertex', got " + stencil_runtime::quoted_excerpt(name));
       count = parse_index(n, where + ": vertex count");
@@ -223,6 +234,21 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
         for (int k = 0; k < 3; ++k)
           if (slot[k] == static_cast<int>(i)) points[p][static_cast<std::size_t>(k)] = checked_coordinate(x, where);
       }
+      std::string more;
+      if (values >> more) throw std::runtime_error(where + ": more than the " + std::to_string(properties.size()) + " values the header declares");
+    }
+    // What follows is the later elements, a line each: more is a file whose header says less than it holds.
+    std::size_t lines = 0;
+    for (std::size_t at = start; at < data.size();) {
+      std::size_t end = data.find('\n', at);
+      if (end == std::string::npos) end = data.size();
+      if (data.find_first_not_of(" \t\r", at) < end) {
+        ++lines;
+        if (lines > later_lines)
+          throw std::runtime_error(path + ":" + std::to_string(line_number + 1 + lines) + ": more lines than the header's " +
+                                   std::to_string(count) + " points" + (later_elements ? " and later elements" : "") + " declare");
+      }
+      at = end + 1;
     }
     return points;
   }
@@ -231,6 +257,9 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
   if ((data.size() - body) / stride < count)
     throw std::runtime_error(path + ": truncated: " + std::to_string(count) + " points of " + std::to_string(stride) +
                              " bytes need more than the file holds");
+  if (!later_elements && data.size() - body != count * stride)
+    throw std::runtime_error(path + ": " + std::to_string(data.size() - body - count * stride) + " bytes after the " +
+                             std::to_string(count) + " points the header declares (and no further element)");
   for (std::size_t p = 0; p < count; ++p) {
     std::size_t offset = body + p * stride;
     for (std::size_t i = 0; i < properties.size(); ++i) {

@@ -38,7 +38,12 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   }
   std::vector<int> holes;
   for (const auto& h : tags.holes) holes.push_back(h.face);
-  return create(std::move(tables), mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, holes, features);
+  try {
+    return create(std::move(tables), mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, holes, features);
+  } catch (const MeshError& e) {  // named by its file, where it has one
+    if (mesh.source.empty()) throw;
+    throw MeshError(mesh.source + ": " + e.what());
+  }
 }
 
 }  // namespace stencil_runtime

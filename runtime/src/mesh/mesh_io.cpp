@@ -58,6 +58,7 @@ Mesh read_obj(const std::string& path) {
   while (next_line(*in.rdbuf(), line, [&](const std::string& what) { ++number; fail(what); })) {
     ++number;
     std::size_t pos = 0;
+    if (number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) pos = 3;  // a UTF-8 byte-order mark (Windows editors)
     const std::string_view tag = next_token(line, pos);
     if (tag == "v") {
       Point p{};
@@ -71,11 +72,20 @@ Mesh read_obj(const std::string& path) {
         if (!std::isfinite(p[static_cast<std::size_t>(k)]) || std::fabs(p[static_cast<std::size_t>(k)]) > limits::kMaxCoordinate)
           fail("coordinate " + std::string(t) + " is not a finite number of magnitude at most 1e37");
       }
+      // What may follow: a weight w, or a colour (r g b, with alpha), as numbers.
+      int extra = 0;
+      for (std::string_view t = next_token(line, pos); !t.empty() && t[0] != '#'; t = next_token(line, pos), ++extra) {
+        double x = 0;
+        const auto [end, err] = std::from_chars(t.data(), t.data() + t.size(), x);
+        if (err != std::errc() || end != t.data() + t.size() || extra == 4)
+          fail("a vertex is three coordinates (then at most a weight or a colour, as numbers), got " + quoted_excerpt(t) +
+               " after them");
+      }
       if (mesh.positions.size() >= limits::kMaxMeshElements) fail("more than 2^30 vertices");
       mesh.positions.push_back(p);
     } else if (tag == "f") {
       int count = 0;
-      for (std::string_view item = next_token(line, pos); !item.empty(); item = next_token(line, pos)) {
+      for (std::string_view item = next_token(line, pos); !item.empty() && item[0] != '#'; item = next_token(line, pos)) {
         long long index = 0;
         const auto [end, err] = std::from_chars(item.data(), item.data() + item.size(), index);
         if (err != std::errc() || end == item.data() || (end != item.data() + item.size() && *end != '/'))
