@@ -27,7 +27,7 @@ constexpr std::size_t kMaxPointsFileBytes = std::size_t{4} << 30;
 double checked_coordinate(double x, const std::string& where) {
   if (!std::isfinite(x) || std::fabs(x) > limits::kMaxCoordinate) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.17g", x);
+    std::snprintf(text, sizeof text, "%.9g", x);
     throw std::runtime_error(where + ": coordinate " + text + " is not a finite number of magnitude at most 1e37");
   }
   return x;
