@@ -597,3 +597,45 @@ TEST_CASE("stencildist answers as the library does and refuses bad points files 
   refused(write("badnormal.xyz", "0 0 0 0 0 1\n1 2 3 0 nan 1\n"), "badnormal.xyz:2");
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("closest points at a boundary vertex in 3..8 faces, on it and just off it", "[runtime][distance][boundary]") {
+  // Newton used to converge to within 2^-64 of the vertex, where the patch
+  // descent has no derivative in doubles, and the whole query failed.
+  const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string());
+  for (int k = 3; k <= 8; ++k)
+    for (const BoundaryInterpolation option : {BoundaryInterpolation::EdgeOnly, BoundaryInterpolation::EdgeAndCorner}) {
+      // k quads fanned round vertex 0 over a half-disc, their outer corners lifted.
+      Mesh mesh;
+      mesh.positions.push_back({0, 0, 0});
+      for (int i = 0; i <= k; ++i) mesh.positions.push_back({std::cos(M_PI * i / k), std::sin(M_PI * i / k), 0});
+      for (int i = 0; i < k; ++i) {
+        const double a = M_PI * (i + 0.5) / k;
+        mesh.positions.push_back({1.5 * std::cos(a), 1.5 * std::sin(a), 0.2 + 0.05 * i});
+        mesh.face_sizes.push_back(4);
+        for (int v : {0, 1 + i, k + 2 + i, 2 + i}) mesh.face_vertices.push_back(v);
+      }
+      mesh.tags.boundary = option;
+      INFO(k << " faces, " << (option == BoundaryInterpolation::EdgeOnly ? "edge-only" : "edge-and-corner"));
+      const Surface surface = surface_of(tables, mesh);
+      const ClosestPointQuery query(surface);
+      const double diagonal = diagonal_of(mesh);
+      const Point limit = surface.evaluate(0, ExactParameter{});  // corner 0 of face 0: the vertex
+      // Dense exact limit points: no answer may be farther than their nearest by more than the tolerance.
+      std::vector<Point> dense;
+      const long n = 48;
+      for (std::size_t f = 0; f < mesh.face_count(); ++f)
+        for (long j = 0; j <= n; ++j)
+          for (long i = 0; i <= n; ++i) dense.push_back(test_runtime::at_grid(surface, f, i, j, n));
+      for (const double lift : {0.0, 1e-9, 1e-3, 0.1}) {
+        const Point q{limit[0] + 0.3 * lift, limit[1] - lift, limit[2] + lift};
+        ClosestPoint c;
+        REQUIRE_NOTHROW(c = query.find(q));
+        REQUIRE(c.found);
+        double nearest = INFINITY;
+        for (const Point& p : dense) nearest = std::min(nearest, distance(p, q));
+        CHECK(c.distance <= nearest + 1e-9 * diagonal);
+        CHECK(distance(surface.evaluate(c.face, c.u, c.v, 0).point, c.point) <= 1e-12 * diagonal);
+        if (lift == 0) CHECK(c.distance <= 1e-9 * diagonal);
+      }
+    }
+}

@@ -446,7 +446,11 @@ bool QuadFamily::derivatives(const SubPatch& in, double& x, double& y, Derivativ
   std::vector<Point> points = in.points;
   if (descent.polynomial_regular()) {
     if (in.kind != 4 && sx == 0 && sy == 0) return false;  // no parametric derivative at the extraordinary vertex
-    out = descent.derivatives(in.kind, points, sx, sy);
+    try {
+      out = descent.derivatives(in.kind, points, sx, sy);
+    } catch (const EvaluationError&) {  // within 2^-64 of it: none in doubles either (the caller takes differences)
+      return false;
+    }
   } else {
     // phi and phi' are stored on 1/(2N) for the largest rate N: the nearest such point of the sub-patch.
     if (!tables_.has_regular_derivatives()) return false;
