@@ -59,7 +59,8 @@ class ClosestPointQuery {
   void update(const Surface& surface);
 
   ClosestPoint find(const Point& q) const;
-  std::vector<ClosestPoint> find(const std::vector<Point>& queries) const;  // in parallel, in input order
+  // In parallel, in input order; an EvaluationError names the query (its index and point).
+  std::vector<ClosestPoint> find(const std::vector<Point>& queries) const;
 
   double tolerance() const;
   // Memory the query structure holds (bytes) and the time its last build took (seconds).

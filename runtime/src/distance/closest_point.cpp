@@ -7,6 +7,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -313,7 +314,15 @@ std::vector<ClosestPoint> ClosestPointQuery::find(const std::vector<Point>& quer
   tbb::task_arena arena(impl_->options.threads > 0 ? impl_->options.threads : tbb::task_arena::automatic);
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, queries.size(), 16), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t i = r.begin(); i < r.end(); ++i) out[i] = impl_->find(queries[i]);
+      for (std::size_t i = r.begin(); i < r.end(); ++i) {
+        try {
+          out[i] = impl_->find(queries[i]);
+        } catch (const EvaluationError& e) {  // which of the batch, so that a caller can name it
+          char at[96];
+          std::snprintf(at, sizeof at, "query %zu (%.9g, %.9g, %.9g): ", i, queries[i][0], queries[i][1], queries[i][2]);
+          throw EvaluationError(at + std::string(e.what()));
+        }
+      }
     });
   });
   return out;
