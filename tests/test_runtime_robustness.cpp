@@ -465,3 +465,36 @@ TEST_CASE("triangle tables' children and regular polynomial are checked at load"
   CHECK_THROWS_WITH(Tables::load((dir / "flag.sgt").string()), Catch::Contains("invalid regular derivative flag"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("single-precision tables say their values are not exact, with a bound that holds", "[runtime][robustness]") {
+  // The same scheme in double and in single precision: every single value is
+  // within its reported bound of the double one (itself exact to rounding),
+  // and no single value claims to be exact.
+  const auto exact = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 4", "sgs").string());
+  const auto single = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 4 --binary-precision single", "sgs").string());
+  const auto loop = Tables::load(generated_table("loop", "--valence 3-8 --n 4 --binary-precision single", "sgt").string());
+  CHECK(single->single_precision());
+  CHECK(loop->single_precision());
+  CHECK_FALSE(exact->single_precision());
+  const Mesh mesh = read_obj((fs::path(STENCIL_SOURCE_DIR) / "meshes" / "chess-piece.obj").string());
+  const Surface a = test_runtime::surface_of(exact, mesh), b = test_runtime::surface_of(single, mesh);
+  double worst = 0;
+  for (std::size_t face = 0; face < mesh.face_count(); face += 7)
+    for (const ExactParameter& at : {test_runtime::grid(1, 3, 4), ExactParameter{Fraction::make(1, 3), Fraction::make(1, 7)}}) {
+      const Evaluation x = a.evaluate(face, at, 1e-13), y = b.evaluate(face, at, 1e-13);
+      CHECK_FALSE(y.exact);
+      const double d = std::hypot(x.point[0] - y.point[0], x.point[1] - y.point[1], x.point[2] - y.point[2]);
+      CHECK(d <= y.bound + x.bound);
+      worst = std::max(worst, d);
+    }
+  CHECK(worst > 0);  // the rounding is there to be bounded
+  const Mesh tri = read_obj((fs::path(STENCIL_SOURCE_DIR) / "meshes" / "tri-mix.obj").string());
+  CHECK_FALSE(test_runtime::surface_of(loop, tri).evaluate(0, test_runtime::grid(1, 1, 4), 1e-13).exact);
+  // stencileval will not print a bound above the tolerance asked for.
+  const std::string tables = generated_table("nonpoly", "--valence 3-8 --n 4 --binary-precision single", "sgs").string();
+  const std::string chess = (fs::path(STENCIL_SOURCE_DIR) / "meshes" / "chess-piece.obj").string();
+  expect_error(run_stencileval("--tables " + tables + " --mesh " + chess + " --face 7 --uv 1/3,1/7"), "single precision");
+  const CliResult r = run_stencileval("--tables " + tables + " --mesh " + chess + " --face 7 --uv 1/3,1/7 --tolerance 1e-4");
+  CHECK(r.status == 0);
+  CHECK(r.output.find("within") != std::string::npos);
+}

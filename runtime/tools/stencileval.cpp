@@ -41,8 +41,18 @@ Evaluation evaluate(const Surface& surface, const Mesh& mesh, std::size_t face, 
                     double relative) {
   check_face(mesh, face);
   const double tolerance = relative * face_extent(mesh, face);
-  if (u.exact && v.exact) return surface.evaluate(face, ExactParameter{u.fraction, v.fraction}, tolerance);
-  return surface.evaluate(face, u.value, v.value, tolerance);
+  const Evaluation e = u.exact && v.exact ? surface.evaluate(face, ExactParameter{u.fraction, v.fraction}, tolerance)
+                                          : surface.evaluate(face, u.value, v.value, tolerance);
+  if (!e.exact && e.bound > tolerance) {  // a promise the output cannot keep is an error, not a footnote
+    char text[160];
+    std::snprintf(text, sizeof text, "face %zu: the error bound reached, %.3g, is above the tolerance %.3g", face, e.bound, tolerance);
+    throw std::runtime_error(std::string(text) + (surface.topology().tables().single_precision()
+                                                      ? " (these tables are single precision: their weights' rounding "
+                                                        "alone is about 2^-20 of the coordinates); give a larger "
+                                                        "--tolerance, or tables made without --binary-precision single"
+                                                      : " (doubles resolve no more here); give a larger --tolerance"));
+  }
+  return e;
 }
 
 // First derivatives, and second ones where asked for (zero otherwise).
@@ -153,17 +163,20 @@ int main(int argc, char** argv) {
   app.add_option("--uv", uv, "parameters U,V: exact rationals (1/3,1/2) or decimals (0.3,0.7)");
   app.add_option("--tolerance", tolerance,
                  "where the tables do not reach the parameter: largest error as a fraction of the face's control-point "
-                 "extent (default 1e-12)");
+                 "extent, 1e-14 or more (default 1e-12); a bound above it is an error");
   app.add_option("--batch", batch, "file of `F U V` lines; prints one `x y z` line per query (with the columns "
                                    "--derivatives and --normal add)");
   stencil_tools::BoundaryOption boundary;
   boundary.add(app);
   Columns columns;
-  app.add_flag("--derivatives", columns.derivatives, "also d/du and d/dv (quad schemes)");
+  app.add_flag("--derivatives", columns.derivatives, "also d/du and d/dv (every scheme; sqrt(3) at the parameters its tables hold)");
   app.add_flag("--second-derivatives", columns.second, "also d2/du2, d2/dudv, d2/dv2 (Catmull-Clark, Loop)");
   app.add_flag("--normal", columns.normal, "also the unit normal (every scheme; sqrt(3) at the parameters its tables hold)");
   return stencil_tools::run_tool(app, argc, argv, [&] {
     if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive number");
+    if (tolerance < 1e-14)
+      throw std::runtime_error("--tolerance must be at least 1e-14 (a fraction of the face's extent; doubles resolve about "
+                               "1e-16 of it)");
     if (batch.empty() && (face_text.empty() || uv.empty()))
       throw std::runtime_error("give --face and --uv, or --batch (see --help)");
     if (!batch.empty() && (!face_text.empty() || !uv.empty()))

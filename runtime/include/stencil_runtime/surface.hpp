@@ -96,6 +96,7 @@ class Surface {
   std::vector<Point> prepared_;
   std::vector<std::vector<Point>> levels_;  // intermediate refinement levels, kept for reuse
   bool has_positions_ = false;
+  double rounding_ = 0;  // single-precision tables: the bound their weights' rounding adds (2^-20 of the largest coordinate)
 };
 
 }  // namespace stencil_runtime

@@ -48,6 +48,11 @@ class Tables {
   // that exact rows and first derivatives exist at every parameter; false for
   // the others (nonpoly, sqrt(3)) and for tables without patch subdivision data.
   bool polynomial_regular() const;
+  // Whether the weights were stored as float32 (stencilgen --binary-precision
+  // single): every value is then good to their rounding only, about 1e-7 of
+  // the coordinates, and evaluations say so (Evaluation::exact false, a bound
+  // of 2^-20 of the largest coordinate at least: an estimate, not a proof).
+  bool single_precision() const;
   // The factor by which one step of the scheme's own patch subdivision scales
   // the parameters: 2, or 3 for sqrt(3)'s composite step.
   int dilation() const;

@@ -1,5 +1,6 @@
 #include "stencil_runtime/surface.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <type_traits>
@@ -32,6 +33,10 @@ void Surface::set_positions(const Point* control, std::size_t count) {
         throw EvaluationError("vertex " + std::to_string(v) + " (numbered from 0) has the coordinate " + std::to_string(x) +
                               "; coordinates must be finite and at most 1e37 in magnitude");
   topology_->family().refinement().apply(control, levels_, prepared_);
+  rounding_ = 0;
+  if (topology_->tables().single_precision())
+    for (const Point& p : prepared_)
+      for (double x : p) rounding_ = std::max(rounding_, std::ldexp(std::fabs(x), -20));
   has_positions_ = true;
 }
 
@@ -63,9 +68,11 @@ void check_request(const Surface& s, double tolerance) {
     throw EvaluationError("the tolerance must be a finite number >= 0, got " + std::to_string(tolerance));
 }
 
-Evaluation checked(const Approximation& a) {
+// `rounding`: what single-precision tables' weights add to the bound (0 for doubles).
+Evaluation checked(const Approximation& a, double rounding) {
   for (double x : a.point)
     if (!std::isfinite(x)) throw EvaluationError("the limit point is not finite (coordinates too large)");
+  if (rounding > 0) return {a.point, std::max(a.bound, rounding), false};
   return {a.point, a.bound, a.exact};
 }
 
@@ -77,7 +84,7 @@ Evaluation Surface::evaluate(std::size_t face, const ExactParameter& at, double 
   if (!domain.contains(at))
     throw EvaluationError("the parameter " + at.str() + " lies outside face " + std::to_string(face) + " (its domain is " +
                           domain.describe() + ")");
-  return checked(topology_->family().evaluate(face, at, tolerance, prepared_.data()));
+  return checked(topology_->family().evaluate(face, at, tolerance, prepared_.data()), rounding_);
 }
 
 Evaluation Surface::evaluate(std::size_t face, double u, double v, double tolerance) const {
@@ -86,7 +93,7 @@ Evaluation Surface::evaluate(std::size_t face, double u, double v, double tolera
   if (!domain.contains(u, v))
     throw EvaluationError("the parameter (" + std::to_string(u) + ", " + std::to_string(v) + ") lies outside face " +
                           std::to_string(face) + " (its domain is " + domain.describe() + ")");
-  return checked(topology_->family().evaluate(face, u, v, tolerance, prepared_.data()));
+  return checked(topology_->family().evaluate(face, u, v, tolerance, prepared_.data()), rounding_);
 }
 
 }  // namespace stencil_runtime

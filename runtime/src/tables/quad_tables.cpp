@@ -79,6 +79,7 @@ QuadTables QuadTables::load_binary(const std::string& path, std::uint64_t expect
   if (layout_byte > 1) r.fail("invalid stencil layout " + std::to_string(layout_byte));
   const bool generated = layout_byte == static_cast<std::uint8_t>(format::SurfaceLayout::Generated);
   QuadTables t;
+  t.single_precision_ = scalar == 4;
   t.hash_ = r.get<std::uint64_t>();
   if (expected_hash != 0 && t.hash_ != expected_hash) r.fail("made from a different scheme (hash mismatch)");
   auto left = [&] { return bytes.size() - r.position(); };

@@ -51,6 +51,7 @@ class QuadTables {
   // checksum, a count, index, rate or valence outside its limits, or a scheme
   // hash other than a nonzero `expected_hash`).
   static QuadTables load_binary(const std::string& path, std::uint64_t expected_hash = 0);
+  bool single_precision() const { return single_precision_; }
   // A directory of exact JSON tables as stencilgen writes them (v<V>/n<N>.json,
   // regular/n<2N>.json); rationals become the nearest double.
   static QuadTables load_json_directory(const std::string& dir, std::uint64_t expected_hash = 0);
@@ -189,6 +190,7 @@ class QuadTables {
   void stencil(int valence, int slot, long a, long b, bool centre, double* weights) const;
 
   std::uint64_t hash_ = 0;
+  bool single_precision_ = false;  // the binary file's weights are float32
   std::string name_;
   double face_corner_ = 0, edge_end_ = 0, edge_wing_ = 0;
   std::vector<VertexRule> rules_;

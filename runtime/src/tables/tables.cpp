@@ -80,6 +80,8 @@ bool Tables::polynomial_regular() const {
   return triangle_->has_descent() && triangle_->polynomial_degree() > 0;
 }
 
+bool Tables::single_precision() const { return quad_ ? quad_->single_precision() : triangle_->single_precision(); }
+
 int Tables::dilation() const { return quad_ ? 2 : triangle_->dilation(); }
 
 bool Tables::has_rate(int n) const { return quad_ ? quad_->has_rate(n) : triangle_->has_rate(n); }

@@ -174,6 +174,7 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
   const auto scalar = r.get<std::uint32_t>();
   if (scalar != 4 && scalar != 8) r.fail("invalid scalar size " + std::to_string(scalar));
   TriangleTables t;
+  t.single_precision_ = scalar == 4;
   t.hash_ = r.get<std::uint64_t>();
   if (expected_hash != 0 && t.hash_ != expected_hash) r.fail("made from a different scheme (hash mismatch)");
   const auto refinement = r.get<std::uint8_t>();

@@ -54,6 +54,7 @@ class TriangleTables {
   // checksum, a count, index, rate or valence outside its limits, or a scheme
   // hash other than a nonzero `expected_hash`).
   static TriangleTables load(const std::string& path, std::uint64_t expected_hash = 0);
+  bool single_precision() const { return single_precision_; }
 
   std::uint64_t scheme_hash() const { return hash_; }
   TriangleRefinement refinement() const { return refinement_; }
@@ -202,6 +203,7 @@ class TriangleTables {
   int rate_slot(int n) const;
 
   std::uint64_t hash_ = 0;
+  bool single_precision_ = false;  // the binary file's weights are float32
   TriangleRefinement refinement_ = TriangleRefinement::Loop;
   double edge_end_ = 0, edge_opposite_ = 0;
   std::optional<CreaseRule> crease_;
