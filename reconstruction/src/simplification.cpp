@@ -14,7 +14,9 @@ void simplify_to_vertices(TriangleMesh& mesh, std::size_t vertices) {
                    static_cast<long>(mesh.number_of_faces());
   const long edges = 3 * (static_cast<long>(vertices) - chi);
   if (edges <= 0 || static_cast<std::size_t>(edges) >= mesh.number_of_edges()) return;
-  SMS::Count_stop_predicate<TriangleMesh> stop(static_cast<std::size_t>(edges));
+  // The predicate stops once fewer edges than its count are left: one more
+  // than E, so that collapses (3 edges each) stop at E itself, not at E - 3.
+  SMS::Count_stop_predicate<TriangleMesh> stop(static_cast<std::size_t>(edges) + 1);
   SMS::edge_collapse(mesh, stop);
   mesh.collect_garbage();
 }

@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
   app.add_option("--pixels", pixels, "with --camera: target edge length in pixels");
   app.add_option("--fov", fov, "with --camera: horizontal field of view in degrees (default 60)");
   app.add_option("--width", width, "with --camera: image width in pixels (default 1920)");
-  app.add_option("--threads", threads, "threads, 1..256 (default: all cores)");
+  app.add_option("--threads", threads, "threads, 1..256, or 0 for all cores (the default)");
   app.add_option("--frames", frames, "animation: a pattern of OBJ files (quoted), e.g. 'anim/frame*.obj'");
   stencil_tools::BoundaryOption boundary;
   boundary.add(app);
