@@ -521,6 +521,18 @@ TEST_CASE("Adaptive fitting refines where the error is large, within the budget,
   CHECK(closed_and_oriented(adaptive.mesh));
   CHECK(adaptive.fit.history.back().max < 0.5 * plain.history.back().max);
   CHECK(adaptive.fit.history.back().control_points == adaptive.mesh.vertex_count());
+  CHECK(adaptive.stopped.size() > 0);
+  // A tight budget is used, not dropped: a round whose red-green closure
+  // overshoots splits fewer faces (it used to split none, without a word).
+  for (const std::size_t budget : {std::size_t{16}, std::size_t{24}}) {
+    INFO("budget " << budget);
+    const AdaptiveFit tight = fit_adaptively(tables, ico, points, options, budget);
+    CHECK(tight.rounds >= 1);
+    CHECK(tight.mesh.vertex_count() > ico.vertex_count());
+    CHECK(tight.mesh.vertex_count() <= budget);
+    CHECK(closed_and_oriented(tight.mesh));
+    CHECK_THAT(tight.stopped, Catch::Contains("budget"));
+  }
   CHECK_THROWS_WITH(fit_adaptively(tables, ico, points, options, 11), Catch::Contains("below the control mesh's 12"));
   options.max_error = 0;
   CHECK_THROWS_WITH(fit_adaptively(tables, ico, points, options, 100), Catch::Contains("max error above 0"));

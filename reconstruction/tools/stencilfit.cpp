@@ -158,7 +158,8 @@ int main(int argc, char** argv) {
     FitResult fit;
     if (max_control_points > 0) {
       AdaptiveFit adaptive = fit_adaptively(tables, mesh, points, options, static_cast<std::size_t>(max_control_points));
-      std::fprintf(stderr, "%d refinement rounds: %zu control points\n", adaptive.rounds, adaptive.mesh.vertex_count());
+      std::fprintf(stderr, "%d refinement rounds: %zu control points (stopped: %s)\n", adaptive.rounds,
+                   adaptive.mesh.vertex_count(), adaptive.stopped.c_str());
       mesh = std::move(adaptive.mesh);
       fit = std::move(adaptive.fit);
     } else {

@@ -106,6 +106,7 @@ struct AdaptiveFit {
   Mesh mesh;
   FitResult fit;
   int rounds = 0;
+  std::string stopped;  // why the refinement stopped: the max error met, or the budget
 };
 AdaptiveFit fit_adaptively(const std::shared_ptr<const Tables>& tables, const Mesh& mesh,
                            const std::vector<Point>& points, const FitOptions& options,

@@ -42,7 +42,14 @@ AdaptiveFit fit_adaptively(const std::shared_ptr<const Tables>& tables, const Me
     out.mesh.positions = out.fit.control;
     // Faces above half the target split: those just below it would only need the next round.
     const double threshold = 0.5 * options.max_error * out.fit.diagonal;
-    if (out.fit.history.back().max <= options.max_error || out.mesh.vertex_count() >= max_control_points) break;
+    if (out.fit.history.back().max <= options.max_error) {
+      out.stopped = "the max error is met";
+      break;
+    }
+    if (out.mesh.vertex_count() >= max_control_points) {
+      out.stopped = "the control-point budget is reached";
+      break;
+    }
     // The faces above the threshold, worst first; each split adds about 1.5 vertices (three shared midpoints).
     std::vector<std::size_t> order(out.mesh.face_count());
     std::iota(order.begin(), order.end(), std::size_t{0});
@@ -50,16 +57,28 @@ AdaptiveFit fit_adaptively(const std::shared_ptr<const Tables>& tables, const Me
       return out.fit.face_max_error[a] > out.fit.face_max_error[b];
     });
     const std::size_t room = max_control_points - out.mesh.vertex_count();
-    std::vector<bool> marked(out.mesh.face_count(), false);
     std::size_t count = 0;
-    for (const std::size_t f : order) {
-      if (out.fit.face_max_error[f] <= threshold || 3 * (count + 1) > 2 * room) break;
-      marked[f] = true, ++count;
+    while (count < order.size() && out.fit.face_max_error[order[count]] > threshold && 3 * (count + 1) <= 2 * room) ++count;
+    if (count == 0) {
+      out.stopped = out.fit.face_max_error[order[0]] > threshold ? "the control-point budget has no room for a split"
+                                                                 : "no face is above half the max error";
+      break;
     }
-    if (count == 0) break;
+    // The red-green closure adds vertices beyond the split faces' own: where
+    // it overshoots the budget, fewer (the worst) faces, halved until it fits.
     const std::vector<int> valences = tables->valences();
-    Mesh refined = refine_red_green(out.mesh, marked, *std::max_element(valences.begin(), valences.end()));
-    if (refined.vertex_count() > max_control_points) break;  // the closure needed more than the budget
+    Mesh refined;
+    for (;;) {
+      std::vector<bool> marked(out.mesh.face_count(), false);
+      for (std::size_t k = 0; k < count; ++k) marked[order[k]] = true;
+      refined = refine_red_green(out.mesh, marked, *std::max_element(valences.begin(), valences.end()));
+      if (refined.vertex_count() <= max_control_points || count == 1) break;
+      count /= 2;
+    }
+    if (refined.vertex_count() > max_control_points) {
+      out.stopped = "the control-point budget has no room for a split with its closure";
+      break;
+    }
     out.mesh = std::move(refined);
     ++out.rounds;
   }
