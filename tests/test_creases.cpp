@@ -635,6 +635,19 @@ TEST_CASE("creases on sqrt(3) meshes and on tables without a crease rule are ref
   Features infinite;  // on sqrt(3) infinitely sharp ones too (Loop evaluates them: test_loop_creases.cpp)
   infinite.crease(edges_of(ico)[0].first, edges_of(ico)[0].second, 10);
   CHECK_THROWS_WITH(surface_with(tables, ico, infinite), Catch::Contains("sqrt(3)") && Catch::Contains("no crease rule"));
+  // Two icosahedra sharing a vertex, no tags: refused for the non-manifold vertex, named, not for "creases".
+  Mesh bowtie = ico;
+  const int shared = ico.face_vertices[0], offset = static_cast<int>(ico.vertex_count());
+  for (const Point& p : ico.positions)
+    bowtie.positions.push_back({2 * ico.positions[static_cast<std::size_t>(shared)][0] - p[0], p[1], p[2]});
+  for (std::size_t k = 0; k < ico.face_vertices.size(); k += 3)
+    for (const std::size_t c : {std::size_t{0}, std::size_t{2}, std::size_t{1}}) {  // mirrored: turned to keep facing out
+      const int v = ico.face_vertices[k + c];
+      bowtie.face_vertices.push_back(v == shared ? shared : v + offset);
+    }
+  bowtie.face_sizes.resize(2 * ico.face_count(), 3);
+  CHECK_THROWS_WITH(surface_with(tables, bowtie, Features{}),
+                    Catch::Contains("vertex " + std::to_string(shared) + " is non-manifold") && Catch::Contains("sqrt(3)"));
 }
 
 TEST_CASE("OpenSubdiv's smooth triangle rule on Catmull-Clark meshes with triangles equals Far's and Bfr's",

@@ -76,6 +76,20 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
   } catch (const MeshError& e) {
     throw MeshError(std::string(e.what()) + kNumbering);
   }
+  // A non-manifold vertex or edge becomes corners and sharp edges (as in
+  // OpenSubdiv), which sqrt(3) has no rule for: said as such, not as the
+  // creases the user never tagged.
+  if (input.changed && t->tables_->family() == SchemeFamily::Triangle &&
+      t->tables_->triangle().refinement() == TriangleRefinement::Sqrt3) {
+    std::vector<char> seen(t->vertex_count_, 0);
+    for (const int v : input.origin)
+      if (seen[static_cast<std::size_t>(v)]++)
+        throw MeshError("vertex " + std::to_string(v) +
+                        " is non-manifold (its faces form more than one fan, or an edge there is in more than two faces "
+                        "or used twice in one direction): it is split into corners and sharp edges, as OpenSubdiv does, "
+                        "and the scheme " + t->tables_->scheme() + " refines by sqrt(3), which has no corner or crease rule" +
+                        kNumbering);
+  }
   if (input.changed) {
     mesh.vertex_count = input.origin.size();
     mesh.face_vertices = std::move(input.face_vertices);
