@@ -46,7 +46,8 @@ class Surface {
 
   // The limit point at an exact parameter of face `face` (domain(face) says
   // what (u, v) means). Exact (to double rounding) where a stored rate holds
-  // the parameter; throws EvaluationError naming the face, the parameter and
+  // the parameter (single-precision tables: to their weights' rounding, which
+  // the overloads below report); throws EvaluationError naming the face, the parameter and
   // the stencilgen call that would add the rate otherwise.
   Point evaluate(std::size_t face, const ExactParameter& at) const;
 
