@@ -174,7 +174,7 @@ Approximation QuadPatchDescent::evaluate(int valence, std::vector<Point>& q, P x
     const QuadDescent::Valence& sub = tables_.descent(valence);
     if (level == kMaxLevels) {  // within 2^-64 of the extraordinary vertex: its limit point
       if (!sub.nonnegative)
-        throw EvaluationError("valence " + std::to_string(valence) + " has negative subdivision weights, so evaluation this close "
+        throw EvaluationError("the " + kind_name(valence) + " has negative subdivision weights, so evaluation this close "
                               "to the extraordinary vertex has no bound");
       std::array<double, limits::kMaxPatchPoints> w{};
       tables_.node_stencil(valence, tables_.rates().front(), 0, 0, w.data());
@@ -271,8 +271,7 @@ std::array<P, 2> QuadPatchDescent::into_regular(int valence, std::vector<Point>&
   for (int level = 0; level <= kMaxLevels; ++level) {
     if (valence == 4) return {x, y};
     if (at_origin(x, y))
-      throw EvaluationError("the patch has no parametric derivative at its extraordinary vertex (valence " +
-                            std::to_string(valence) + ")");
+      throw EvaluationError("the patch has no parametric derivative at its extraordinary vertex (" + kind_name(valence) + ")");
     into_child(tables_.descent(valence), valence, q, x, y, next);
     scale *= 2;
   }

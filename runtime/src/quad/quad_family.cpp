@@ -637,7 +637,7 @@ Point QuadFamily::normal_any(std::size_t face, P u, P v, const Point* prepared) 
                                          "no normal at it; the surface round it evaluates as anywhere else");
   }
   if (d.tangent_u.size() != points.size())
-    throw EvaluationError("the tables hold no tangent stencils at valence " + std::to_string(valence) +
+    throw EvaluationError("the tables hold no tangent stencils at the " + kind_name(valence) +
                           ", so there is no normal at the extraordinary vertex (exact JSON tables from before descent "
                           "version 2, or a scheme whose subdominant eigenvalue is not a real double one)");
   Derivatives tangents;  // only its du x dv is used

@@ -450,7 +450,7 @@ Point TriangleFamily::vertex_normal(const TrianglePatch& patch, double det, cons
                                     "normal at it");
   }
   if (!tu || !tv || tu->size() != patch.points.size())
-    throw EvaluationError("the tables hold no tangent stencils at valence " + std::to_string(patch.valence) +
+    throw EvaluationError("the tables hold no tangent stencils at the " + kind_name(patch.valence) +
                           ", so there is no normal at the extraordinary vertex (.sgt tables from before version 4: "
                           "regenerate them)");
   Derivatives tangents;
