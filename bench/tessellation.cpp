@@ -4,7 +4,8 @@
 // 4, 8, 16, 24 and a random adaptive mix 1..24, with 1 and 2 threads. For
 // Catmull-Clark, OpenSubdiv 3.5's Bfr tessellates the same meshes at the same
 // rates in the same run (positions only, float, preallocated arrays), and the
-// ratio is printed. Also: table load time and memory. Triangle meshes: Loop
+// ratio is printed; every row also with unit normals on (positions and
+// normals, the time ratio to positions alone). Also: table load time and memory. Triangle meshes: Loop
 // from its .sgt tables on the bundled triangle meshes and the triangulated torus
 // refined by Loop steps to >= 100k faces, against Bfr's Loop tessellation
 // likewise; sqrt(3) on the same meshes (the torus refined by double sqrt(3)
@@ -79,6 +80,18 @@ void run_rows(const char* scheme, const NamedMesh& m, const std::shared_ptr<cons
         triangles = soup.triangle_count();
         return secs;
       });
+      // The same with unit normals on (issue 14's "position + derivatives at most 2x position alone").
+      const double with_normals = bench_timing::median3([&] {
+        const auto s = Clock::now();
+        const TessellationPlan plan(surface.shared_topology(), rates, {threads});
+        PolygonSoup soup = plan.make_soup();
+        soup.normals.resize(soup.positions.size());
+        plan.evaluate(surface, soup.positions.data());
+        plan.evaluate_normals(surface, soup.normals.data());
+        return std::chrono::duration<double>(Clock::now() - s).count();
+      });
+      char normals_columns[64];
+      std::snprintf(normals_columns, sizeof normals_columns, " %.1f | %.2f |", triangles / with_normals / 1e6, with_normals / ours);
       const double ours_rate = triangles / ours / 1e6;
       if (with_osd) {
         std::size_t osd_triangles = 0;
@@ -88,12 +101,12 @@ void run_rows(const char* scheme, const NamedMesh& m, const std::shared_ptr<cons
           return r.seconds;
         });
         const double osd_rate = osd_triangles / theirs / 1e6;
-        std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | %.1f | %.2f |\n", scheme, m.name.c_str(),
+        std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | %.1f | %.2f |%s\n", scheme, m.name.c_str(),
                     m.mesh.face_count(), rate ? std::to_string(rate).c_str() : "mix 1..24", threads, triangles,
-                    ours_rate, osd_rate, ours_rate / osd_rate);
+                    ours_rate, osd_rate, ours_rate / osd_rate, normals_columns);
       } else {
-        std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | | |\n", scheme, m.name.c_str(), m.mesh.face_count(),
-                    rate ? std::to_string(rate).c_str() : "mix 1..24", threads, triangles, ours_rate);
+        std::printf("| %s | %s | %zu | %s | %d | %zu | %.1f | | |%s\n", scheme, m.name.c_str(), m.mesh.face_count(),
+                    rate ? std::to_string(rate).c_str() : "mix 1..24", threads, triangles, ours_rate, normals_columns);
       }
       std::fflush(stdout);
     }
@@ -116,8 +129,9 @@ int main(int argc, char** argv) {
               resident_mb() - before);
   const auto cc = Tables::load(cc_path);
 
-  std::printf("\n| scheme | mesh | control faces | rate | threads | triangles | ours (M tri/s) | OpenSubdiv Bfr (M tri/s) | ratio |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("\n| scheme | mesh | control faces | rate | threads | triangles | ours (M tri/s) | OpenSubdiv Bfr (M tri/s) | ratio | "
+              "ours with normals (M tri/s) | time with normals / without |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto* scheme : {"nonpoly", "catmull-clark"}) {
     const auto& tables = std::string(scheme) == "nonpoly" ? nonpoly : cc;
     std::vector<NamedMesh> meshes;

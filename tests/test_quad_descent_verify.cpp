@@ -56,6 +56,26 @@ TEST_CASE("stencilgen verify checks descent.json: subdivision matrices exactly, 
     CHECK(r.status == 1);
     CHECK_THAT(r.output, Catch::Contains("no tangent stencils, but the scheme has them"));
 
+    // Fields no stencil check reads: the regular curve's basis and mask, the
+    // nonnegativity flags (they decide whether bounds are claimed), a deleted
+    // sector; re-indenting the file is no change.
+    for (const char* field : {"polynomial_basis", "mask", "mask_nonnegative", "sectors"}) {
+      bad = good;
+      if (std::string(field) == "polynomial_basis" && !good[field].is_null()) bad[field]["pieces"][0][0] = "1/5";
+      else if (std::string(field) == "polynomial_basis") bad[field] = json::object({{"degree", 3}});
+      else if (std::string(field) == "mask") bad[field]["coefficients"][0] = "1/3";
+      else if (std::string(field) == "mask_nonnegative") bad[field] = !good[field].get<bool>();
+      else bad[field].erase(3);
+      write_json_file(dir / "bad.json", bad);
+      r = run_stencilgen("verify " + (dir / "bad.json").string());
+      INFO(field << ": " << r.output);
+      CHECK(r.status == 1);
+      CHECK_THAT(r.output, Catch::Contains(std::string(field) + ": "));
+    }
+    std::ofstream(dir / "indented.json") << good.dump(3) << "\n";
+    r = run_stencilgen("verify " + (dir / "indented.json").string());
+    CHECK(r.status == 0);
+
     // Boundary sectors: valences up to 5 give the crease sectors of 1, 3, 4 and 5 faces, the corners of 2..5,
     // the darts of valence 3..5, and the cone points of valence 3..5 (one patch each).
     REQUIRE(good["sectors"].size() == (1 + 3 + 4 + 5) + (2 + 3 + 4 + 5) + (3 + 4 + 5) + 3);

@@ -32,8 +32,9 @@ Real decimal(const DocumentReader<ojson>& r, const ojson& j, const std::string& 
 // compared exactly, the limit checked as a fixed point of the file's own A0, the
 // tangent stencils compared with a fresh solve and checked to span a plane
 // that the file's A0 maps into itself (their combinations are left eigenvectors).
-void verify_sectors(const DocumentReader<ojson>& r, const ojson& sectors, const QuadScheme& scheme,
-                    std::vector<std::string>& failures) {
+std::vector<BoundarySector> verify_sectors(const DocumentReader<ojson>& r, const ojson& sectors, const QuadScheme& scheme,
+                                          std::vector<std::string>& failures) {
+  std::vector<BoundarySector> listed;
   for (std::size_t k = 0; k < sectors.size(); ++k) {
     const std::string field = field_path("sectors", k);
     const ojson& e = sectors[k];
@@ -47,6 +48,7 @@ void verify_sectors(const DocumentReader<ojson>& r, const ojson& sectors, const 
     sector.faces = static_cast<int>(r.integer(r.require(e, "faces", field), field_path(field, "faces"), ring ? 3 : 1, scheme.max_valence));
     sector.position = static_cast<int>(r.integer(r.require(e, "position", field), field_path(field, "position"), 0,
                                                  sector.kind == SectorKind::Cone ? 0 : sector.faces - 1));
+    listed.push_back(sector);
     const QuadDescent fresh = quad_descent(scheme, {}, {sector});
     const QuadDescent::Sector& d = fresh.sectors.front();
     const std::size_t points = d.subdivision.points;
@@ -113,6 +115,7 @@ void verify_sectors(const DocumentReader<ojson>& r, const ojson& sectors, const 
         failures.push_back(where + ": the tangent stencils do not span a plane that A0 keeps (residual " + to_string(residual, 3) + ")");
     }
   }
+  return listed;
 }
 
 }  // namespace
@@ -128,10 +131,12 @@ std::vector<std::string> verify_quad_descent(const TableDocument& table, const Q
   if (hash != hex64(scheme.hash))
     failures.push_back("scheme hash " + excerpt(hash) + " is not that of '" + scheme.name + "' (" + hex64(scheme.hash) + ")");
   const ojson& valences = r.array(r.require(doc, "valences", ""), "valences");
+  std::vector<int> listed;
   for (std::size_t k = 0; k < valences.size(); ++k) {
     const std::string field = field_path("valences", k);
     const int v = static_cast<int>(r.integer(r.require(valences[k], "valence", field), field_path(field, "valence"),
                                              scheme.min_valence, scheme.max_valence));
+    listed.push_back(v);
     if (v == 4) r.fail(field_path(field, "valence"), "4 is the regular patch, which has no entry");
     const QuadDescent fresh = quad_descent(scheme, {v});
     const QuadDescent::Valence& d = fresh.valences.front();
@@ -178,7 +183,24 @@ std::vector<std::string> verify_quad_descent(const TableDocument& table, const Q
                            to_string(residual, 3) + ")");
     }
   }
-  if (version >= 3) verify_sectors(r, r.array(r.require(doc, "sectors", ""), "sectors"), scheme, failures);
+  if (version < kQuadDescentVersion) return failures;
+  const std::vector<BoundarySector> sectors = verify_sectors(r, r.array(r.require(doc, "sectors", ""), "sectors"), scheme, failures);
+  // The sectors are those of boundary vertices in 1..F faces (with corners, darts and cones), none left out.
+  int faces = 0;
+  for (const BoundarySector& s : sectors) faces = std::max(faces, s.faces);
+  const std::vector<BoundarySector> expected = faces > 0 ? boundary_sectors(faces, true) : std::vector<BoundarySector>{};
+  if (sectors != expected)
+    failures.push_back("sectors: not the full set of the boundary, crease, corner, dart and cone sectors in 1.." +
+                       std::to_string(faces) + " faces, in the generator's order");
+  // Everything else (mask, polynomial basis, nonnegativity flags, counts,
+  // what no check above reads): the document re-derived for the same valences
+  // and sectors equals the file's, field by field, as values (so that
+  // reformatting the file is no difference).
+  const ojson fresh = ojson::parse(quad_descent_to_json(scheme, quad_descent(scheme, listed, expected)));
+  for (const auto& [key, value] : fresh.items())
+    if (!doc.contains(key) || doc[key] != value) failures.push_back(key + ": differs from the re-derived document");
+  for (const auto& [key, value] : doc.items())
+    if (!fresh.contains(key)) failures.push_back(key + ": is no field of a descent document");
   return failures;
 }
 
