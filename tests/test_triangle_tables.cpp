@@ -102,6 +102,12 @@ TEST_CASE("triangle tables: exact where rational, high precision elsewhere, part
     INFO(bad.output);
     REQUIRE(bad.status != 0);
     REQUIRE(bad.output.find("FAIL: differs from the re-solved table") != std::string::npos);
+    CHECK(bad.output.find(") at ") != std::string::npos);  // and says where
+    // The same table re-indented, with a newline more: the same values, so it passes.
+    std::ofstream(path) << nlohmann::ordered_json::parse(text.str()).dump(2) << "\n\n";
+    const CliResult spaced = run_stencilgen("verify " + path.string());
+    INFO(spaced.output);
+    CHECK(spaced.status == 0);
   }
 }
 

@@ -43,7 +43,7 @@ bool verify_file(const std::string& file, const std::string& scheme_spec, const 
                 << "; " << (t.exact ? "exact" : "high precision") << "; equal to the re-solved table in every digit)\n";
     else
       std::cout << file << ": FAIL: differs from the re-solved table (scheme '" << scheme.name << "', valence "
-                << t.valence << ", n = " << t.n << ")\n";
+                << t.valence << ", n = " << t.n << ") at " << *check.difference << "\n";
     return check.same;
   }
   if (table.format == kTriangleSectorsFormat) {

@@ -40,6 +40,30 @@ Json parse_json_document(const std::string& text, const std::string& origin) {
 template nlohmann::json parse_json_document<nlohmann::json>(const std::string&, const std::string&);
 template nlohmann::ordered_json parse_json_document<nlohmann::ordered_json>(const std::string&, const std::string&);
 
+std::optional<std::string> json_difference(const nlohmann::ordered_json& expected, const nlohmann::ordered_json& actual,
+                                           const std::string& path) {
+  if (expected.type() != actual.type()) return path.empty() ? std::string("the document") : path;
+  if (expected.is_object()) {
+    for (const auto& [key, value] : expected.items()) {
+      if (!actual.contains(key)) return field_path(path, key) + " (missing)";
+      if (auto d = json_difference(value, actual[key], field_path(path, key))) return d;
+    }
+    for (const auto& [key, value] : actual.items())
+      if (!expected.contains(key)) return field_path(path, key) + " (not a field of it)";
+    return std::nullopt;
+  }
+  if (expected.is_array()) {
+    if (expected.size() != actual.size())
+      return (path.empty() ? std::string("the document") : path) + " (" + std::to_string(actual.size()) + " entries, not " +
+             std::to_string(expected.size()) + ")";
+    for (std::size_t k = 0; k < expected.size(); ++k)
+      if (auto d = json_difference(expected[k], actual[k], field_path(path, k))) return d;
+    return std::nullopt;
+  }
+  if (expected != actual) return path.empty() ? std::string("the document") : path;
+  return std::nullopt;
+}
+
 std::string field_path(const std::string& parent, const std::string& key) {
   const bool plain = !key.empty() && (std::isalpha(static_cast<unsigned char>(key[0])) || key[0] == '_') &&
                      std::all_of(key.begin(), key.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });

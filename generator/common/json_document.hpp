@@ -4,6 +4,7 @@
 // that say "ORIGIN: FIELD: message", where FIELD is the JSON path
 // (functions[2].values["1/3"]), never the JSON library's own wording.
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "algebra/rational.hpp"
@@ -22,6 +23,11 @@ Json parse_json_document(const std::string& text, const std::string& origin);
 // that is not a plain name, or "parent[index]".
 std::string field_path(const std::string& parent, const std::string& key);
 std::string field_path(const std::string& parent, std::size_t index);
+// Where two documents first differ, as a field path ("" for the whole
+// document), or nothing when they are equal as values (key order and spacing
+// aside from arrays' order): for verify's messages.
+std::optional<std::string> json_difference(const nlohmann::ordered_json& expected, const nlohmann::ordered_json& actual,
+                                           const std::string& path = "");
 
 // Fields of one document, each read with its type and range checked; every
 // failure throws sg::Error "ORIGIN: FIELD: what".

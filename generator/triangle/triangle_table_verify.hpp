@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <string>
 
 #include "common/table_document.hpp"
@@ -15,6 +16,7 @@ namespace sg {
 struct TriangleTableCheck {
   TriangleTable fresh;
   bool same = false;
+  std::optional<std::string> difference;  // where the file first differs from the re-solved table
 };
 TriangleTableCheck verify_triangle_table(const TableDocument& table, const std::string& text, const TriangleScheme& scheme);
 
