@@ -1,6 +1,9 @@
 // All-or-nothing output (issue 12): an output folder is replaced as a whole or
 // not at all, whichever step fails, and nothing is left beside it.
 #include <catch2/catch.hpp>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <fstream>
 #include <map>
 
@@ -136,5 +139,37 @@ TEST_CASE("stencilgen replaces OUT/<scheme> as a whole: tables of an earlier run
   REQUIRE(r.status == 0);
   CHECK(names_in(dir / "fourpoint") == std::vector<std::string>{"n2.json", "n2.sgc", "n3.json", "n3.sgc"});
   CHECK(names_in(dir) == std::vector<std::string>{"fourpoint"});
+  fs::remove_all(dir);
+}
+
+TEST_CASE("what a killed run left beside its output is cleared by the next run, and its previous output put back",
+          "[output]") {
+  // A process that has exited: its pid names no live process (until reused).
+  const pid_t child = fork();
+  if (child == 0) _exit(0);
+  int status = 0;
+  waitpid(child, &status, 0);
+  const std::string dead = std::to_string(child);
+  const fs::path dir = scratch_dir("output-interrupted");
+  // Killed while writing: a staging folder; the output itself untouched.
+  write_previous(dir / "a");
+  fs::create_directories(dir / (".a.staging-" + dead) / "v5");
+  std::ofstream(dir / (".a.staging-" + dead) / "v5" / "n1.json") << "half";
+  // Killed between its two renames: the previous output aside, no output.
+  write_previous(dir / (".b.old-" + dead));
+  // Another live process's staging folder (ours, by pid): not touched by a sweep of another target.
+  fs::create_directories(dir / (".c.staging-" + std::to_string(getpid())));
+  // A file written atomically, killed before its rename.
+  std::ofstream(dir / (".d.txt.staging-" + dead)) << "half";
+
+  new_run(dir / "a").commit();
+  CHECK(snapshot(dir / "a") == kNew);
+  sg::OutputTransaction b(dir / "b");  // a run that fails: the previous output is back where it was
+  b.add("x.json", "new");
+  b.inject_failure(Step::MoveNewIn);
+  CHECK_THROWS(b.commit());
+  CHECK(snapshot(dir / "b") == kPrevious);
+  sg::write_file_atomically(dir / "d.txt", "whole");
+  CHECK(names_in(dir) == std::vector<std::string>{".c.staging-" + std::to_string(getpid()), "a", "b", "d.txt"});
   fs::remove_all(dir);
 }

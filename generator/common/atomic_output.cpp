@@ -1,7 +1,11 @@
 #include "common/atomic_output.hpp"
 
-#include <fstream>
+#include <signal.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <fstream>
+#include <vector>
 
 #include "base/error.hpp"
 
@@ -53,6 +57,36 @@ void write_bytes(const fs::path& file, const std::string& bytes, const fs::path&
 
 std::error_code injected() { return std::make_error_code(std::errc::io_error); }
 
+// What an earlier run for `target` left when it was killed (an interrupt
+// cannot run the Undo): its staging folder or file is removed; its previous
+// contents moved aside are moved back if the target is missing (the run died
+// between the two renames), else removed. Only runs whose process is gone
+// (kill(pid, 0) fails with ESRCH) are touched.
+void sweep_interrupted(const fs::path& parent, const fs::path& target) {
+  std::error_code ec;
+  if (!fs::is_directory(parent, ec)) return;
+  std::string name(1, '.');  // ".NAME." (appended: GCC 12 warns falsely on "." + string)
+  name += target.filename().string();
+  name += '.';
+  std::vector<std::pair<fs::path, bool>> left;  // (path, is the moved-aside previous contents)
+  for (const fs::directory_entry& entry : fs::directory_iterator(parent, ec)) {
+    const std::string file = entry.path().filename().string();
+    if (file.compare(0, name.size(), name) != 0) continue;
+    const std::string rest = file.substr(name.size());
+    const bool old = rest.compare(0, 4, "old-") == 0;
+    if (!old && rest.compare(0, 8, "staging-") != 0) continue;
+    const std::string digits = rest.substr(old ? 4 : 8);
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    const long pid = std::stol(digits);
+    if (pid == ::getpid() || !(::kill(static_cast<pid_t>(pid), 0) == -1 && errno == ESRCH)) continue;
+    left.emplace_back(entry.path(), old);
+  }
+  for (const auto& [path, old] : left) {
+    if (old && !fs::exists(target, ec)) fs::rename(path, target, ec);
+    else fs::remove_all(path, ec);
+  }
+}
+
 }  // namespace
 
 void OutputTransaction::add(const std::string& relative_name, std::string bytes) {
@@ -94,6 +128,7 @@ void OutputTransaction::commit() {
     throw Error("output path " + target.string() + " exists and is not a folder");
   const fs::path staging = sibling(parent, target, "staging"), aside = sibling(parent, target, "old");
   Undo undo(staging, create_folders(parent));
+  sweep_interrupted(parent, target);
   fs::remove_all(staging, ec);  // left by an earlier process with this pid
   fs::remove_all(aside, ec);
   ec = fault_ == Step::CreateStaging ? injected() : std::error_code();
@@ -142,6 +177,7 @@ void write_file_atomically(const fs::path& path, const std::string& bytes) {
   const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
   const fs::path temporary = sibling(parent, target, "staging");
   Undo undo(temporary, create_folders(parent));
+  sweep_interrupted(parent, target);
   write_bytes(temporary, bytes, target);
   std::error_code ec;
   fs::rename(temporary, target, ec);
