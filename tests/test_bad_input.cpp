@@ -79,6 +79,23 @@ TEST_CASE("unknown schemes, bad rates and bad parameters are refused") {
   fs::remove_all(dir);
 }
 
+TEST_CASE("a scheme that is not shown to converge gets a warning, even with -q; shipped ones do not") {
+  const fs::path dir = scratch_dir("divergent");
+  // The four-point scheme with w = 1: its difference scheme is not contractive.
+  const fs::path divergent = write_scheme(dir, "wide", uniform("-3", R"("-1", "0", "3/2", "1", "3/2", "0", "-1")"));
+  CliResult r = run_stencilgen("-q --scheme " + divergent.string() + " --n 2 --out " + (dir / "out").string());
+  INFO(r.output);
+  CHECK(r.status == 0);
+  CHECK(r.output.find("warning: scheme 'bad' is not shown to converge") != std::string::npos);
+  for (const char* shipped : {"fourpoint", "dd6", "bspline3", "chaikin", "ternary-dd4"}) {
+    r = run_stencilgen(std::string("-q --scheme ") + shipped + " --n 2 --out " + (dir / "out").string());
+    INFO(shipped << ": " << r.output);
+    CHECK(r.status == 0);
+    CHECK(r.output.find("warning") == std::string::npos);
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("a successful run writes JSON and binary tables for every rate, and verify accepts them") {
   const fs::path dir = scratch_dir("ok");
   const CliResult r = run_stencilgen("--scheme fourpoint --n 2-4 --out " + (dir / "t").string());

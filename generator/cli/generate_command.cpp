@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "common/rate_spec.hpp"
 #include "common/scheme_registry.hpp"
+#include "curve/difference_scheme.hpp"
 #include "curve/curve_scheme_loader.hpp"
 #include "curve/generate_curve.hpp"
 #include "quad/generate_quad.hpp"
@@ -38,6 +39,11 @@ int generate_curve(const GenerateOptions& o) {
   write_curve_tables(scheme, tables, o.out);
   std::cout << "wrote " << tables.size() << " exact tables (JSON + binary) for '" << scheme.name << "' to "
             << (std::filesystem::path(o.out) / scheme.name).string() << " in " << seconds_since(start) << " s\n";
+  // Said even with -q: tables of a scheme that may not converge describe no curve.
+  if (const std::string doubt = convergence_doubt(scheme); !doubt.empty())
+    std::cerr << "stencilgen: warning: scheme '" << scheme.name << "' is not shown to converge (" << doubt
+              << "): its tables are the exact solution of the scaling relations, which need not be the values of any "
+                 "limit function\n";
   return 0;
 }
 

@@ -113,6 +113,15 @@ std::map<long, Rational> derivative_from_difference(const TypeValues& psi, int r
   return out;
 }
 
+std::string convergence_doubt(const CurveScheme& scheme) {
+  if (!scheme.is_uniform() || scheme.types[0].placement != Placement::Everywhere) return "";
+  Mask s;
+  for (const Term& t : scheme.types[0].terms) s[t.shift] += t.coeff;
+  std::string why;
+  if (converges(s, scheme.arity, 16, why)) return "";
+  return "its mask " + coefficient_list(s) + " " + why;
+}
+
 DerivativeSchemes derivative_schemes(const CurveScheme& scheme, int max_order) {
   DerivativeSchemes out;
   if (!scheme.is_uniform() || scheme.types[0].placement != Placement::Everywhere) {

@@ -39,6 +39,12 @@ DerivativeSchemes derivative_schemes(const CurveScheme& scheme, int max_order);
 // contractive within `max_steps` steps. `why` gets the reason when it does not.
 bool converges(const std::map<long, Rational>& mask, int arity, int max_steps, std::string& why);
 
+// Why a uniform scheme is not shown to converge (its difference scheme is not
+// contractive within 16 steps), or "" if it is, or if it is not uniform (not
+// analysed). Its tables are then the exact solution of the scaling
+// relations, which need not be the values of any limit function.
+std::string convergence_doubt(const CurveScheme& scheme);
+
 // The table of a uniform scheme's values at their rate, with the derivatives of
 // `derivatives` (psi_r solved by residue classes at the same rate).
 CurveTable table_with_derivatives(const CurveScheme& scheme, const CurveSolution& values, const DerivativeSchemes& derivatives);
