@@ -2,6 +2,7 @@
 // tensor product and against Cox-de Boor, the recursion against the paper's
 // full system, the smoothness analysis, and the binary tables via the runtime.
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 #include <filesystem>
 #include <fstream>
 
@@ -273,6 +274,7 @@ TEST_CASE("verify re-solves surface JSON tables and rejects a changed weight", "
     std::ifstream in(file);
     text.assign(std::istreambuf_iterator<char>(in), {});
   }
+  const std::string original = text;
   const auto at = text.find("\"at\":[\"1/4\",\"1/2\"]");
   REQUIRE(at != std::string::npos);
   const auto nums = text.find("\"numerators\":[\"", at) + 15;
@@ -286,5 +288,17 @@ TEST_CASE("verify re-solves surface JSON tables and rejects a changed weight", "
   const CliResult bad = run_stencilgen("verify " + file.string());
   CHECK(bad.status == 1);
   CHECK(bad.output.find("nodes at (1/4, 1/2): differs from the re-solved stencil") != std::string::npos);
+  // Fields no stencil check reads: the rules recorded beside the stencils, and the exactness flag.
+  std::ofstream(file) << original;
+  for (const char* field : {"rules", "exact"}) {
+    nlohmann::ordered_json doc = nlohmann::ordered_json::parse(original);
+    if (std::string(field) == "exact") doc[field] = !doc[field].get<bool>();
+    else doc[field]["edge_end"] = "1/3";
+    std::ofstream(file) << doc.dump();
+    const CliResult changed = run_stencilgen("verify " + file.string());
+    INFO(field << ": " << changed.output);
+    CHECK(changed.status == 1);
+    CHECK(changed.output.find("differs from the table made again at " + std::string(field)) != std::string::npos);
+  }
   std::filesystem::remove_all(dir);
 }

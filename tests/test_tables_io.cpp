@@ -1,5 +1,6 @@
 // Exact JSON round trip, and the binary form through the runtime's loader.
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 #include <cmath>
 #include <iterator>
 #include <fstream>
@@ -132,5 +133,27 @@ TEST_CASE("a runtime curve derivative from binary tables is the derivative of th
   const auto four = stencil_runtime::load_curve_table((dir / "fourpoint" / "n5.sgc").string());
   CHECK_THROWS_WITH(stencil_runtime::evaluate_uniform_curve_derivative(four, points, 40, 2),
                     Catch::Contains("derivatives of order 1..1 only, not 2"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("verify refuses a curve table whose functions are placed elsewhere than the scheme's") {
+  // A non-uniform table with a function moved or its placement swapped still
+  // satisfies its own relations; it describes another curve all the same.
+  const fs::path dir = scratch_dir("curve-placement");
+  REQUIRE(run_stencilgen("-q --scheme nubspline3 --n 3 --out " + dir.string()).status == 0);
+  const fs::path file = dir / "nubspline3" / "n3.json";
+  std::ifstream in(file);
+  const nlohmann::ordered_json good = nlohmann::ordered_json::parse(in);
+  REQUIRE(run_stencilgen("verify " + file.string()).status == 0);
+  for (int change = 0; change < 2; ++change) {
+    nlohmann::ordered_json bad = good;
+    if (change == 0) bad["functions"][3]["position"] = 5;
+    else std::swap(bad["functions"][0]["placement"], bad["functions"][1]["placement"]);
+    std::ofstream(dir / "bad.json") << bad.dump();
+    const CliResult r = run_stencilgen("verify " + (dir / "bad.json").string());
+    INFO(r.output);
+    CHECK(r.status == 1);
+    CHECK(r.output.find(change == 0 ? "functions[3].position" : "functions[0].placement") != std::string::npos);
+  }
   fs::remove_all(dir);
 }

@@ -5,6 +5,7 @@
 #include "common/hash.hpp"
 #include "quad/ev_patch_solver.hpp"
 #include "quad/patch_layout.hpp"
+#include "quad/quad_table.hpp"
 #include "quad/quad_table_json.hpp"
 
 namespace sg {
@@ -68,6 +69,11 @@ std::vector<std::string> verify_quad_table(const TableDocument& table, const Qua
     }
     ++kind;
   }
+  // Everything else (the rules, the point count, exactness, lowest terms):
+  // the table made again equals the file's as values.
+  if (failures.empty())
+    if (const auto d = json_difference(ojson::parse(quad_table_to_json(make_quad_table(scheme, patch))), doc))
+      failures.push_back("differs from the table made again at " + *d);
   return failures;
 }
 
