@@ -76,6 +76,9 @@ TEST_CASE("unknown schemes, bad rates and bad parameters are refused") {
   expect_failure("--scheme fourpoint --n=-2", "not a positive integer", out);
   expect_failure("--scheme fourpoint --n 3 --param q=1/2", "has no parameter 'q'", out);
   expect_failure("--scheme fourpoint --n 3 --param w=1/0", "division by zero", out);
+  // Options that would change nothing for the scheme's kind are refused, not ignored.
+  expect_failure("--scheme fourpoint --n 3 --binary-precision single", "--binary-precision applies to surface schemes", out);
+  expect_failure("--scheme loop --n 2 --route eigen", "--route applies to curve schemes", out);
   fs::remove_all(dir);
 }
 

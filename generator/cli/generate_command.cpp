@@ -105,6 +105,12 @@ int generate_triangle(const GenerateOptions& o, const std::string& valence_spec)
 int generate(const GenerateOptions& o) {
   const std::string type = scheme_type(o.scheme);
   const std::string valences = o.valences.empty() ? "3-8" : o.valences;
+  // An option that would change nothing is refused, not ignored (route stays "both" unless given).
+  const bool curve = type != "quad" && type != "triangle";  // curve-uniform, curve-columns, curve-knots
+  if (!curve && o.route != "both")
+    throw Error("--route applies to curve schemes; '" + o.scheme + "' is a " + type + " scheme");
+  if (curve && o.precision != "double")
+    throw Error("--binary-precision applies to surface schemes; '" + o.scheme + "' is a curve scheme (its .sgc holds doubles)");
   if (type == "quad") return generate_quad(o, valences);
   if (o.layout != "generated")
     throw Error("--binary-layout applies to quad schemes; '" + o.scheme + "' is a " + type + " scheme");

@@ -38,7 +38,7 @@ int run(int argc, char** argv) {
   app.add_option("-n,--n", gen.rates, "rates: N (every rate 1..N), A-B (a range) or a list like 3,5,7");
   app.add_option("--out", gen.out, "output directory; tables go to OUT/<scheme>/n<N>.json and .sgc");
   app.add_option("--param", gen.params, "override a scheme parameter, NAME=RATIONAL (e.g. w=1/32); repeatable");
-  app.add_option("--route", gen.route, "solver: residue (a), eigen (b) or both, cross-checked (default)")
+  app.add_option("--route", gen.route, "curve schemes: solver residue (a), eigen (b) or both, cross-checked (default)")
       ->check(CLI::IsMember({"residue", "eigen", "both"}));
   app.add_flag("-q,--quiet", gen.quiet, "no progress lines on stderr");
   app.add_option("--valence", gen.valences, "surface schemes: valences, e.g. 3-8, 5 or 3,5,6 (default 3-8)");
