@@ -6,6 +6,7 @@
 #include "algebra/exact_linear_system.hpp"
 #include "algebra/integer_division.hpp"
 #include "base/error.hpp"
+#include "curve/difference_scheme.hpp"
 #include "curve/partition_of_unity.hpp"
 #include "curve/special_columns.hpp"
 
@@ -193,7 +194,11 @@ class InvariantPart {
       for (long c : cycle) where += (where.empty() ? "" : ", ") + std::to_string(c) + "/" + std::to_string(n_);
       throw Error("scheme '" + s_.name + "', n = " + std::to_string(n_) +
                   ": the scaling relations with partition of unity on the residue cycle {" + where + "} have " +
-                  result.describe() + (m == 0 ? " (the support holds no grid point)" : ""));
+                  result.describe() + (m == 0 ? " (the support holds no grid point)" : "") +
+                  [&] {  // the likely cause, where the scheme's own analysis finds one
+                    const std::string doubt = convergence_doubt(s_);
+                    return doubt.empty() ? std::string() : "; the scheme is not shown to converge: " + doubt;
+                  }());
     }
     values_[r0] = result.values;
     for (std::size_t step = L; step-- > 1;) values_[cycle[step]] = apply(cycle[step], values_[next(cycle[step])]);
