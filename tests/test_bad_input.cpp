@@ -82,7 +82,7 @@ TEST_CASE("unknown schemes, bad rates and bad parameters are refused") {
   fs::remove_all(dir);
 }
 
-TEST_CASE("a scheme that is not shown to converge gets a warning, even with -q; shipped ones do not") {
+TEST_CASE("a scheme not shown to converge gets a warning even with -q and shipped ones do not") {
   const fs::path dir = scratch_dir("divergent");
   // The four-point scheme with w = 1: its difference scheme is not contractive.
   const fs::path divergent = write_scheme(dir, "wide", uniform("-3", R"("-1", "0", "3/2", "1", "3/2", "0", "-1")"));
