@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include "cli.hpp"
+#include "common/scheme_registry.hpp"
 
 namespace fs = std::filesystem;
 
@@ -48,6 +49,20 @@ TEST_CASE("malformed scheme files are rejected with the file and field named") {
                  "unknown type 'surface'", out);
   expect_failure("--scheme " + write_scheme(dir, "expr", uniform("-1", "\"1/2 + q\", \"1\", \"1/2\"")).string() + " --n 3",
                  "unknown name 'q'", out);
+  // A misspelt optional field would give another scheme without a word: refused, named.
+  std::string quad;
+  {
+    std::ifstream in(sg::default_schemes_dir() / "nonpoly.json");
+    quad.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto at = quad.find("\"polygon_rules\"");
+  REQUIRE(at != std::string::npos);
+  quad.replace(at, 15, "\"polygon_rule\"");
+  expect_failure("--scheme " + write_scheme(dir, "typo", quad).string() + " --n 2 --valence 3",
+                 "polygon_rule: is not a field of a quad scheme", out);
+  // A parameter named like something the formulas already mean (the valence v, the function cos2pi).
+  expect_failure("--scheme " + write_scheme(dir, "cos", R"({"format": "stencilgen-scheme", "version": 1, "name": "x", "type": "curve-uniform", "arity": 2, "parameters": {"cos2pi": "1"}, "mask": {"first": -1, "coefficients": ["1/2", "1", "1/2"]}})").string() + " --n 2",
+                 "'cos2pi' is a name of the formulas", out);
   fs::remove_all(dir);
 }
 

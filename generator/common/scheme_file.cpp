@@ -1,6 +1,8 @@
 #include "common/scheme_file.hpp"
 
 #include <cctype>
+#include <map>
+#include <set>
 
 #include "base/error.hpp"
 #include "base/limits.hpp"
@@ -51,8 +53,21 @@ json parse_scheme_document(const std::string& text, const SchemeContext& ctx) {
   ctx.integer(ctx.require(doc, "version", ""), "version", 1, 1);
   const std::string& name = ctx.string(ctx.require(doc, "name", ""), "name");
   if (!is_scheme_name(name)) ctx.fail("name", "'" + excerpt(name) + "' is not a scheme name: " + kSchemeNameRule);
-  ctx.string(ctx.require(doc, "type", ""), "type");
+  const std::string& type = ctx.string(ctx.require(doc, "type", ""), "type");
   if (doc.contains("description")) ctx.string(doc["description"], "description");
+  // A field no loader reads is refused, not ignored: a misspelt optional one
+  // ("polygon_rule") would otherwise give another scheme without a word.
+  static const std::map<std::string, std::set<std::string>> own = {
+      {"curve-uniform", {"arity", "mask"}},
+      {"curve-columns", {"arity", "mask", "left_mask", "right_mask", "special_columns"}},
+      {"curve-knots", {"degree", "knot_spacing"}},
+      {"quad", {"regular_curve", "rules", "valences", "polygon_rules"}},
+      {"triangle", {"refinement", "rules", "valences", "crease_curve"}}};
+  if (const auto it = own.find(type); it != own.end())
+    for (const auto& [key, value] : doc.items())
+      if (!it->second.count(key) && key != "format" && key != "version" && key != "name" && key != "type" &&
+          key != "description" && key != "parameters")
+        ctx.fail(key, "is not a field of a " + type + " scheme (docs/scheme-format.md)");
   return doc;
 }
 
@@ -75,6 +90,12 @@ Bindings resolve_parameters(const json& doc, const std::vector<std::string>& ove
       if (!is_parameter_name(key))
         ctx.fail(field, "'" + excerpt(key) + "' is not a parameter name (a letter or '_', then letters, digits and '_'; at most " +
                             std::to_string(limits::kMaxNameLength) + " characters)");
+      // Names the formulas give a meaning of their own: a parameter so named would be shadowed, or shadow it.
+      const std::string type = doc.contains("type") && doc["type"].is_string() ? doc["type"].get<std::string>() : "";
+      if (key == "cos2pi" || (key == "v" && (type == "quad" || type == "triangle")))
+        ctx.fail(field, "'" + key + "' is a name of the formulas (" +
+                            (key == "v" ? std::string("the valence in rule formulas") : std::string("the function cos2pi")) +
+                            "); give the parameter another name");
       params[key] = ctx.rational(value, field, {});
     }
   }
