@@ -152,7 +152,7 @@ TEST_CASE("library exceptions on scheme files become messages that name the file
   fs::remove_all(dir);
 }
 
-TEST_CASE("deep nesting is refused while parsing, with the limit named", "[hostile]") {
+TEST_CASE("deep nesting and repeated keys are refused while parsing, naming the limit or the key", "[hostile]") {
   const fs::path dir = scratch_dir("hostile-nesting");
   const std::string out = " --n 3 --out " + (dir / "out").string();
   // 60,000 parentheses used to overflow the stack: the length limit refuses them first.
@@ -167,6 +167,15 @@ TEST_CASE("deep nesting is refused while parsing, with the limit named", "[hosti
   write_json(dir / "formula.json", scheme);
   expect_refusal(dir, "--scheme " + (dir / "formula.json").string() + out,
                  {"formula.json: mask.coefficients[0]: ", "nested more than 64 levels deep"});
+  // A field given twice in a scheme file, and in a table given to verify.
+  std::string twice = fourpoint_scheme().dump();
+  twice.insert(twice.size() - 1, ", \"mask\": {}");
+  write_text(dir / "twice.json", twice);
+  expect_refusal(dir, "--scheme " + (dir / "twice.json").string() + out, {"twice.json: mask: the key appears twice"});
+  twice = read_text(curve_table());
+  twice.insert(twice.rfind('}'), ", \"arity\": 2");
+  write_text(dir / "twice-table.json", twice);
+  expect_refusal(dir, "verify " + (dir / "twice-table.json").string(), {"twice-table.json: arity: the key appears twice"});
   // A deeply nested array in a scheme file, and in a table given to verify.
   std::string text = fourpoint_scheme().dump();
   text.insert(text.size() - 1, ", \"extra\": " + std::string(100000, '[') + std::string(100000, ']'));

@@ -95,7 +95,7 @@ TEST_CASE("rate and valence specs: limits named, numbers of any length read with
                     Catch::Contains("rate n = 129 is outside 1..128 (the largest rate for surface schemes)"));
 }
 
-TEST_CASE("JSON documents: nesting checked while parsing, fields read with their type and range", "[limits]") {
+TEST_CASE("JSON documents: nesting and repeated keys checked while parsing, fields read with their type and range", "[limits]") {
   using nlohmann::json;
   const std::string at_limit = std::string(limits::kMaxJsonDepth, '[') + std::string(limits::kMaxJsonDepth, ']');
   CHECK(sg::parse_json_document<json>(at_limit, "f.json").is_array());
@@ -104,6 +104,12 @@ TEST_CASE("JSON documents: nesting checked while parsing, fields read with their
   std::string objects;
   for (int i = 0; i < 100000; ++i) objects += "{\"a\":";
   CHECK_THROWS_WITH(sg::parse_json_document<nlohmann::ordered_json>(objects, "f.json"), Catch::Contains("nested deeper than 32"));
+  // A key given twice in one object is refused, naming its path; the same key in different objects is fine.
+  CHECK_THROWS_WITH(sg::parse_json_document<json>(R"({"a": 1, "a": 1})", "f.json"),
+                    Catch::Equals("f.json: a: the key appears twice in its object (which value is meant is ambiguous)"));
+  CHECK_THROWS_WITH(sg::parse_json_document<nlohmann::ordered_json>(R"({"a": 1, "b": {"c": [1, [2], {"d": 1, "e": 2, "d": 3}]}})", "f.json"),
+                    Catch::StartsWith("f.json: b.c[2].d: the key appears twice"));
+  CHECK(sg::parse_json_document<json>(R"({"a": {"x": 1}, "b": [{"x": 1}, {"x": 2}], "x": 3})", "f.json")["x"] == 3);
   CHECK_THROWS_WITH(sg::parse_json_document<json>("{\"a\": 1e999}", "f.json"),
                     Catch::Equals("f.json: not valid JSON: number overflow parsing '1e999'"));
   CHECK_THROWS_WITH(sg::parse_json_document<json>("{\"a\": }", "f.json"),

@@ -207,7 +207,7 @@ TEST_CASE("a generated limit stencil that does not sum to 1 is refused at load",
   fs::remove_all(dir);
 }
 
-TEST_CASE("exact JSON tables are read strictly: names, reflections, grid keys, nesting", "[runtime][robustness]") {
+TEST_CASE("exact JSON tables are read strictly: names, reflections, grid keys, repeated keys, nesting", "[runtime][robustness]") {
   const fs::path dir = scratch_dir("robust-json");
   REQUIRE(run_stencilgen("--scheme nonpoly --valence 3 --n 1-2 --out " + dir.string() + " -q").status == 0);
   const fs::path tables = dir / "nonpoly";
@@ -256,6 +256,21 @@ TEST_CASE("exact JSON tables are read strictly: names, reflections, grid keys, n
   edit(table, [](nlohmann::json& d) { d["centres"][0]["denominator"] = "0"; });
   CHECK_THROWS_WITH(Tables::load(tables.string()), Catch::Contains("zero denominator"));
   restore();
+  // A key given twice: the JSON library would keep one value without a word.
+  {
+    std::string twice = original;
+    twice.insert(twice.rfind('}'), ", \"reflection\": []");
+    write_file(table, twice);
+    CHECK_THROWS_WITH(Tables::load(tables.string()), Catch::Contains("n2.json: reflection: the key appears twice"));
+    nlohmann::json doc = nlohmann::json::parse(original);
+    std::string inner = doc.dump();
+    const std::size_t centres = inner.find("\"centres\":[{");
+    REQUIRE(centres != std::string::npos);
+    inner.insert(centres + 12, "\"denominator\":\"1\",");
+    write_file(table, inner);
+    CHECK_THROWS_WITH(Tables::load(tables.string()), Catch::Contains("n2.json: centres[0].denominator: the key appears twice"));
+    restore();
+  }
   // Deep nesting is refused before it is built.
   write_file(table, std::string(100000, '[') + std::string(100000, ']'));
   CHECK_THROWS_WITH(Tables::load(tables.string()), Catch::Contains("nested deeper than"));

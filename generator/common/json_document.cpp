@@ -4,6 +4,8 @@
 #include <cctype>
 #include <limits>
 #include <string_view>
+#include <unordered_set>
+#include <vector>
 
 #include "base/error.hpp"
 #include "base/limits.hpp"
@@ -18,20 +20,51 @@ std::string without_tag(const char* what) {
   return std::string(text.starts_with("[json.exception.") && end != std::string_view::npos ? text.substr(end + 2) : text);
 }
 
+// The open arrays and objects while a document is parsed, to name where a key
+// repeats: the JSON library keeps one of the two values without a word, so a
+// scheme file or table that says a thing twice would mean whichever it kept.
+struct OpenContainer {
+  bool array = false;
+  std::size_t elements = 0;             // arrays: elements begun so far
+  std::string key;                      // objects: the key whose value is being read
+  std::unordered_set<std::string> keys;  // objects: the keys seen so far
+};
+
+std::string open_path(const std::vector<OpenContainer>& open) {
+  std::string path;
+  for (const OpenContainer& c : open)
+    path = c.array ? field_path(path, c.elements - 1) : field_path(path, c.key);
+  return path;
+}
+
 }  // namespace
 
 template <class Json>
 Json parse_json_document(const std::string& text, const std::string& origin) {
+  using Event = typename Json::parse_event_t;
+  std::vector<OpenContainer> open;
   // `depth` is the number of open arrays and objects around the value that starts.
-  const typename Json::parser_callback_t limit_depth = [&origin](int depth, typename Json::parse_event_t event, Json&) {
-    if ((event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start) &&
-        depth >= limits::kMaxJsonDepth)
+  const typename Json::parser_callback_t check = [&origin, &open](int depth, Event event, Json& parsed) {
+    const bool starts = event == Event::object_start || event == Event::array_start;
+    if (starts && depth >= limits::kMaxJsonDepth)
       throw Error(origin + ": arrays and objects nested deeper than " + std::to_string(limits::kMaxJsonDepth) +
                   " levels (the limit for JSON documents)");
+    if ((starts || event == Event::value) && !open.empty() && open.back().array) ++open.back().elements;
+    if (starts) {
+      open.emplace_back();
+      open.back().array = event == Event::array_start;
+    } else if (event == Event::object_end || event == Event::array_end) {
+      open.pop_back();
+    } else if (event == Event::key) {
+      OpenContainer& object = open.back();
+      object.key = parsed.template get<std::string>();
+      if (!object.keys.insert(object.key).second)
+        throw Error(origin + ": " + open_path(open) + ": the key appears twice in its object (which value is meant is ambiguous)");
+    }
     return true;
   };
   try {
-    return Json::parse(text, limit_depth);
+    return Json::parse(text, check);
   } catch (const typename Json::exception& e) {
     throw Error(origin + ": not valid JSON: " + without_tag(e.what()));
   }

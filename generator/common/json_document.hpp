@@ -15,7 +15,9 @@ namespace sg {
 // sg::Error "ORIGIN: not valid JSON: ..." (with the line and column) or, for
 // nesting deeper than limits::kMaxJsonDepth, "ORIGIN: ... nested deeper than
 // ..."; the depth is checked while parsing, so nothing that walks a document
-// recursively (copies, dumps) ever sees a deeper one.
+// recursively (copies, dumps) ever sees a deeper one. A key that appears twice
+// in one object is refused too, naming its path ("ORIGIN: rules.edge: the key
+// appears twice ...").
 template <class Json>
 Json parse_json_document(const std::string& text, const std::string& origin);
 

@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <unordered_set>
+#include <vector>
 
 #include "binary_reader.hpp"
 
@@ -9,17 +11,58 @@ namespace stencil_runtime::detail {
 
 using nlohmann::json;
 
+namespace {
+
+// The open arrays and objects while a table file is parsed, to name where a key
+// repeats (the JSON library would keep one of the two values without a word).
+struct OpenContainer {
+  bool array = false;
+  std::size_t elements = 0;             // arrays: elements begun so far
+  std::string key;                      // objects: the key whose value is being read
+  std::unordered_set<std::string> keys;  // objects: the keys seen so far
+};
+
+std::string open_path(const std::vector<OpenContainer>& open) {
+  std::string path;
+  for (const OpenContainer& c : open) {
+    if (c.array) {
+      path += "[" + std::to_string(c.elements - 1) + "]";
+    } else {
+      if (!path.empty()) path += ".";
+      path += c.key;
+    }
+  }
+  return path;
+}
+
+}  // namespace
+
 JsonFile::JsonFile(std::string path) : path_(std::move(path)) {
   const std::string text = read_table_file(path_);
   // The callback sees every nesting step before the parser recurses into it.
   int too_deep = 0;
-  const json::parser_callback_t limit_depth = [&](int depth, json::parse_event_t event, json&) {
-    if ((event == json::parse_event_t::object_start || event == json::parse_event_t::array_start) && depth >= kMaxJsonDepth)
-      too_deep = 1;
-    return too_deep == 0;
+  std::vector<OpenContainer> open;
+  const json::parser_callback_t check = [&](int depth, json::parse_event_t event, json& parsed) {
+    using Event = json::parse_event_t;
+    const bool starts = event == Event::object_start || event == Event::array_start;
+    if (starts && depth >= kMaxJsonDepth) too_deep = 1;
+    if (too_deep) return false;
+    if ((starts || event == Event::value) && !open.empty() && open.back().array) ++open.back().elements;
+    if (starts) {
+      open.emplace_back();
+      open.back().array = event == Event::array_start;
+    } else if (event == Event::object_end || event == Event::array_end) {
+      open.pop_back();
+    } else if (event == Event::key) {
+      OpenContainer& object = open.back();
+      object.key = parsed.get<std::string>();
+      if (!object.keys.insert(object.key).second)
+        throw LoadError(path_ + ": " + open_path(open) + ": the key appears twice in its object (which value is meant is ambiguous)");
+    }
+    return true;
   };
   try {
-    doc_ = json::parse(text, limit_depth);
+    doc_ = json::parse(text, check);
   } catch (const json::exception& e) {
     throw LoadError(path_ + ": not valid JSON: " + e.what());
   }

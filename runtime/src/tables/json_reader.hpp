@@ -17,7 +17,7 @@ inline constexpr int kMaxJsonDepth = 16;
 class JsonFile {
  public:
   // Reads and parses `path` (a regular file of at most limits::kMaxTableFileBytes,
-  // nested at most kMaxJsonDepth levels).
+  // nested at most kMaxJsonDepth levels, no object repeating a key).
   explicit JsonFile(std::string path);
   const nlohmann::json& root() const { return doc_; }
   const std::string& path() const { return path_; }
