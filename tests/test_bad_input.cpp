@@ -97,6 +97,64 @@ TEST_CASE("unknown schemes, bad rates and bad parameters are refused") {
   fs::remove_all(dir);
 }
 
+TEST_CASE("the schemes directory: names agree with files, list and lookups agree, a missing directory is an error") {
+  const fs::path dir = scratch_dir("registry");
+  const fs::path schemes = dir / "schemes", out = dir / "out";
+  fs::create_directories(schemes);
+  fs::copy_file(sg::default_schemes_dir() / "fourpoint.json", schemes / "fourpoint.json");
+  // A copy saved under another name but still named "fourpoint" inside would write fourpoint's tables.
+  fs::copy_file(sg::default_schemes_dir() / "fourpoint.json", schemes / "mine.json");
+  std::ofstream(schemes / "broken.json") << "{";
+  const std::string env = "STENCILGEN_SCHEMES_DIR=" + schemes.string() + " ";
+  CliResult r = run_command(env + stencilgen_exe(), "--scheme mine --n 2 --out " + out.string());
+  INFO(r.output);
+  CHECK(r.status == 1);
+  CHECK(r.output.find("mine.json: name: 'fourpoint' differs from the file's name 'mine'") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+  // By path the file's name does not matter: the tables are named by the field.
+  r = run_stencilgen("--scheme " + (schemes / "mine.json").string() + " --n 2 -q --out " + out.string());
+  CHECK(r.status == 0);
+  CHECK(fs::exists(out / "fourpoint"));
+  fs::remove_all(out);
+  // The listing and the "available" list of an unknown name agree: only loadable schemes, the others with the reason.
+  r = run_command(env + stencilgen_exe(), "list");
+  CHECK(r.status == 0);
+  CHECK(r.output.find("  fourpoint (curve)") != std::string::npos);
+  CHECK(r.output.find("  mine (curve)") == std::string::npos);
+  CHECK(r.output.find("mine.json: ") != std::string::npos);
+  CHECK(r.output.find("broken.json: ") != std::string::npos);
+  r = run_command(env + stencilgen_exe(), "--scheme nope --n 2 --out " + out.string());
+  CHECK(r.status == 1);
+  CHECK(r.output.find("available: fourpoint\n") != std::string::npos);
+  // A directory that is not there is an error, for list and for a lookup.
+  const std::string gone = "STENCILGEN_SCHEMES_DIR=" + (dir / "gone").string() + " ";
+  r = run_command(gone + stencilgen_exe(), "list");
+  CHECK(r.status == 1);
+  CHECK(r.output.find("schemes directory " + (dir / "gone").string() + ": No such file or directory") != std::string::npos);
+  r = run_command(gone + stencilgen_exe(), "--scheme fourpoint --n 2 --out " + out.string());
+  CHECK(r.status == 1);
+  CHECK(r.output.find("No such file or directory") != std::string::npos);
+  // Something that is not a regular file is named as such, not as missing.
+  r = run_stencilgen("--scheme /dev/null --n 2 --out " + out.string());
+  CHECK(r.status == 1);
+  CHECK(r.output.find("/dev/null: not a regular file") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a control character in a quoted value is shown escaped, not ending the message") {
+  const fs::path dir = scratch_dir("control-chars");
+  std::string body = uniform("-1", R"("1/2", "1", "1/2")");
+  body.replace(body.find("\"bad\""), 5, std::string("\"ab\\u0000cd\\u001b[31m\""));
+  const fs::path file = write_scheme(dir, "nul", body);
+  const CliResult r = run_stencilgen("--scheme " + file.string() + " --n 2 --out " + (dir / "out").string());
+  INFO(r.output);
+  CHECK(r.status == 1);
+  CHECK(r.output.find("'ab\\x00cd\\x1b[31m' is not a scheme name") != std::string::npos);
+  CHECK(r.output.find('\0') == std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("a scheme not shown to converge gets a warning even with -q and shipped ones do not") {
   const fs::path dir = scratch_dir("divergent");
   // The four-point scheme with w = 1: its difference scheme is not contractive.

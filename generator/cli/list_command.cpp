@@ -1,4 +1,6 @@
-// stencilgen list: the schemes in the schemes directory, by family.
+// stencilgen list: the schemes in the schemes directory, by family, and the
+// files there that cannot be used, with the reason (the same test `--scheme`
+// applies, so every name listed as a scheme loads).
 #include <iostream>
 
 #include "cli/commands.hpp"
@@ -8,11 +10,20 @@ namespace sg::cli {
 
 int list() {
   const auto dir = default_schemes_dir();
+  const std::vector<SchemeEntry> entries = scheme_catalogue(dir);
   std::cout << "schemes in " << dir.string() << ":\n";
-  for (const auto& name : available_schemes(dir, SchemeFamily::Curve)) std::cout << "  " << name << " (curve)\n";
-  for (const auto& name : available_schemes(dir, SchemeFamily::Quad)) std::cout << "  " << name << " (quad surface)\n";
-  for (const auto& name : available_schemes(dir, SchemeFamily::Triangle))
-    std::cout << "  " << name << " (triangle surface)\n";
+  const std::pair<SchemeFamily, const char*> families[] = {
+      {SchemeFamily::Curve, "curve"}, {SchemeFamily::Quad, "quad surface"}, {SchemeFamily::Triangle, "triangle surface"}};
+  for (const auto& [family, what] : families)
+    for (const SchemeEntry& e : entries)
+      if (e.problem.empty() && e.family == family) std::cout << "  " << e.name << " (" << what << ")\n";
+  bool header = false;
+  for (const SchemeEntry& e : entries) {
+    if (e.problem.empty()) continue;
+    if (!header) std::cout << "files there that are not usable schemes:\n";
+    header = true;
+    std::cout << "  " << e.name << ".json: " << e.problem << "\n";
+  }
   return 0;
 }
 

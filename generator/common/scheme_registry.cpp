@@ -30,25 +30,41 @@ bool is_scheme_name(const std::string& name) {
   return true;
 }
 
+std::vector<SchemeEntry> scheme_catalogue(const fs::path& dir) {
+  std::vector<SchemeEntry> entries;
+  std::error_code ec;
+  fs::directory_iterator it(dir, ec);
+  const auto unreadable = [&dir](const std::error_code& e) {
+    return Error("schemes directory " + dir.string() + ": " + e.message() +
+                 " (STENCILGEN_SCHEMES_DIR, when set, names the folder that holds the scheme files)");
+  };
+  if (ec) throw unreadable(ec);
+  for (; it != fs::directory_iterator(); it.increment(ec)) {
+    if (ec) throw unreadable(ec);
+    if (it->path().extension() != ".json") continue;
+    SchemeEntry entry;
+    entry.name = it->path().stem().string();
+    try {
+      const SchemeContext ctx(it->path().string());
+      const json doc = read_scheme_document(it->path(), ctx);
+      const std::string type = doc.at("type").get<std::string>();
+      entry.family = type == "quad" ? SchemeFamily::Quad : type == "triangle" ? SchemeFamily::Triangle : SchemeFamily::Curve;
+      check_scheme_file_name(entry.name, doc.at("name").get<std::string>(), it->path());
+    } catch (const std::exception& e) {
+      entry.family = SchemeFamily::Any;
+      entry.problem = e.what();
+    }
+    entries.push_back(std::move(entry));
+  }
+  if (ec) throw unreadable(ec);
+  std::sort(entries.begin(), entries.end(), [](const SchemeEntry& a, const SchemeEntry& b) { return a.name < b.name; });
+  return entries;
+}
+
 std::vector<std::string> available_schemes(const fs::path& dir, SchemeFamily family) {
   std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    if (entry.path().extension() != ".json") continue;
-    if (family != SchemeFamily::Any) {
-      std::string type;
-      try {
-        const SchemeContext ctx(entry.path().string());
-        type = read_scheme_document(entry.path(), ctx).at("type").get<std::string>();
-      } catch (const Error&) {
-        continue;  // unreadable or invalid files belong to no family; loading them reports why
-      }
-      const SchemeFamily of = type == "quad" ? SchemeFamily::Quad : type == "triangle" ? SchemeFamily::Triangle : SchemeFamily::Curve;
-      if (of != family) continue;
-    }
-    names.push_back(entry.path().stem().string());
-  }
-  std::sort(names.begin(), names.end());
+  for (const SchemeEntry& entry : scheme_catalogue(dir))
+    if (entry.problem.empty() && (family == SchemeFamily::Any || entry.family == family)) names.push_back(entry.name);
   return names;
 }
 
@@ -63,12 +79,20 @@ fs::path resolve_scheme_file(const std::string& spec, const fs::path& dir) {
   const bool found = fs::is_regular_file(file, ec);
   if (ec && ec != std::errc::no_such_file_or_directory) throw Error(excerpt(spec) + ": " + ec.message());
   if (!found) {
+    if (fs::exists(file, ec)) throw Error(excerpt(spec) + ": not a regular file (a scheme file is a JSON file)");
     if (is_path) throw Error(excerpt(spec) + ": no such scheme file");
     std::string list;
     for (const auto& n : available_schemes(dir)) list += (list.empty() ? "" : ", ") + n;
     throw Error("unknown scheme '" + spec + "' (no " + file.string() + "); available: " + list);
   }
   return file;
+}
+
+void check_scheme_file_name(const std::string& spec, const std::string& name, const fs::path& file) {
+  const bool is_path = spec.find('/') != std::string::npos || spec.ends_with(".json");
+  if (is_path || name == spec) return;
+  throw Error(file.string() + ": name: '" + excerpt(name) + "' differs from the file's name '" + excerpt(spec) +
+              "' (the scheme is found by its file's name and its tables are named by this field: make them agree)");
 }
 
 std::string scheme_type(const std::string& spec, const fs::path& dir) {

@@ -128,7 +128,9 @@ void build_from_knots(CurveScheme& s, const KnotSpec& spec, const Context& ctx) 
 
 CurveScheme load_curve_scheme(const std::string& spec, const std::vector<std::string>& overrides, const fs::path& dir) {
   const fs::path file = resolve_scheme_file(spec, dir);
-  return curve_scheme_from_json(read_file(file, limits::kMaxSchemeFileBytes, "scheme"), file.string(), overrides);
+  CurveScheme scheme = curve_scheme_from_json(read_file(file, limits::kMaxSchemeFileBytes, "scheme"), file.string(), overrides);
+  check_scheme_file_name(spec, scheme.name, file);
+  return scheme;
 }
 
 CurveScheme curve_scheme_from_json(const std::string& text, const std::string& origin,

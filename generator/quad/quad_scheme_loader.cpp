@@ -75,8 +75,10 @@ void load_polygon_rules(QuadScheme& q, const json& p, const SchemeContext& ctx) 
 
 QuadScheme load_quad_scheme(const std::string& spec, const std::vector<std::string>& overrides, const fs::path& dir) {
   const fs::path file = resolve_scheme_file(spec, dir);
-  return quad_scheme_from_json(read_file(file, limits::kMaxSchemeFileBytes, "scheme"), file.string(), overrides,
-                               file.has_parent_path() ? file.parent_path() : dir);
+  QuadScheme scheme = quad_scheme_from_json(read_file(file, limits::kMaxSchemeFileBytes, "scheme"), file.string(), overrides,
+                                             file.has_parent_path() ? file.parent_path() : dir);
+  check_scheme_file_name(spec, scheme.name, file);
+  return scheme;
 }
 
 QuadScheme quad_scheme_from_json(const std::string& text, const std::string& origin,

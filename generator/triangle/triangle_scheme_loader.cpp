@@ -47,8 +47,10 @@ void load_crease_curve(TriangleScheme& s, const json& doc, const SchemeContext& 
 TriangleScheme load_triangle_scheme(const std::string& spec, const std::vector<std::string>& overrides,
                                     const fs::path& dir) {
   const fs::path file = resolve_scheme_file(spec, dir);
-  return triangle_scheme_from_json(read_file(file, limits::kMaxSchemeFileBytes, "scheme"), file.string(), overrides,
-                                   file.has_parent_path() ? file.parent_path() : dir);
+  TriangleScheme scheme = triangle_scheme_from_json(read_file(file, limits::kMaxSchemeFileBytes, "scheme"), file.string(),
+                                                     overrides, file.has_parent_path() ? file.parent_path() : dir);
+  check_scheme_file_name(spec, scheme.name, file);
+  return scheme;
 }
 
 TriangleScheme triangle_scheme_from_json(const std::string& text, const std::string& origin,
