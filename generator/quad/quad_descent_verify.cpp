@@ -28,12 +28,10 @@ Real decimal(const DocumentReader<ojson>& r, const ojson& j, const std::string& 
   }
 }
 
-// The boundary sectors (version 3): rows and the limit stencil re-derived and
-// compared exactly, the limit checked as a fixed point of the file's own A0, the
-// tangent stencils compared with a fresh solve and checked to span a plane
-// that the file's A0 maps into itself (their combinations are left eigenvectors).
-std::vector<BoundarySector> verify_sectors(const DocumentReader<ojson>& r, const ojson& sectors, const QuadScheme& scheme,
-                                          std::vector<std::string>& failures) {
+// Which boundary sectors the file lists (version 3), each entry's kind, faces
+// and position checked: read before anything is solved, so that one solve of
+// the listed valences and sectors serves every comparison.
+std::vector<BoundarySector> listed_sectors(const DocumentReader<ojson>& r, const ojson& sectors, const QuadScheme& scheme) {
   std::vector<BoundarySector> listed;
   for (std::size_t k = 0; k < sectors.size(); ++k) {
     const std::string field = field_path("sectors", k);
@@ -49,8 +47,22 @@ std::vector<BoundarySector> verify_sectors(const DocumentReader<ojson>& r, const
     sector.position = static_cast<int>(r.integer(r.require(e, "position", field), field_path(field, "position"), 0,
                                                  sector.kind == SectorKind::Cone ? 0 : sector.faces - 1));
     listed.push_back(sector);
-    const QuadDescent fresh = quad_descent(scheme, {}, {sector});
-    const QuadDescent::Sector& d = fresh.sectors.front();
+  }
+  return listed;
+}
+
+// The boundary sectors: rows and the limit stencil compared exactly with
+// `fresh` (the same sectors solved anew, in the file's order), the limit
+// checked as a fixed point of the file's own A0, the tangent stencils compared
+// with the fresh ones and checked to span a plane that the file's A0 maps into
+// itself (their combinations are left eigenvectors).
+void verify_sectors(const DocumentReader<ojson>& r, const ojson& sectors, const std::vector<BoundarySector>& listed,
+                    const std::vector<QuadDescent::Sector>& fresh, std::vector<std::string>& failures) {
+  for (std::size_t k = 0; k < sectors.size(); ++k) {
+    const std::string field = field_path("sectors", k);
+    const ojson& e = sectors[k];
+    const BoundarySector& sector = listed[k];
+    const QuadDescent::Sector& d = fresh[k];
     const std::size_t points = d.subdivision.points;
     const std::string where = sector.name();
     if (r.integer(r.require(e, "points", field), field_path(field, "points"), 1, 1 << 20) != static_cast<long>(points))
@@ -115,7 +127,6 @@ std::vector<BoundarySector> verify_sectors(const DocumentReader<ojson>& r, const
         failures.push_back(where + ": the tangent stencils do not span a plane that A0 keeps (residual " + to_string(residual, 3) + ")");
     }
   }
-  return listed;
 }
 
 }  // namespace
@@ -136,10 +147,18 @@ std::vector<std::string> verify_quad_descent(const TableDocument& table, const Q
     const std::string field = field_path("valences", k);
     const int v = static_cast<int>(r.integer(r.require(valences[k], "valence", field), field_path(field, "valence"),
                                              scheme.min_valence, scheme.max_valence));
-    listed.push_back(v);
     if (v == 4) r.fail(field_path(field, "valence"), "4 is the regular patch, which has no entry");
-    const QuadDescent fresh = quad_descent(scheme, {v});
-    const QuadDescent::Valence& d = fresh.valences.front();
+    listed.push_back(v);
+  }
+  const ojson* sectors_json = version < kQuadDescentVersion ? nullptr : &r.array(r.require(doc, "sectors", ""), "sectors");
+  const std::vector<BoundarySector> sectors = sectors_json ? listed_sectors(r, *sectors_json, scheme) : std::vector<BoundarySector>{};
+  // One solve of everything the file lists: each entry is compared with its
+  // solution, and the whole re-derived document with the file's.
+  const QuadDescent fresh = quad_descent(scheme, listed, sectors);
+  for (std::size_t k = 0; k < valences.size(); ++k) {
+    const std::string field = field_path("valences", k);
+    const int v = listed[k];
+    const QuadDescent::Valence& d = fresh.valences[k];
     const std::size_t points = d.subdivision.extraordinary_child.size();
     const std::string where = "valence " + std::to_string(v);
     const auto a0 = exact_rows(r, r.require(valences[k], "ev_child", field), field_path(field, "ev_child"), points);
@@ -183,8 +202,8 @@ std::vector<std::string> verify_quad_descent(const TableDocument& table, const Q
                            to_string(residual, 3) + ")");
     }
   }
-  if (version < kQuadDescentVersion) return failures;
-  const std::vector<BoundarySector> sectors = verify_sectors(r, r.array(r.require(doc, "sectors", ""), "sectors"), scheme, failures);
+  if (!sectors_json) return failures;
+  verify_sectors(r, *sectors_json, sectors, fresh.sectors, failures);
   // The sectors are those of boundary vertices in 1..F faces (with corners, darts and cones), none left out.
   int faces = 0;
   for (const BoundarySector& s : sectors) faces = std::max(faces, s.faces);
@@ -196,11 +215,11 @@ std::vector<std::string> verify_quad_descent(const TableDocument& table, const Q
   // what no check above reads): the document re-derived for the same valences
   // and sectors equals the file's, field by field, as values (so that
   // reformatting the file is no difference).
-  const ojson fresh = ojson::parse(quad_descent_to_json(scheme, quad_descent(scheme, listed, expected)));
-  for (const auto& [key, value] : fresh.items())
+  const ojson again = ojson::parse(quad_descent_to_json(scheme, fresh));
+  for (const auto& [key, value] : again.items())
     if (!doc.contains(key) || doc[key] != value) failures.push_back(key + ": differs from the re-derived document");
   for (const auto& [key, value] : doc.items())
-    if (!fresh.contains(key)) failures.push_back(key + ": is no field of a descent document");
+    if (!again.contains(key)) failures.push_back(key + ": is no field of a descent document");
   return failures;
 }
 
