@@ -221,3 +221,43 @@ TEST_CASE("verify checks the derivatives, and the JSON keeps them exactly") {
     CHECK(std::string(e.what()).find("regenerate") != std::string::npos);
   }
 }
+
+TEST_CASE("a curve run stops once its exact tables pass the size limit, largest rates first", "[limits]") {
+  const sg::CurveScheme s = sg::load_curve_scheme("fourpoint");
+  // exact_digits against the digits of the JSON's exact strings ("p/q", or "p" with denominator 1).
+  const sg::CurveTable t = sg::generate_curve_tables(s, {7}, sg::RouteChoice::Residue)[0];
+  const nlohmann::json doc = nlohmann::json::parse(sg::curve_table_to_json(t));
+  std::uint64_t counted = 0, numbers = 0;
+  auto count = [&](const nlohmann::json& values) {
+    for (const auto& [key, value] : values.items()) {
+      const std::string text = value.get<std::string>();
+      for (char c : text) counted += std::isdigit(static_cast<unsigned char>(c)) ? 1 : 0;
+      if (text.find('/') == std::string::npos) ++counted;  // the denominator 1
+      ++numbers;
+    }
+  };
+  for (const auto& f : doc["functions"]) {
+    count(f["values"]);
+    for (const auto& d : f["derivatives"]) count(d["values"]);
+  }
+  REQUIRE(numbers > 0);
+  // GMP's digit count is exact or one too many, for numerator and denominator.
+  CHECK(sg::exact_digits(t) >= counted);
+  CHECK(sg::exact_digits(t) <= counted + 2 * numbers);
+  // With a limit a few small tables pass, the run stops naming it, and the rates done first were the largest.
+  std::vector<long> rates;
+  for (long n = 1; n <= 40; ++n) rates.push_back(n);
+  std::vector<std::string> lines;
+  // Room for n = 40 and 39, not for a third table as well.
+  const auto largest = sg::generate_curve_tables(s, {39, 40}, sg::RouteChoice::Residue);
+  const std::uint64_t limit = sg::exact_digits(largest[0]) + sg::exact_digits(largest[1]) + 1;
+  CHECK_THROWS_WITH(sg::generate_curve_tables(s, rates, sg::RouteChoice::Residue, [&](const std::string& l) { lines.push_back(l); }, limit),
+                    Catch::Contains("above the limit of " + std::to_string(limit) + " for one run"));
+  CHECK(lines.size() < 10);  // the first line names the derivatives, then a few rates
+  REQUIRE(lines.size() >= 2);
+  INFO(lines[1]);
+  CHECK((lines[1].find("n = 40 ") != std::string::npos || lines[1].find("n = 39 ") != std::string::npos));
+  for (std::size_t k = 1; k < lines.size(); ++k) CHECK(lines[k].find("n = 1 ") == std::string::npos);
+  // Within the default limit the same rates all pass.
+  CHECK(sg::generate_curve_tables(s, rates, sg::RouteChoice::Residue).size() == rates.size());
+}

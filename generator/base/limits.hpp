@@ -10,6 +10,13 @@ namespace sg::limits {
 // n = 4096 takes seconds; a surface table's stencils grow with n^2 (quad
 // n = 128 at valence 8: 2 s and 6.5 MB of JSON).
 inline constexpr long kMaxCurveRate = 4096;
+// The exact numbers of one curve run, in decimal digits (about the bytes of its
+// JSON tables; verify reads table files up to 1 GiB). The size of a curve
+// table depends on the rate's arithmetic, not only its size: fourpoint at
+// n = 4096 is 2.6 MB, at n = 4093 (2 has order 4092 mod 4093) 290 MB, and
+// every rate 1..4096 would be over 100 GB. Rates run largest first and the
+// run stops, naming this limit, once its tables pass it.
+inline constexpr long kMaxCurveRunDigits = 1L << 30;
 inline constexpr long kMaxSurfaceRate = 128;  // quad and triangle schemes
 
 // Valences (--valence, a scheme's "valences", a table's "valence"). The runtime

@@ -83,4 +83,19 @@ CurveSolution table_to_solution(const CurveTable& table, const CurveScheme& sche
   return sol;
 }
 
+std::uint64_t exact_digits(const CurveTable& table) {
+  std::uint64_t digits = 0;
+  const auto add = [&digits](const std::map<long, Rational>& values) {
+    for (const auto& [k, r] : values) {
+      const mpq_srcptr q = r.backend().data();
+      digits += mpz_sizeinbase(mpq_numref(q), 10) + mpz_sizeinbase(mpq_denref(q), 10);
+    }
+  };
+  for (const CurveTable::Function& f : table.functions) {
+    add(f.values);
+    for (const auto& d : f.derivatives) add(d);
+  }
+  return digits;
+}
+
 }  // namespace sg

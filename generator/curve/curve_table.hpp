@@ -2,6 +2,7 @@
 // One scheme at one rate n: the exact values of every scaling function on (1/n)Z,
 // with the identity of the scheme that produced them. Serialised as exact JSON
 // (curve_table_json) and compact binary (curve_table_binary); see docs/table-format.md.
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -47,5 +48,12 @@ void add_first_derivative(CurveTable& table, const CurveSolution& derivative, co
 CurveSolution table_to_solution(const CurveTable& table, const CurveScheme& scheme, int order = 0);
 
 const char* placement_name(Placement p);
+
+// Decimal digits of the table's exact numbers (numerators and denominators of
+// every value and derivative value): the bulk of its JSON, and of the memory
+// it holds. A rate n whose base-`arity` expansions of k/n have a long period
+// makes denominators of that many digits, so this grows with n times the
+// period (fourpoint at n = 4093: about 1.8e8), while a spline's stays small.
+std::uint64_t exact_digits(const CurveTable& table);
 
 }  // namespace sg

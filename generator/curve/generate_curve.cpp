@@ -1,6 +1,10 @@
 #include "curve/generate_curve.hpp"
 
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <mutex>
+#include <tbb/task_arena.h>
 #include <tbb/parallel_for.h>
 
 #include "base/error.hpp"
@@ -19,7 +23,8 @@ namespace sg {
 
 std::vector<CurveTable> generate_curve_tables(const CurveScheme& scheme, const std::vector<long>& rates,
                                               RouteChoice routes,
-                                              const std::function<void(const std::string&)>& progress) {
+                                              const std::function<void(const std::string&)>& progress,
+                                              std::uint64_t max_digits) {
   check_rates(rates, limits::kMaxCurveRate, "the largest rate for curve schemes");
   std::vector<CurveTable> tables(rates.size());
   const bool uniform = scheme.is_uniform();
@@ -34,6 +39,7 @@ std::vector<CurveTable> generate_curve_tables(const CurveScheme& scheme, const s
              (stop.empty() ? "" : "; " + stop));
   std::mutex report;
   std::size_t done = 0;
+  std::uint64_t digits = 0;  // of the tables made so far (under `report`)
   // One scheme at one rate by the chosen route(s), both compared for exact equality.
   auto solve = [&](const CurveScheme& s, long n) {
     CurveSolution sol = routes == RouteChoice::Eigen ? solve_by_eigenvector(s, n) : solve_by_residues(s, n);
@@ -42,7 +48,7 @@ std::vector<CurveTable> generate_curve_tables(const CurveScheme& scheme, const s
                   ": the residue-class route and the eigenvector route disagree (a generator bug; please report)");
     return sol;
   };
-  tbb::parallel_for(std::size_t(0), rates.size(), [&](std::size_t i) {
+  auto make = [&](std::size_t i) {
     const long n = rates[i];
     tables[i] = make_table(scheme, solve(scheme, n));
     std::vector<CurveSolution> psi;
@@ -60,13 +66,41 @@ std::vector<CurveTable> generate_curve_tables(const CurveScheme& scheme, const s
     const auto failures = verify_curve_table(tables[i], scheme);
     if (!failures.empty())
       throw Error("scheme '" + scheme.name + "', n = " + std::to_string(n) + ": verification failed: " + failures.front());
+    const std::uint64_t own = exact_digits(tables[i]);
+    std::lock_guard lock(report);
+    digits += own;
+    if (digits > max_digits)
+      throw Error("scheme '" + scheme.name + "': the tables of the rates made so far hold " + std::to_string(digits) +
+                  " decimal digits of exact numbers (n = " + std::to_string(n) + " alone " + std::to_string(own) +
+                  "), above the limit of " + std::to_string(max_digits) +
+                  " for one run; ask for fewer rates, or rates whose expansions in base " + std::to_string(scheme.arity) +
+                  " have short periods (powers of the arity, or n dividing a small power of it minus 1)");
     if (progress) {
-      std::lock_guard lock(report);
       ++done;
       progress(scheme.name + ": n = " + std::to_string(n) + " solved and verified (" + std::to_string(done) + "/" +
                std::to_string(rates.size()) + ")");
     }
-  });
+  };
+  // Largest rates first, each worker taking the next one when it is free (a
+  // parallel_for over the rates would hand half of them, the small half, to
+  // the second worker): the largest tables come first, so a request beyond
+  // the size limit stops early, and the last jobs to finish are short.
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  const int workers = std::max(1, tbb::this_task_arena::max_concurrency());
+  tbb::parallel_for(
+      0, workers,
+      [&](int) {
+        for (std::size_t job; !failed && (job = next++) < rates.size();) {
+          try {
+            make(rates.size() - 1 - job);
+          } catch (...) {
+            failed = true;
+            throw;
+          }
+        }
+      },
+      tbb::simple_partitioner());
   return tables;
 }
 

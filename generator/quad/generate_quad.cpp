@@ -52,7 +52,7 @@ QuadTableSet generate_quad_tables(const QuadScheme& scheme, const std::vector<in
   for (int v : valences) scheme.vertex_rule(v);  // range check with the scheme's own message
   check_rates(rates, limits::kMaxSurfaceRate, "the largest rate for surface schemes");
   QuadTableSet set;
-  set.descent = std::make_shared<const QuadDescent>(quad_descent(scheme, valences, sectors_for(valences, rates, progress)));
+  set.descent = std::make_shared<const QuadDescent>(quad_descent(scheme, valences, sectors_for(valences, rates, progress), progress));
   set.rates = rates;
   set.valences = valences;
   set.regular.resize(rates.size());

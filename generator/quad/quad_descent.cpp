@@ -1,6 +1,8 @@
 #include "quad/quad_descent.hpp"
 
 #include <algorithm>
+#include <iterator>
+#include <mutex>
 
 #include <tbb/parallel_for.h>
 
@@ -25,7 +27,8 @@ bool nonnegative(const PatchSubdivision& s) {
 }  // namespace
 
 QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valences,
-                         const std::vector<BoundarySector>& sectors) {
+                         const std::vector<BoundarySector>& sectors,
+                         const std::function<void(const std::string&)>& progress) {
   const CurveScheme& curve = scheme.curve;
   if (!curve.is_uniform() || curve.arity != 2) throw Error("internal: a quad scheme's regular curve must be uniform and binary");
   QuadDescent out;
@@ -45,13 +48,25 @@ QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valen
   const bool divides = out.mask.back() == carry;
   out.derivative_nonnegative = divides && std::all_of(b.begin(), b.end(), [](const Rational& x) { return x >= 0; });
   out.pieces = polynomial_pieces(curve);
-  for (int v : valences) {
-    if (v == 4) continue;
-    QuadDescent::Valence d{v, build_patch_subdivision(scheme, v), false, std::nullopt, ""};
+  std::vector<int> extraordinary;
+  std::copy_if(valences.begin(), valences.end(), std::back_inserter(extraordinary), [](int v) { return v != 4; });
+  std::mutex report;
+  std::size_t done = 0;
+  out.valences.resize(extraordinary.size());
+  tbb::parallel_for(std::size_t(0), extraordinary.size(), [&](std::size_t k) {
+    const int v = extraordinary[k];
+    QuadDescent::Valence& d = out.valences[k];
+    d.valence = v;
+    d.subdivision = build_patch_subdivision(scheme, v);
     d.tangents = ev_tangents(scheme, v, d.subdivision, d.no_tangents);
     d.nonnegative = nonnegative(d.subdivision);
-    out.valences.push_back(std::move(d));
-  }
+    if (progress) {
+      std::lock_guard lock(report);
+      progress(scheme.name + ": valence " + std::to_string(v) + " patch subdivision and tangent plane solved (" +
+               std::to_string(++done) + "/" + std::to_string(extraordinary.size()) + ")");
+    }
+  });
+  done = 0;
   out.sectors.resize(sectors.size());
   tbb::parallel_for(std::size_t(0), sectors.size(), [&](std::size_t k) {
     QuadDescent::Sector& d = out.sectors[k];
@@ -64,6 +79,13 @@ QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valen
     // property is A0 (the rules themselves) and the mask.
     d.nonnegative = nonnegative(d.subdivision.extraordinary_child) && out.mask_nonnegative;
     d.tangents = sector_tangents(scheme, d.sector, d.subdivision, d.limit, d.no_tangents);
+    if (progress) {
+      std::lock_guard lock(report);
+      ++done;
+      if (done * 10 / sectors.size() != (done - 1) * 10 / sectors.size())
+        progress(scheme.name + ": boundary, crease, corner, dart and cone sectors: " + std::to_string(done) + "/" +
+                 std::to_string(sectors.size()) + " solved");
+    }
   });
   return out;
 }

@@ -9,6 +9,8 @@
 // extraordinary valence the patch's one-step subdivision matrices and the
 // tangent stencils at the vertex.
 #include <array>
+#include <functional>
+#include <string>
 #include <optional>
 #include <vector>
 
@@ -48,7 +50,11 @@ struct QuadDescent {
 };
 
 // `sectors`: the boundary sectors to describe (boundary_sectors(), or none).
+// Valences and sectors are solved in parallel; `progress`, when given, hears
+// of each valence and of every tenth of the sectors (large valences take
+// minutes: the sectors up to 64 faces are thousands of exact eigen-analyses).
 QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valences,
-                         const std::vector<BoundarySector>& sectors = {});
+                         const std::vector<BoundarySector>& sectors = {},
+                         const std::function<void(const std::string&)>& progress = {});
 
 }  // namespace sg
