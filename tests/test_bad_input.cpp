@@ -142,6 +142,23 @@ TEST_CASE("the schemes directory: names agree with files, list and lookups agree
   fs::remove_all(dir);
 }
 
+TEST_CASE("surface runs report the patch subdivision and every tenth of the boundary sectors as they go") {
+  const fs::path dir = scratch_dir("progress");
+  for (const char* scheme : {"catmull-clark", "loop"}) {
+    const CliResult r = run_stencilgen(std::string("--scheme ") + scheme + " --valence 5 --n 1 --out " + (dir / "out").string());
+    INFO(r.output);
+    REQUIRE(r.status == 0);
+    std::size_t lines = 0, at = 0;
+    while ((at = r.output.find("cone sectors: ", at)) != std::string::npos) ++lines, ++at;
+    CHECK(lines >= 5);
+    CHECK(lines <= 10);
+    CHECK(r.output.find(" solved\n") != std::string::npos);
+    if (std::string(scheme) == "catmull-clark")
+      CHECK(r.output.find("catmull-clark: valence 5 patch subdivision and tangent plane solved (1/1)") != std::string::npos);
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("a control character in a quoted value is shown escaped, not ending the message") {
   const fs::path dir = scratch_dir("control-chars");
   std::string body = uniform("-1", R"("1/2", "1", "1/2")");

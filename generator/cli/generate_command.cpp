@@ -86,7 +86,7 @@ int generate_triangle(const GenerateOptions& o, const std::string& valence_spec)
   std::sort(valences.begin(), valences.end());
   const auto start = std::chrono::steady_clock::now();
   const auto set = generate_triangle_tables(scheme, valences, rates, progress_lines(o.quiet));
-  const std::size_t bytes = write_triangle_tables(scheme, set, o.out, binary_precision(o.precision));
+  const std::size_t bytes = write_triangle_tables(scheme, set, o.out, binary_precision(o.precision), progress_lines(o.quiet));
   std::string exact, approx;
   for (int v : valences) (scheme.exact_neighbour_weight(v) ? exact : approx) += (std::to_string(v) + " ");
   std::cout << "wrote triangle tables for '" << scheme.name << "' (valences " << valence_spec << " and 6, rates "

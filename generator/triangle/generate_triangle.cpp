@@ -61,11 +61,12 @@ TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const st
 }
 
 std::size_t write_triangle_tables(const TriangleScheme& scheme, const TriangleTableSet& set,
-                                  const std::filesystem::path& out_dir, BinaryPrecision precision) {
+                                  const std::filesystem::path& out_dir, BinaryPrecision precision,
+                                  const std::function<void(const std::string&)>& progress) {
   OutputTransaction tx(out_dir / scheme.name);
   add_table_files(tx, set.tables, triangle_table_to_json);
   TriangleSectorSet sectors;
-  std::string binary = triangle_tables_to_binary(scheme, set, precision, &sectors);
+  std::string binary = triangle_tables_to_binary(scheme, set, precision, &sectors, progress);
   const std::size_t size = binary.size();
   tx.add(scheme.name + ".sgt", std::move(binary));
   if (!sectors.sectors.empty()) tx.add("sectors.json", triangle_sectors_to_json(scheme, sectors));  // the same, exact

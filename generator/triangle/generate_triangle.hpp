@@ -20,6 +20,7 @@ TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const st
 // Writes, all or nothing, into OUT/<scheme>/: v<V>/n<N>.json and <scheme>.sgt.
 // Returns the size of the binary file in bytes.
 std::size_t write_triangle_tables(const TriangleScheme& scheme, const TriangleTableSet& set,
-                                  const std::filesystem::path& out_dir, BinaryPrecision precision);
+                                  const std::filesystem::path& out_dir, BinaryPrecision precision,
+                                  const std::function<void(const std::string&)>& progress = {});
 
 }  // namespace sg

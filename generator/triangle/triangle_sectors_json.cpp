@@ -1,5 +1,7 @@
 #include "triangle/triangle_sectors_json.hpp"
 
+#include <mutex>
+
 #include <tbb/parallel_for.h>
 
 #include "base/error.hpp"
@@ -41,15 +43,25 @@ ojson tangents_json(const TangentStencils& t) {
 
 }  // namespace
 
-TriangleSectorSet solve_triangle_sectors(const TriangleScheme& scheme, int max_faces, const std::vector<SectorPoint>& regular_layout) {
+TriangleSectorSet solve_triangle_sectors(const TriangleScheme& scheme, int max_faces, const std::vector<SectorPoint>& regular_layout,
+                                         const std::function<void(const std::string&)>& progress) {
   TriangleSectorSet set;
   set.max_faces = max_faces;
   set.regular_layout = regular_layout;
   if (scheme.refinement != TriangleRefinement::Loop || !scheme.has_crease) return set;
   const std::vector<BoundarySector> sectors = triangle_sectors(max_faces, true);
   set.sectors.resize(sectors.size());
-  tbb::parallel_for(std::size_t(0), sectors.size(),
-                    [&](std::size_t s) { set.sectors[s] = triangle_sector_descent(scheme, sectors[s], regular_layout); });
+  std::mutex report;
+  std::size_t done = 0;
+  tbb::parallel_for(std::size_t(0), sectors.size(), [&](std::size_t s) {
+    set.sectors[s] = triangle_sector_descent(scheme, sectors[s], regular_layout);
+    if (!progress) return;
+    std::lock_guard lock(report);
+    ++done;
+    if (done * 10 / sectors.size() != (done - 1) * 10 / sectors.size())
+      progress(scheme.name + ": boundary, crease, corner, dart and cone sectors: " + std::to_string(done) + "/" +
+               std::to_string(sectors.size()) + " solved");
+  });
   return set;
 }
 

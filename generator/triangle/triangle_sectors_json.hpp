@@ -5,6 +5,7 @@
 // as exact JSON"). Exact rationals where the sector's rules are rational, 40
 // significant digits of the 80-digit solve where they are not (a dart at a
 // valence where Loop's smooth rule is irrational), with the residual.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,10 @@ struct TriangleSectorSet {
 };
 
 // Solved in parallel; empty for sqrt(3) or a scheme without a crease curve.
-TriangleSectorSet solve_triangle_sectors(const TriangleScheme& scheme, int max_faces, const std::vector<SectorPoint>& regular_layout);
+// `progress`, when given, hears of every tenth of the sectors (up to 64 faces
+// they are thousands, minutes of work).
+TriangleSectorSet solve_triangle_sectors(const TriangleScheme& scheme, int max_faces, const std::vector<SectorPoint>& regular_layout,
+                                         const std::function<void(const std::string&)>& progress = {});
 
 std::string triangle_sectors_to_json(const TriangleScheme& scheme, const TriangleSectorSet& set);
 

@@ -138,7 +138,8 @@ void put_sectors(std::string& out, const TriangleScheme& scheme, const std::vect
 }  // namespace
 
 std::string triangle_tables_to_binary(const TriangleScheme& scheme, const TriangleTableSet& set, BinaryPrecision precision,
-                                      TriangleSectorSet* sectors_out) {
+                                      TriangleSectorSet* sectors_out,
+                                      const std::function<void(const std::string&)>& progress) {
   const TriangleLayouts layouts = union_layouts(scheme, set);
   std::string out(fmt::kTriangleMagic, sizeof fmt::kTriangleMagic);
   put<std::uint32_t>(out, fmt::kTriangleVersion);
@@ -244,7 +245,8 @@ std::string triangle_tables_to_binary(const TriangleScheme& scheme, const Triang
         for (double x : w) put_scalar(out, x, precision);
   }
   // Version 7: Loop's boundary sectors, up to the largest valence asked for.
-  TriangleSectorSet sectors = solve_triangle_sectors(scheme, *std::max_element(set.valences.begin(), set.valences.end()), *regular_layout);
+  TriangleSectorSet sectors = solve_triangle_sectors(scheme, *std::max_element(set.valences.begin(), set.valences.end()), *regular_layout,
+                                                     progress);
   put_sectors(out, scheme, sectors.sectors);
   if (sectors_out) *sectors_out = std::move(sectors);
   put<std::uint64_t>(out, fmt::fnv1a64(reinterpret_cast<const unsigned char*>(out.data()), out.size()));

@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@ struct TriangleTableSet {
 std::vector<SectorPoint> regular_points(const TriangleScheme& scheme, const TriangleTableSet& set);
 
 std::string triangle_tables_to_binary(const TriangleScheme& scheme, const TriangleTableSet& set, BinaryPrecision precision,
-                                      TriangleSectorSet* sectors_out = nullptr);
+                                      TriangleSectorSet* sectors_out = nullptr,
+                                      const std::function<void(const std::string&)>& progress = {});
 
 }  // namespace sg
