@@ -94,6 +94,9 @@ TEST_CASE("unknown schemes, bad rates and bad parameters are refused") {
   // Options that would change nothing for the scheme's kind are refused, not ignored.
   expect_failure("--scheme fourpoint --n 3 --binary-precision single", "--binary-precision applies to surface schemes", out);
   expect_failure("--scheme loop --n 2 --route eigen", "--route applies to curve schemes", out);
+  const CliResult analyze = run_stencilgen("analyze --scheme fourpoint");
+  CHECK(analyze.status == 1);
+  CHECK(analyze.output.find("analyze: 'fourpoint' is a curve scheme (type curve-uniform); analyze studies") != std::string::npos);
   fs::remove_all(dir);
 }
 

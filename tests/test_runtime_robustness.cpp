@@ -13,6 +13,7 @@
 #include "cli.hpp"
 #include "runtime_api.hpp"
 #include "stencil_runtime/binary_format.hpp"
+#include "mesh/file_output.hpp"
 #include "tables/triangle_tables.hpp"
 
 using namespace stencil_runtime;
@@ -512,4 +513,46 @@ TEST_CASE("single-precision tables say their values are not exact, with a bound 
   const CliResult r = run_stencileval("--tables " + tables + " --mesh " + chess + " --face 7 --uv 1/3,1/7 --tolerance 1e-4");
   CHECK(r.status == 0);
   CHECK(r.output.find("within") != std::string::npos);
+}
+
+TEST_CASE("outputs are staged under names of their own process, and what killed runs left is swept by the next", "[runtime][robustness]") {
+  const fs::path dir = scratch_dir("robust-leftovers");
+  const std::string target = (dir / "out.obj").string();
+  const auto read = [](const fs::path& p) { std::ifstream in(p); return std::string(std::istreambuf_iterator<char>(in), {}); };
+  // pid 999999999 is above any pid_max: a dead process. pid 1 is alive.
+  write_file(dir / ".out.999999999.partial.obj", "half");
+  write_file(dir / ".out.999999998.staged.obj", "staged");
+  write_file(dir / ".out.999999997.previous.obj", "the old output");
+  write_file(dir / ".out.1.partial.obj", "a live run's");
+  write_file(dir / ".out.x1.partial.obj", "not ours");
+  write_file(dir / ".out.999999999.partial.ply", "another target's");
+  // A run killed between moving the old output aside and moving the new one in: the old one comes back.
+  stencil_runtime::sweep_left_by_killed_runs(target);
+  CHECK(read(target) == "the old output");
+  CHECK_FALSE(fs::exists(dir / ".out.999999999.partial.obj"));
+  CHECK_FALSE(fs::exists(dir / ".out.999999998.staged.obj"));
+  CHECK_FALSE(fs::exists(dir / ".out.999999997.previous.obj"));
+  CHECK(fs::exists(dir / ".out.1.partial.obj"));
+  CHECK(fs::exists(dir / ".out.x1.partial.obj"));
+  CHECK(fs::exists(dir / ".out.999999999.partial.ply"));
+  // With the target in place a moved-aside one is dropped, not put back.
+  write_file(dir / ".out.999999996.previous.obj", "older");
+  stencil_runtime::sweep_left_by_killed_runs(target);
+  CHECK(read(target) == "the old output");
+  CHECK_FALSE(fs::exists(dir / ".out.999999996.previous.obj"));
+  // Writing sweeps first, and stages under this process's own name, which does not outlive the write.
+  write_file(dir / ".out.999999995.partial.obj", "half");
+  stencil_runtime::write_file_atomically(target, [](std::FILE* f) { std::fputs("new", f); });
+  CHECK(read(target) == "new");
+  CHECK_FALSE(fs::exists(dir / ".out.999999995.partial.obj"));
+  CHECK_FALSE(fs::exists(stencil_runtime::name_beside(target, "partial")));
+  CHECK(stencil_runtime::name_beside(target, "partial") == (dir / (".out." + std::to_string(::getpid()) + ".partial.obj")).string());
+  // A writer that throws leaves neither the target changed nor its partial file.
+  CHECK_THROWS(stencil_runtime::write_file_atomically(target, [](std::FILE* f) {
+    std::fputs("broken", f);
+    throw stencil_runtime::LoadError("stopped");
+  }));
+  CHECK(read(target) == "new");
+  CHECK_FALSE(fs::exists(stencil_runtime::name_beside(target, "partial")));
+  fs::remove_all(dir);
 }

@@ -40,7 +40,12 @@ int analyze(const std::string& scheme_spec, const std::string& valence_spec, con
                 std::to_string(limits::kMaxAnalysisSamples));
   // Every valence is checked against the limits and the scheme's range before the first is analysed.
   const std::vector<int> valences = parse_valence_spec(valence_spec);
-  if (scheme_type(scheme_spec) == "triangle") {
+  const std::string type = scheme_type(scheme_spec);
+  if (type != "quad" && type != "triangle")
+    throw Error("analyze: '" + excerpt(scheme_spec) + "' is a curve scheme (type " + excerpt(type) +
+                "); analyze studies the extraordinary vertices of quad and triangle surface schemes (a curve scheme's "
+                "convergence and smoothness are reported when its tables are generated)");
+  if (type == "triangle") {
     const TriangleScheme scheme = load_triangle_scheme(scheme_spec, params);
     check_valences(valences, scheme.min_valence, scheme.max_valence, scheme.source);
     return print_reports(

@@ -1,6 +1,6 @@
 #include "staged_files.hpp"
 
-#include <unistd.h>
+#include "mesh/file_output.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -10,23 +10,7 @@ namespace stencil_tools {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-// A name beside `target` that no other run of this process or another uses:
-// ".<name>.<pid>.<what><extension>".
-std::string beside(const std::string& target, const char* what) {
-  const fs::path p(target);
-  std::string name(1, '.');
-  name += p.stem().string();
-  name += '.';
-  name += std::to_string(::getpid());
-  name += '.';
-  name += what;
-  name += p.extension().string();
-  return (p.parent_path() / name).string();
-}
-
-}  // namespace
+using stencil_runtime::name_beside;
 
 StagedFiles::~StagedFiles() {
   if (committed_) return;
@@ -36,7 +20,8 @@ StagedFiles::~StagedFiles() {
 std::string StagedFiles::stage(const std::string& target) {
   std::error_code ec;
   if (fs::is_directory(target, ec)) throw std::runtime_error(target + ": is a directory, not a file to write");
-  staged_.emplace_back(beside(target, "staged"), target);
+  stencil_runtime::sweep_left_by_killed_runs(target);
+  staged_.emplace_back(name_beside(target, "staged"), target);
   return staged_.back().first;
 }
 
@@ -60,7 +45,7 @@ void StagedFiles::commit() {
     std::error_code ec;
     Moved m{target, ""};
     if (fs::exists(fs::symlink_status(target, ec))) {
-      m.backup = beside(target, "previous");
+      m.backup = name_beside(target, "previous");
       fs::rename(target, m.backup, ec);
       if (ec) {
         undo();

@@ -1,6 +1,8 @@
 #include "stencil_runtime/error.hpp"
 #include "tool_support.hpp"
 
+#include "mesh/file_output.hpp"
+
 #include <glob.h>
 
 #include <algorithm>
@@ -57,20 +59,7 @@ std::string read_text_file(const std::string& path, std::size_t max_bytes) {
 }
 
 void write_text_file(const std::string& path, const std::string& text) {
-  const std::string temp = path + ".partial";
-  FILE* f = std::fopen(temp.c_str(), "wb");
-  if (!f) throw std::runtime_error(path + ": cannot write");
-  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::ferror(f) == 0;
-  if (std::fclose(f) != 0 || !written) {
-    std::remove(temp.c_str());
-    throw std::runtime_error(path + ": write failed");
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, path, ec);
-  if (ec) {
-    std::remove(temp.c_str());
-    throw std::runtime_error(path + ": cannot move the finished file into place: " + ec.message());
-  }
+  stencil_runtime::write_file_atomically(path, [&](FILE* f) { std::fwrite(text.data(), 1, text.size(), f); });
 }
 
 ParameterText parse_parameter(const std::string& text) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "file_output.hpp"
 #include "line_tokens.hpp"
 #include "obj_tags.hpp"
 #include "stencil_runtime/limits.hpp"
@@ -159,30 +160,6 @@ void write_ply(const PolygonSoup& s, std::FILE* f) {
 
 }  // namespace
 
-namespace {
-
-// Writes through `write` to a temporary file beside `path` and renames it, so
-// that a failure leaves nothing behind.
-template <class Write>
-void write_atomically(const std::string& path, Write write) {
-  const std::string temp = path + ".partial";
-  std::FILE* f = std::fopen(temp.c_str(), "wb");
-  if (!f) throw LoadError(path + ": cannot write");
-  write(f);
-  const bool ok = std::ferror(f) == 0;
-  if (std::fclose(f) != 0 || !ok) {
-    std::remove(temp.c_str());
-    throw LoadError(path + ": write failed");
-  }
-  std::error_code ec;
-  fs::rename(temp, path, ec);
-  if (ec) {
-    std::remove(temp.c_str());
-    throw LoadError(path + ": cannot move the finished file into place: " + ec.message());
-  }
-}
-
-}  // namespace
 
 void write_polygons(const PolygonSoup& soup, const std::string& path) {
   const std::string ext = fs::path(path).extension().string();
@@ -190,7 +167,7 @@ void write_polygons(const PolygonSoup& soup, const std::string& path) {
   if (!soup.normals.empty() && soup.normals.size() != soup.positions.size())
     throw LoadError(path + ": the tessellation has " + std::to_string(soup.normals.size()) + " normals for " +
                     std::to_string(soup.positions.size()) + " points");
-  write_atomically(path, [&](std::FILE* f) {
+  write_file_atomically(path, [&](std::FILE* f) {
     if (ext == ".obj") write_obj(soup, f);
     else write_ply(soup, f);
   });
@@ -198,7 +175,7 @@ void write_polygons(const PolygonSoup& soup, const std::string& path) {
 
 void write_obj(const Mesh& mesh, const std::string& path) {
   if (fs::path(path).extension() != ".obj") throw LoadError(path + ": a control mesh is written as .obj");
-  write_atomically(path, [&](std::FILE* f) {
+  write_file_atomically(path, [&](std::FILE* f) {
     for (const Point& p : mesh.positions) std::fprintf(f, "v %.17g %.17g %.17g\n", p[0], p[1], p[2]);
     std::size_t offset = 0;
     for (const int size : mesh.face_sizes) {
