@@ -37,7 +37,7 @@ bool verify_file(const std::string& file, const std::string& scheme_spec, const 
 
   if (table.format == kTriangleTableFormat) {
     const TriangleScheme scheme = load_triangle_scheme(spec, overrides);
-    const TriangleTableCheck check = verify_triangle_table(table, text, scheme);
+    const TriangleTableCheck check = verify_triangle_table(table, scheme);
     const TriangleTable& t = check.fresh;
     if (check.same)
       std::cout << file << ": OK (" << scheme.name << " triangle table, valence " << t.valence << ", n = " << t.n
@@ -49,7 +49,7 @@ bool verify_file(const std::string& file, const std::string& scheme_spec, const 
   }
   if (table.format == kTriangleSectorsFormat) {
     const TriangleScheme scheme = load_triangle_scheme(spec, overrides);
-    const auto failures = verify_triangle_sectors(table, text, scheme);
+    const auto failures = verify_triangle_sectors(table, scheme);
     if (failures.empty())
       std::cout << file << ": OK (" << scheme.name
                 << " sectors: equal to the re-solved ones in every digit; every exact limit stencil sums to 1 and is A0's "

@@ -117,7 +117,7 @@ std::string triangle_sectors_to_json(const TriangleScheme& scheme, const Triangl
   return doc.dump() + "\n";
 }
 
-std::vector<std::string> verify_triangle_sectors(const TableDocument& table, const std::string& text, const TriangleScheme& scheme) {
+std::vector<std::string> verify_triangle_sectors(const TableDocument& table, const TriangleScheme& scheme) {
   const DocumentReader<ojson> r(table.origin);
   if (table.format != kTriangleSectorsFormat) r.fail("format", "is not \"" + std::string(kTriangleSectorsFormat) + "\"");
   if (r.integer(r.require(table.doc, "version", ""), "version", 1, kTriangleSectorsVersion) != kTriangleSectorsVersion)

@@ -34,9 +34,10 @@ TriangleSectorSet solve_triangle_sectors(const TriangleScheme& scheme, int max_f
 std::string triangle_sectors_to_json(const TriangleScheme& scheme, const TriangleSectorSet& set);
 
 // `stencilgen verify` of a sectors.json: re-solves every sector from the
-// scheme (with the file's regular layout) and compares the text, and, where
-// exact, checks from the file's own rationals that each limit stencil sums to
-// 1 and is A0's fixed point. The failures, empty when it passes.
-std::vector<std::string> verify_triangle_sectors(const TableDocument& table, const std::string& text, const TriangleScheme& scheme);
+// scheme (with the file's regular layout) and compares the documents as
+// values (naming the first field that differs), and, where exact, checks from
+// the file's own rationals that each limit stencil sums to 1 and is A0's fixed
+// point. The failures, empty when it passes.
+std::vector<std::string> verify_triangle_sectors(const TableDocument& table, const TriangleScheme& scheme);
 
 }  // namespace sg

@@ -6,7 +6,7 @@
 namespace sg {
 using ojson = nlohmann::ordered_json;
 
-TriangleTableCheck verify_triangle_table(const TableDocument& table, const std::string& text, const TriangleScheme& scheme) {
+TriangleTableCheck verify_triangle_table(const TableDocument& table, const TriangleScheme& scheme) {
   const DocumentReader<ojson> r(table.origin);
   if (table.format != kTriangleTableFormat) r.fail("format", "is not \"" + std::string(kTriangleTableFormat) + "\"");
   const int v = static_cast<int>(r.integer(r.require(table.doc, "valence", ""), "valence", scheme.min_valence, scheme.max_valence));

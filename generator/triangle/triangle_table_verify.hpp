@@ -18,6 +18,6 @@ struct TriangleTableCheck {
   bool same = false;
   std::optional<std::string> difference;  // where the file first differs from the re-solved table
 };
-TriangleTableCheck verify_triangle_table(const TableDocument& table, const std::string& text, const TriangleScheme& scheme);
+TriangleTableCheck verify_triangle_table(const TableDocument& table, const TriangleScheme& scheme);
 
 }  // namespace sg
