@@ -94,6 +94,16 @@ TEST_CASE("unknown schemes, bad rates and bad parameters are refused") {
   // Options that would change nothing for the scheme's kind are refused, not ignored.
   expect_failure("--scheme fourpoint --n 3 --binary-precision single", "--binary-precision applies to surface schemes", out);
   expect_failure("--scheme loop --n 2 --route eigen", "--route applies to curve schemes", out);
+  // An output folder that cannot be made is refused before the work, not after it.
+  std::ofstream(dir / "a-file") << "x";
+  for (const fs::path& bad : {dir / "a-file", dir / "a-file" / "sub"}) {
+    const CliResult r = run_stencilgen("--scheme fourpoint --n 1-3 --out " + bad.string());
+    INFO(r.output);
+    CHECK(r.status == 1);
+    CHECK(r.output.find("cannot create output folder " + bad.string() + ": " + (dir / "a-file").string() + " is not a directory") !=
+          std::string::npos);
+    CHECK(r.output.find("solved") == std::string::npos);
+  }
   const CliResult analyze = run_stencilgen("analyze --scheme fourpoint");
   CHECK(analyze.status == 1);
   CHECK(analyze.output.find("analyze: 'fourpoint' is a curve scheme (type curve-uniform); analyze studies") != std::string::npos);

@@ -8,6 +8,7 @@
 #include "base/limits.hpp"
 #include "cli/cli_helpers.hpp"
 #include "cli/commands.hpp"
+#include "common/atomic_output.hpp"
 #include "common/rate_spec.hpp"
 #include "common/scheme_registry.hpp"
 #include "curve/difference_scheme.hpp"
@@ -103,6 +104,7 @@ int generate_triangle(const GenerateOptions& o, const std::string& valence_spec)
 }  // namespace
 
 int generate(const GenerateOptions& o) {
+  check_output_parent(o.out);  // before the work, not after it
   const std::string type = scheme_type(o.scheme);
   const std::string valences = o.valences.empty() ? "3-8" : o.valences;
   // An option that would change nothing is refused, not ignored (route stays "both" unless given).

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <vector>
 
@@ -183,6 +184,23 @@ void write_file_atomically(const fs::path& path, const std::string& bytes) {
   fs::rename(temporary, target, ec);
   if (ec) throw Error("cannot write " + target.string() + ": " + ec.message());
   undo.dismiss();
+}
+
+void check_output_parent(const fs::path& out_dir) {
+  if (out_dir.empty()) throw Error("--out is empty: it names the folder that receives the tables");
+  std::error_code ec;
+  fs::path at = out_dir;
+  // The nearest existing folder at or above out_dir: what the run creates its folders in.
+  while (!fs::exists(fs::symlink_status(at, ec))) {
+    if (!at.has_relative_path() || at.parent_path() == at) break;
+    at = at.has_parent_path() ? at.parent_path() : fs::path(".");
+    if (at.empty()) at = ".";
+  }
+  if (!fs::exists(at, ec)) throw Error("cannot create output folder " + out_dir.string() + ": no folder above it exists");
+  if (!fs::is_directory(at, ec))
+    throw Error("cannot create output folder " + out_dir.string() + ": " + at.string() + " is not a directory");
+  if (::access(at.c_str(), W_OK | X_OK) != 0)
+    throw Error("cannot create output folder " + out_dir.string() + ": " + at.string() + ": " + std::strerror(errno));
 }
 
 }  // namespace sg

@@ -33,6 +33,12 @@ class OutputTransaction {
   Step fault_ = Step::None;
 };
 
+// Whether `out_dir` can receive an output folder, checked before a long run
+// rather than found at its end: it exists and is a directory, or the nearest
+// folder above it that exists is, and that one can be written to. Throws
+// sg::Error naming the path and the reason.
+void check_output_parent(const std::filesystem::path& out_dir);
+
 // One file, all or nothing: written beside `path` under a temporary name and
 // renamed over it. Throws sg::Error on failure, leaving neither the temporary
 // file nor any parent folder it created.
