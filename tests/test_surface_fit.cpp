@@ -406,6 +406,9 @@ TEST_CASE("stencilfit refuses bad inputs with one line naming the fault, and wri
       {"points.xyz", "--max-control-points -3 --max-error 0.001", tables, "at least 4, got -3"},
       {"points.xyz", "--tolerance 1e-300", tables, "at least 1e-14"},
       {"points.xyz", "--report " + out, tables, "three different files"},
+      // Outputs that could not be written are refused before the fit, not after it.
+      {"points.xyz", "--plot " + (dir / "no-such-folder" / "p.svg").string(), tables, "p.svg: cannot be written: its folder"},
+      {"points.xyz", "--report " + dir.string(), tables, ": is a directory, not a file to write"},
   };
   for (const auto& [points, extra, table, message] : cases) {
     INFO(points << " " << extra);
@@ -536,4 +539,26 @@ TEST_CASE("Adaptive fitting refines where the error is large, within the budget,
   CHECK_THROWS_WITH(fit_adaptively(tables, ico, points, options, 11), Catch::Contains("below the control mesh's 12"));
   options.max_error = 0;
   CHECK_THROWS_WITH(fit_adaptively(tables, ico, points, options, 100), Catch::Contains("max error above 0"));
+}
+
+TEST_CASE("every tool refuses, before its work, an output it could not write at the end", "[fitting][cli]") {
+  const std::string tables = generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string();
+  const auto dir = scratch_dir("unwritable-outputs");
+  write_points(dir / "points.xyz", ellipsoid_points(100, 0, 3));
+  write_mesh(dir / "sphere.obj", quad_sphere(2));
+  std::ofstream(dir / "a-file") << "x";
+  const std::string mesh = (dir / "sphere.obj").string(), points = (dir / "points.xyz").string();
+  for (const std::filesystem::path& bad : {dir / "a-file" / "out.obj", dir / "missing" / "out.obj"}) {
+    const std::vector<CliResult> runs{
+        run_stencilfit("--tables " + tables + " --points " + points + " --control " + mesh + " --out " + bad.string()),
+        run_stenciltess("--tables " + tables + " --mesh " + mesh + " --rate 2 --out " + bad.string()),
+        run_command(STENCILDIST_EXE, "--tables " + tables + " --mesh " + mesh + " --points " + points + " --out " + bad.string())};
+    for (const CliResult& r : runs) {
+      INFO(r.output);
+      CHECK(r.status == 1);
+      CHECK_THAT(r.output, Catch::Contains(bad.string() + ": cannot be written: "));
+      CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);  // the error alone: no iteration, no summary
+    }
+  }
+  std::filesystem::remove_all(dir);
 }

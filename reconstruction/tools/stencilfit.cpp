@@ -121,6 +121,7 @@ int main(int argc, char** argv) {
         if (same(input, out_path) || same(input, report_path) || same(input, plot_path))
           throw std::runtime_error(input + " is an input and an output; give the output another name");
     }
+    for (const std::string& output : {out_path, report_path, plot_path}) stencil_tools::check_output_can_be_written(output);
     if (max_control_points > 0 && !(options.max_error > 0))
       throw std::runtime_error("--max-control-points needs --max-error (the split threshold)");
     if (control_path.empty() && !app.count("--control-points"))

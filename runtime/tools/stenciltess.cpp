@@ -81,6 +81,7 @@ int main(int argc, char** argv) {
       throw std::runtime_error("--rate must be 1.." + std::to_string(limits::kMaxRate));
     if (!frames.empty()) stencil_tools::check_frame_pattern(out);
     else stencil_tools::check_output_is_not_input(out, {mesh_path, rates_file});
+    stencil_tools::check_output_can_be_written(frames.empty() ? out : stencil_tools::frame_name(out, 0));
     if (camera.empty())
       for (const char* option : {"--pixels", "--fov", "--width"})
         if (app.count(option)) throw std::runtime_error(std::string(option) + " applies to --camera rates only");

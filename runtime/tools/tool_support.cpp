@@ -5,6 +5,9 @@
 
 #include <glob.h>
 
+#include <unistd.h>
+#include <cerrno>
+#include <cstring>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -147,6 +150,18 @@ void check_outputs_are_not_inputs(const std::vector<std::string>& outputs, const
   for (const std::string& output : outputs)
     if (!output.empty() && read.count(fs::weakly_canonical(output)))
       throw std::runtime_error(output + " is an input and the output; give the output another name");
+}
+
+void check_output_can_be_written(const std::string& output) {
+  if (output.empty()) return;
+  const fs::path path(output);
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw std::runtime_error(output + ": is a directory, not a file to write");
+  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (!fs::exists(folder, ec)) throw std::runtime_error(output + ": cannot be written: its folder " + folder.string() + " does not exist");
+  if (!fs::is_directory(folder, ec)) throw std::runtime_error(output + ": cannot be written: " + folder.string() + " is not a folder");
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw std::runtime_error(output + ": cannot be written: " + folder.string() + ": " + std::strerror(errno));
 }
 
 void BoundaryOption::add(CLI::App& app) {

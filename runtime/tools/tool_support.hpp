@@ -56,6 +56,11 @@ std::vector<std::string> expand_pattern(const std::string& pattern);
 void check_output_is_not_input(const std::string& output, const std::vector<std::string>& inputs);
 void check_outputs_are_not_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
 
+// Refuses, before the work, an output that could not be written at its end:
+// a path that is a directory, or whose folder is missing, not a folder or not
+// writable. Empty paths (an output not asked for) are ignored.
+void check_output_can_be_written(const std::string& output);
+
 // --boundary none|edge-only|edge-and-corner: how a mesh with boundaries is
 // interpolated there; given, it overrides the mesh's `interpolateboundary` tag.
 struct BoundaryOption {
