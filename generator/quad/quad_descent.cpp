@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "base/error.hpp"
+#include "common/tenths_progress.hpp"
 #include "quad/ev_patch_solver.hpp"
 
 namespace sg {
@@ -66,7 +67,7 @@ QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valen
                std::to_string(++done) + "/" + std::to_string(extraordinary.size()) + ")");
     }
   });
-  done = 0;
+  TenthsProgress sectors_done(progress, scheme.name + ": boundary, crease, corner, dart and cone sectors", sectors.size());
   out.sectors.resize(sectors.size());
   tbb::parallel_for(std::size_t(0), sectors.size(), [&](std::size_t k) {
     QuadDescent::Sector& d = out.sectors[k];
@@ -79,13 +80,7 @@ QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valen
     // property is A0 (the rules themselves) and the mask.
     d.nonnegative = nonnegative(d.subdivision.extraordinary_child) && out.mask_nonnegative;
     d.tangents = sector_tangents(scheme, d.sector, d.subdivision, d.limit, d.no_tangents);
-    if (progress) {
-      std::lock_guard lock(report);
-      ++done;
-      if (done * 10 / sectors.size() != (done - 1) * 10 / sectors.size())
-        progress(scheme.name + ": boundary, crease, corner, dart and cone sectors: " + std::to_string(done) + "/" +
-                 std::to_string(sectors.size()) + " solved");
-    }
+    sectors_done.done();
   });
   return out;
 }

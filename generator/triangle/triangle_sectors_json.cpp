@@ -1,12 +1,11 @@
 #include "triangle/triangle_sectors_json.hpp"
 
-#include <mutex>
-
 #include <tbb/parallel_for.h>
 
 #include "base/error.hpp"
 #include "common/exact_rows.hpp"
 #include "common/hash.hpp"
+#include "common/tenths_progress.hpp"
 #include "common/parameters_json.hpp"
 #include "triangle/triangle_table_binary.hpp"
 
@@ -51,16 +50,10 @@ TriangleSectorSet solve_triangle_sectors(const TriangleScheme& scheme, int max_f
   if (scheme.refinement != TriangleRefinement::Loop || !scheme.has_crease) return set;
   const std::vector<BoundarySector> sectors = triangle_sectors(max_faces, true);
   set.sectors.resize(sectors.size());
-  std::mutex report;
-  std::size_t done = 0;
+  TenthsProgress sectors_done(progress, scheme.name + ": boundary, crease, corner, dart and cone sectors", sectors.size());
   tbb::parallel_for(std::size_t(0), sectors.size(), [&](std::size_t s) {
     set.sectors[s] = triangle_sector_descent(scheme, sectors[s], regular_layout);
-    if (!progress) return;
-    std::lock_guard lock(report);
-    ++done;
-    if (done * 10 / sectors.size() != (done - 1) * 10 / sectors.size())
-      progress(scheme.name + ": boundary, crease, corner, dart and cone sectors: " + std::to_string(done) + "/" +
-               std::to_string(sectors.size()) + " solved");
+    sectors_done.done();
   });
   return set;
 }
