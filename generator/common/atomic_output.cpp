@@ -194,7 +194,6 @@ void check_output_parent(const fs::path& out_dir) {
   while (!fs::exists(fs::symlink_status(at, ec))) {
     if (!at.has_relative_path() || at.parent_path() == at) break;
     at = at.has_parent_path() ? at.parent_path() : fs::path(".");
-    if (at.empty()) at = ".";
   }
   if (!fs::exists(at, ec)) throw Error("cannot create output folder " + out_dir.string() + ": no folder above it exists");
   if (!fs::is_directory(at, ec))

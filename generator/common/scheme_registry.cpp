@@ -68,9 +68,16 @@ std::vector<std::string> available_schemes(const fs::path& dir, SchemeFamily fam
   return names;
 }
 
+namespace {
+
+// A `--scheme` argument naming a file rather than a scheme in the directory.
+bool is_scheme_path(const std::string& spec) { return spec.find('/') != std::string::npos || spec.ends_with(".json"); }
+
+}  // namespace
+
 fs::path resolve_scheme_file(const std::string& spec, const fs::path& dir) {
   if (spec.empty()) throw Error("empty scheme name");
-  const bool is_path = spec.find('/') != std::string::npos || spec.ends_with(".json");
+  const bool is_path = is_scheme_path(spec);
   if (!is_path && !is_scheme_name(spec))
     throw Error("'" + excerpt(spec) + "' is neither a scheme name (" + kSchemeNameRule +
                 ") nor a path to a scheme file (containing '/' or ending in .json)");
@@ -89,8 +96,7 @@ fs::path resolve_scheme_file(const std::string& spec, const fs::path& dir) {
 }
 
 void check_scheme_file_name(const std::string& spec, const std::string& name, const fs::path& file) {
-  const bool is_path = spec.find('/') != std::string::npos || spec.ends_with(".json");
-  if (is_path || name == spec) return;
+  if (is_scheme_path(spec) || name == spec) return;
   throw Error(file.string() + ": name: '" + excerpt(name) + "' differs from the file's name '" + excerpt(spec) +
               "' (the scheme is found by its file's name and its tables are named by this field: make them agree)");
 }
