@@ -89,7 +89,7 @@ void TriangleFamily::plan(TessellationLayout& layout, const detail::RangeRunner&
 
 void TriangleFamily::points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
                             std::array<float, 3>* out_all) const {
-  thread_local std::vector<Point> local;
+  thread_local std::vector<Point> local, consumed;
   for (std::size_t f = begin; f != end; ++f) {
     if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
     const TrianglePatch& p = patches_[f];
@@ -145,12 +145,13 @@ std::array<double, 2> TriangleFamily::edge_node_parameter(std::size_t face, int 
 void TriangleFamily::normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
                              std::array<float, 3>* out_all) const {
   const TrianglePatchDescent& descent = checked_descent();
-  std::vector<Point> local;
+  thread_local std::vector<Point> local, consumed;
   for (std::size_t f = begin; f != end; ++f) {
     if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
     const TrianglePatch& p = patches_[f];
     const long n = layout.rates[f];
     std::array<float, 3>* out = out_all + layout.point_offsets[f];
+    gather_points(p.points, pos, local);  // once per face: both sums below read them n^2 times
     // The same points as points(), differentiated in the patch's own
     // coordinates: the patch's rotation keeps the orientation, so du x dv
     // there points the same way as on the face.
@@ -161,17 +162,22 @@ void TriangleFamily::normals(const TessellationLayout& layout, std::size_t begin
       p.to_patch(a, b, 3 * n, pa, pb);
       const double *wu = nullptr, *wv = nullptr;
       if (grid.derivative_weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3, wu, wv)) {
-        Derivatives d;
-        d.du = stencil_sum(wu, p.points.data(), p.points.size(), pos);
-        d.dv = stencil_sum(wv, p.points.data(), p.points.size(), pos);
-        const Point normal = d.normal();
+        // Both sums in one pass over the points.
+        double ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
+        for (std::size_t h = 0, m = local.size(); h < m; ++h) {
+          const Point& q = local[h];
+          ux += wu[h] * q[0], uy += wu[h] * q[1], uz += wu[h] * q[2];
+          vx += wv[h] * q[0], vy += wv[h] * q[1], vz += wv[h] * q[2];
+        }
+        const Point normal = Derivatives{{0, 0, 0}, {ux, uy, uz}, {vx, vy, vz}}.normal();
         *out++ = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
         return;
       }
-      gather_points(p.points, pos, local);
       // Exact parameters: sqrt(3)'s derivative stencils are found at the grid
       // point the descent reaches; Loop's polynomial takes them as doubles.
-      const Point normal = descent.derivatives(p.valence, p.region, local, ExactDual{Fraction::make(pa, 3 * n), 1, 0},
+      // The descent consumes its points: a copy, so that `local` stays whole.
+      consumed = local;
+      const Point normal = descent.derivatives(p.valence, p.region, consumed, ExactDual{Fraction::make(pa, 3 * n), 1, 0},
                                                ExactDual{Fraction::make(pb, 3 * n), 0, 1}).normal();
       *out++ = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
     };
