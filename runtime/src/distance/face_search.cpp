@@ -105,7 +105,16 @@ void FaceSearch::improve(const SubPatch& s, const ConvexBound::Result& r, const 
   improve(s, at[0], at[1], r.point, 0, q, best);
 }
 
-bool FaceSearch::consider(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const {
+bool FaceSearch::consider(const SubPatch& s, double& x, double& y, const Point& q, FaceHit& best) const {
+  // Where the family has exact derivatives there (perhaps at a grid point
+  // next to (x, y), where (x, y) then moves), they come with the exact point:
+  // far cheaper than a bounded evaluation between the grids (sqrt(3)).
+  Derivatives d;
+  double gx = x, gy = y;
+  if (family_.derivatives(s, gx, gy, d)) {
+    x = gx, y = gy;
+    return improve(s, x, y, d.point, 0, q, best);
+  }
   const Approximation a = family_.evaluate(s, x, y, tolerance_ * 0.01);
   return improve(s, x, y, a.point, a.bound, q, best);
 }
@@ -389,7 +398,7 @@ void FaceSearch::run(const Point& q, FaceHit& best) {
       if (r.bounded && r.lower >= best.distance - tolerance_) continue;
     } else {
       // The centre; where it is the nearest point so far, Gauss-Newton from there.
-      const auto [cx, cy] = s.domain.centre();
+      auto [cx, cy] = s.domain.centre();
       if (consider(s, cx, cy, q, best)) polish(s, cx, cy, q, best);
     }
     if (node.depth == kMaxDepth) {

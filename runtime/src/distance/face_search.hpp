@@ -76,7 +76,9 @@ class FaceSearch {
   };
   // Gauss-Newton from (x, y) inside the sub-patch; improves `best`.
   void polish(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const;
-  bool consider(const SubPatch& s, double x, double y, const Point& q, FaceHit& best) const;  // true when it improved best
+  // The point at (x, y), or at the grid point next to it where exact
+  // derivatives move it there; true when it improved best.
+  bool consider(const SubPatch& s, double& x, double& y, const Point& q, FaceHit& best) const;
   bool improve(const SubPatch& s, double x, double y, const Point& point, double bound, const Point& q, FaceHit& best) const;
   // The same with a point the convexity bound's Newton found in `s`.
   void improve(const SubPatch& s, const ConvexBound::Result& r, const Point& q, FaceHit& best) const;

@@ -32,6 +32,22 @@ std::array<double, 2> cell_corner(int m, int cell, int k) {
   return {static_cast<double>(a + c[0]) / m, static_cast<double>(b + c[1]) / m};
 }
 
+// The point (a/g, b/g) of the unit triangle nearest (X, Y) among the grid's
+// nodes and centres (a = b mod 3: the points the triangle tables store at
+// rate g/3); false where none is (never, for g >= 3).
+bool nearest_grid_point(double X, double Y, std::int64_t g, std::int64_t& a, std::int64_t& b) {
+  const double G = static_cast<double>(g);
+  const auto a0 = static_cast<std::int64_t>(std::floor(X * G)), b0 = static_cast<std::int64_t>(std::floor(Y * G));
+  double best = INFINITY;
+  for (std::int64_t i = a0 - 1; i <= a0 + 2; ++i)
+    for (std::int64_t j = b0 - 1; j <= b0 + 2; ++j) {
+      if (i < 0 || j < 0 || i + j > g || ((i - j) % 3 + 3) % 3 != 0) continue;
+      const double dx = static_cast<double>(i) / G - X, dy = static_cast<double>(j) / G - Y;
+      if (dx * dx + dy * dy < best) best = dx * dx + dy * dy, a = i, b = j;
+    }
+  return best < INFINITY;
+}
+
 }  // namespace
 
 bool TriangleFamily::hull_bounds() const {
@@ -132,15 +148,35 @@ Approximation TriangleFamily::evaluate(const SubPatch& in, double x, double y, d
 
 bool TriangleFamily::derivatives(const SubPatch& in, double& x, double& y, Derivatives& out) const {
   const TrianglePatchDescent& descent = checked_descent();
-  if (tables_.polynomial_degree() <= 0) return false;  // sqrt(3): no exact derivatives
   auto l = in.domain.local(x, y);
   const bool inside = in.domain.contains_local(l[0], l[1]);
   in.domain.clamp_local(l[0], l[1]);
   int valence = 0, region = 0;
   std::vector<Point> points = layout_points(in, valence, region);
-  if (valence != 6 && l[0] == 0 && l[1] == 0) return false;  // the extraordinary vertex: no parametric derivative
   // The own coordinates carry their derivatives along the patch's (x, y), so the result is along those.
   const auto j = in.domain.inverse_jacobian();
+  if (tables_.polynomial_degree() <= 0) {
+    // sqrt(3): the regular patch's derivative stencils are stored on the grids
+    // 1/(3n), at nodes and centres, and the descent's steps (x 3) keep a point
+    // of the finest grid on it: the nearest such point of the sub-patch.
+    const std::int64_t g = 3 * static_cast<std::int64_t>(*std::max_element(tables_.rates().begin(), tables_.rates().end()));
+    const double *wu = nullptr, *wv = nullptr;
+    if (!tables_.grid(6, static_cast<int>(g / 3)).derivative_weights(TriangleTables::GridPoint::Node, 0, 0, wu, wv))
+      return false;  // tables from before version 6
+    std::int64_t a = 0, b = 0;
+    if (!nearest_grid_point(l[0], l[1], g, a, b)) return false;
+    if (valence != 6 && a == 0 && b == 0) return false;  // the extraordinary vertex: no parametric derivative
+    try {
+      out = descent.derivatives(valence, region, points, ExactDual{Fraction::make(a, g), j[0], j[1]},
+                                ExactDual{Fraction::make(b, g), j[2], j[3]});
+    } catch (const EvaluationError&) {
+      return false;
+    }
+    const auto p = in.domain.at(static_cast<double>(a) / static_cast<double>(g), static_cast<double>(b) / static_cast<double>(g));
+    x = p[0], y = p[1];
+    return true;
+  }
+  if (valence != 6 && l[0] == 0 && l[1] == 0) return false;  // the extraordinary vertex: no parametric derivative
   try {
     out = descent.derivatives(valence, region, points, Dual{l[0], j[0], j[1]}, Dual{l[1], j[2], j[3]});
   } catch (const EvaluationError&) {  // within 2^-64 of the extraordinary vertex
