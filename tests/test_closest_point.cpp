@@ -278,6 +278,79 @@ TEST_CASE("signed distances are negative exactly inside every bundled closed mes
   }
 }
 
+// Infinitely sharp edges make creases and corners in the surface, where the
+// faces on either side have different normals: the side of a point whose
+// nearest surface point is on a crease or a corner follows from the normals
+// of all the faces there (their angle-weighted sum), not from the one face the
+// search found it in (whose normal may be orthogonal to the residual: a point
+// in the plane of a flat face, just beyond its sharp edge). Query points on
+// and next to the planes of the control cube's faces, against ray parity on a
+// fine tessellation.
+TEST_CASE("signed distances next to infinitely sharp creases and corners follow every face there", "[runtime][distance]") {
+  const std::string cube_text = [] {
+    std::ifstream in(kMeshes / "cube.obj");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }();
+  // A crease loop round the face x = -0.5 (corners 0 1 3 2), and every edge of the cube sharp.
+  const std::string loop = cube_text + "t crease 5/4/0 0 1 3 2 0 10 10 10 10\n";
+  std::string all = cube_text;
+  for (const char* e : {"0 1", "1 3", "3 2", "2 0", "4 5", "5 7", "7 6", "6 4", "0 4", "1 5", "2 6", "3 7"})
+    all += std::string("t crease 2/1/0 ") + e + " 10\n";
+  // Loop: the cube's quads split into triangles, every cube edge sharp.
+  std::string triangles;
+  for (const char* line : {"v -0.5 -0.5 -0.5", "v -0.5 -0.5 0.5", "v -0.5 0.5 -0.5", "v -0.5 0.5 0.5", "v 0.5 -0.5 -0.5",
+                            "v 0.5 -0.5 0.5", "v 0.5 0.5 -0.5", "v 0.5 0.5 0.5", "f 1 3 7", "f 1 7 5", "f 2 6 8", "f 2 8 4",
+                            "f 1 5 6", "f 1 6 2", "f 3 4 8", "f 3 8 7", "f 1 2 4", "f 1 4 3", "f 5 7 8", "f 5 8 6"})
+    triangles += std::string(line) + "\n";
+  triangles += all.substr(cube_text.size());
+  const auto dir = scratch_dir("sharp-signs");
+  int near_crease = 0;
+  struct Case {
+    const char* scheme;
+    const char* extension;
+    std::vector<std::pair<const char*, std::string>> meshes;
+  };
+  for (const Case& c : {Case{"catmull-clark", "sgs", {{"crease-loop", loop}, {"all-sharp", all}}},
+                        Case{"nonpoly", "sgs", {{"crease-loop", loop}, {"all-sharp", all}}},
+                        Case{"loop", "sgt", {{"all-sharp-triangles", triangles}}}}) {
+    const char* scheme = c.scheme;
+    const auto tables = Tables::load(generated_table(scheme, "--valence 3-8 --n 16", c.extension).string());
+    for (const auto& [name, text] : c.meshes) {
+      CAPTURE(scheme, name);
+      const auto path = dir / (std::string(name) + ".obj");
+      std::ofstream(path) << text;
+      const Mesh mesh = read_obj(path.string());
+      const Surface surface(SurfaceTopology::create(tables, mesh), mesh.positions);
+      const ClosestPointQuery query(surface);
+      const PolygonSoup soup = tessellate(surface, std::vector<int>(mesh.face_count(), 16));
+      const double diagonal = diagonal_of(mesh);
+      for (int axis = 0; axis < 3; ++axis)
+        for (double plane : {-0.5, 0.5})
+          for (double offset : {-1e-9, 0.0, 1e-9})
+            for (int i = 0; i <= 8; ++i)
+              for (int j = 0; j <= 8; ++j) {
+                Point q{0, 0, 0};
+                q[axis] = plane + offset;
+                q[(axis + 1) % 3] = -0.95 + 0.2375 * i;
+                q[(axis + 2) % 3] = -0.95 + 0.2375 * j;
+                const ClosestPoint r = query.find(q);
+                REQUIRE(r.found);
+                if (r.distance < 1e-2 * diagonal) continue;  // parity on the tessellation is not reliable there
+                const bool in = inside_by_parity(soup, q);
+                INFO("query (" << q[0] << ", " << q[1] << ", " << q[2] << ") signed distance " << r.signed_distance << ", normal . residual "
+                               << (q[0] - r.point[0]) * r.normal[0] + (q[1] - r.point[1]) * r.normal[1] + (q[2] - r.point[2]) * r.normal[2]);
+                CHECK((r.signed_distance < 0) == in);
+                // Where the residual is nearly in the found face's tangent plane, only the other faces decide.
+                const Point res{q[0] - r.point[0], q[1] - r.point[1], q[2] - r.point[2]};
+                if (std::fabs(res[0] * r.normal[0] + res[1] * r.normal[1] + res[2] * r.normal[2]) < 1e-3 * r.distance) ++near_crease;
+              }
+    }
+  }
+  CHECK(near_crease >= 8);  // the cases the found face's normal alone gets wrong half the time
+}
+
 // A sub-patch `depth` scheme steps below a random prepared face's patch, down random children.
 SubPatch random_sub_patch(const Surface& surface, std::mt19937& rng, int depth) {
   const Family& family = surface.topology().family();

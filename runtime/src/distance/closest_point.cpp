@@ -96,6 +96,7 @@ struct ClosestPointQuery::Impl {
 
   void build(const Surface& surface);
   ClosestPoint find(const Point& q) const;
+  Point outward(const FaceHit& hit, const Point& normal) const;
 };
 
 namespace {
@@ -124,7 +125,94 @@ bool visit_face(RTCPointQueryFunctionArguments* args) {
   return false;
 }
 
+// The faces whose boxes a small sphere round a surface point touches (holes left out).
+struct FacesNear {
+  std::vector<unsigned> faces;
+  const std::vector<char>* holes;
+};
+bool collect_face(RTCPointQueryFunctionArguments* args) {
+  auto* state = static_cast<FacesNear*>(args->userPtr);
+  if (state->holes->empty() || !(*state->holes)[args->primID]) state->faces.push_back(args->primID);
+  return false;
+}
+
+// Whether patch parameter (x, y) lies on the border of the whole patch (the unit square or triangle).
+bool on_patch_border(bool triangle, double x, double y) {
+  constexpr double e = 1e-12;
+  if (x <= e || y <= e) return true;
+  return triangle ? x + y >= 1 - e : x >= 1 - e || y >= 1 - e;
+}
+
+// The angle at (x, y) of a patch's domain: that of the corner it is at, in
+// space (between the two sides' tangents, du and dv along the patch), pi on a
+// side, 2 pi inside.
+double domain_angle(bool triangle, double x, double y, const Derivatives& d) {
+  const SubDomain unit = SubDomain::unit(triangle);
+  constexpr double e = 1e-9;
+  for (int k = 0; k < unit.corners(); ++k) {
+    const auto c = unit.corner(k), next = unit.corner((k + 1) % unit.corners()),
+               previous = unit.corner((k + unit.corners() - 1) % unit.corners());
+    if (std::fabs(x - c[0]) > e || std::fabs(y - c[1]) > e) continue;
+    const auto along = [&](const std::array<double, 2>& to) {
+      const double a = to[0] - c[0], b = to[1] - c[1];
+      return Point{a * d.du[0] + b * d.dv[0], a * d.du[1] + b * d.dv[1], a * d.du[2] + b * d.dv[2]};
+    };
+    const Point e1 = along(next), e2 = along(previous);
+    return std::atan2(length(cross(e1, e2)), dot(e1, e2));
+  }
+  return on_patch_border(triangle, x, y) ? M_PI : 2 * M_PI;
+}
+
 }  // namespace
+
+// The direction that says which side of the surface a point is on when its
+// nearest surface point is the hit's: the normal there, unless the point is
+// on the border of its face's patch, where the surface may have a crease or a
+// corner (infinitely sharp edges and vertices). There, the sum of the unit
+// normals of every face whose surface passes through the point, each weighted
+// by its angle there: the angle-weighted pseudonormal of Baerentzen and
+// Aanaes, whose side is the side of every point whose nearest surface point
+// it is (on a smooth surface all the normals agree, and so does the sum).
+Point ClosestPointQuery::Impl::outward(const FaceHit& hit, const Point& normal) const {
+  const bool triangle = hit.patch.domain.triangle;
+  if (family->has_boundary() || !holes.empty() || !on_patch_border(triangle, hit.x, hit.y)) return normal;
+  const Point& p = hit.point;
+  // A face through p is within the evaluation's rounding of it; its box, rounded outward, holds p.
+  const double magnitude = std::max({std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])});
+  const double touch = 4 * tolerance + hit.evaluation + 1e-12 * magnitude;
+  FacesNear near{{}, &holes};
+  RTCPointQuery query;
+  query.x = static_cast<float>(p[0]), query.y = static_cast<float>(p[1]), query.z = static_cast<float>(p[2]);
+  query.time = 0;
+  query.radius = float_up(touch + 1e-7 * (std::fabs(p[0]) + std::fabs(p[1]) + std::fabs(p[2])));
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  rtcPointQuery(scene, &query, &context, collect_face, &near);
+  Point sum{0, 0, 0};
+  for (const unsigned g : near.faces) {
+    // The face's point nearest p, by the same search restricted to it.
+    FaceSearch search(*family, prepared, enclosures, convex, roots, tolerance);
+    FaceHit at;
+    at.distance = touch;
+    const auto centre = SubDomain::unit(triangle).centre();
+    search.start(g, centre[0], centre[1], p, at);
+    search.add(g, p, at);
+    search.run(p, at);
+    search.refine(p, at);
+    if (!(at.distance < touch) || at.patch.points.empty()) continue;  // the face does not pass through p
+    double x = at.x, y = at.y;
+    Derivatives d;
+    search.derivatives(at.patch, x, y, d);
+    const Point n = cross(d.du, d.dv);
+    const double len = length(n);
+    if (!(len > 0)) continue;
+    const double w = orientation[g] * domain_angle(triangle, at.x, at.y, d) / len;
+    for (int k = 0; k < 3; ++k) sum[k] += w * n[k];
+  }
+  const double len = length(sum);
+  if (!(len > 0)) return normal;
+  return {sum[0] / len, sum[1] / len, sum[2] / len};
+}
 
 void ClosestPointQuery::Impl::build(const Surface& surface) {
   const auto start = std::chrono::steady_clock::now();
@@ -282,7 +370,7 @@ ClosestPoint ClosestPointQuery::Impl::find(const Point& q) const {
   }
   if (len > 0)
     for (int k = 0; k < 3; ++k) out.normal[k] = orientation[h.face] * n[k] / len;
-  const double side = dot(minus(q, out.point), out.normal);
+  const double side = dot(minus(q, out.point), outward(h, out.normal));
   out.signed_distance = side < 0 ? -out.distance : out.distance;
   return out;
 }
