@@ -214,6 +214,35 @@ TEST_CASE("nonpoly du and dv are the limits of difference quotients of exact lim
   }
 }
 
+// Towards an extraordinary vertex the descent takes differences of points
+// whose spread shrinks while their coordinates do not: rounded at the size of
+// the coordinates, the normal 2^-45 from the vertex had no right digit (a
+// review found (-0.13, -0.06, -0.99) where the vertex's is (0.58, 0.58, -0.58)).
+// Re-centred at every level it converges to the vertex normal, which comes
+// from the tangent stencils (the eigenvectors), another route.
+TEST_CASE("normals next to an extraordinary vertex keep their digits down to 2^-45 from it", "[runtime][derivatives]") {
+  struct Case {
+    const char* scheme;
+    std::filesystem::path tables;
+    const char* mesh;
+    std::size_t face;
+    double corner_u, corner_v;  // the vertex, a corner of the face's domain
+  };
+  for (const Case& c : {Case{"catmull-clark", tables_for("catmull-clark"), "cube", 0, 1, 1},
+                        Case{"nonpoly", tables_for("nonpoly"), "cube", 0, 1, 1},
+                        Case{"loop", generated_table("loop", "--valence 3-8 --n 4", "sgt"), "icosahedron", 4, 0, 1}}) {
+    CAPTURE(c.scheme);
+    const Surface surface = surface_of(Tables::load(c.tables.string()), load(c.mesh));
+    const Point vertex = surface.normal(c.face, c.corner_u, c.corner_v);
+    for (int k : {30, 36, 40, 45}) {
+      CAPTURE(k);
+      const double h = std::ldexp(1.0, -k);  // towards the face's inside along both parameters
+      const double u = c.corner_u == 0 ? h : c.corner_u - h, v = c.corner_v == 0 ? h : c.corner_v - h;
+      CHECK(distance(surface.normal(c.face, u, v), vertex) < 1e-8);
+    }
+  }
+}
+
 TEST_CASE("derivatives are refused where they do not exist or are not exact, with a reason", "[runtime][derivatives][errors]") {
   const auto nonpoly = Tables::load(tables_for("nonpoly").string());
   const Mesh cube = load("cube");

@@ -40,7 +40,11 @@ int compare(const Fraction& a, const Fraction& b);  // -1, 0, 1
 // A face parameter (u, v): see face_domain.hpp for what it means on each face.
 struct ExactParameter {
   Fraction u, v;
-  std::string str() const { return "(" + u.str() + ", " + v.str() + ")"; }
+  std::string str() const {
+    std::string out("(");  // appended: GCC 12 warns falsely (-Wrestrict) on "(" + string once inlined
+    out += u.str(), out += ", ", out += v.str(), out += ")";
+    return out;
+  }
 };
 
 }  // namespace stencil_runtime

@@ -6,6 +6,7 @@
 
 #include "curve_orbit.hpp"
 #include "family/parameter_ops.hpp"
+#include "family/recentre.hpp"
 
 namespace stencil_runtime {
 
@@ -266,12 +267,13 @@ SecondDerivatives QuadPatchDescent::tensor(const std::vector<Point>& q, const do
 }
 
 template <class P>
-std::array<P, 2> QuadPatchDescent::into_regular(int valence, std::vector<Point>& q, P x, P y, double& scale) const {
+std::array<P, 2> QuadPatchDescent::into_regular(int valence, std::vector<Point>& q, P x, P y, double& scale, Point& offset) const {
   std::vector<Point> next;
   for (int level = 0; level <= kMaxLevels; ++level) {
     if (valence == 4) return {x, y};
     if (at_origin(x, y))
       throw EvaluationError("the patch has no parametric derivative at its extraordinary vertex (" + kind_name(valence) + ")");
+    recentre(q, offset);  // each level's differences rounded at their own size (family/recentre.hpp)
     into_child(tables_.descent(valence), valence, q, x, y, next);
     scale *= 2;
   }
@@ -281,7 +283,8 @@ std::array<P, 2> QuadPatchDescent::into_regular(int valence, std::vector<Point>&
 template <class P>
 PatchDerivatives QuadPatchDescent::derivatives(int valence, std::vector<Point>& q, P x0, P y0) const {
   double scale = 1;  // d(child parameter) / d(patch parameter): 2 per halving
-  const auto [x, y] = into_regular(valence, q, x0, y0, scale);
+  Point offset{0, 0, 0};
+  const auto [x, y] = into_regular(valence, q, x0, y0, scale, offset);
   double wx[4], wy[4], dx[4], dy[4];
   if (d_.degree > 0) {
     polynomial_basis(to_real(x), wx, dx);
@@ -295,7 +298,9 @@ PatchDerivatives QuadPatchDescent::derivatives(int valence, std::vector<Point>& 
     regular_basis(x, wx, dx);
     regular_basis(y, wy, dy);
   }
-  return tensor(q, wx, wy, dx, dy, nullptr, nullptr, scale);
+  PatchDerivatives out = tensor(q, wx, wy, dx, dy, nullptr, nullptr, scale);
+  for (int k = 0; k < 3; ++k) out.point[k] += offset[k];
+  return out;
 }
 
 template <class P>
@@ -304,11 +309,14 @@ SecondDerivatives QuadPatchDescent::second_derivatives(int valence, std::vector<
     throw EvaluationError("second derivatives need a scheme whose regular patches are polynomial (Catmull-Clark): this "
                           "scheme's are not, and its tables hold no phi''");
   double scale = 1;
-  const auto [x, y] = into_regular(valence, q, x0, y0, scale);
+  Point offset{0, 0, 0};
+  const auto [x, y] = into_regular(valence, q, x0, y0, scale, offset);
   double wx[4], wy[4], dx[4], dy[4], ddx[4], ddy[4];
   polynomial_basis(to_real(x), wx, dx, ddx);
   polynomial_basis(to_real(y), wy, dy, ddy);
-  return tensor(q, wx, wy, dx, dy, ddx, ddy, scale);
+  SecondDerivatives out = tensor(q, wx, wy, dx, dy, ddx, ddy, scale);
+  for (int k = 0; k < 3; ++k) out.point[k] += offset[k];
+  return out;
 }
 
 void QuadPatchDescent::child(int valence, const std::vector<Point>& q, int cx, int cy, std::vector<Point>& out,

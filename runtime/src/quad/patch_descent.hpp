@@ -78,7 +78,8 @@ class QuadPatchDescent {
   // The points descend (consumed) into the regular patch holding (x, y);
   // its parameter there, `scale` multiplied by 2 per halving.
   template <class P>
-  std::array<P, 2> into_regular(int valence, std::vector<Point>& points, P x, P y, double& scale) const;
+  // `offset`: where the points were moved to keep their differences (family/recentre.hpp).
+  std::array<P, 2> into_regular(int valence, std::vector<Point>& points, P x, P y, double& scale, Point& offset) const;
   void regular_child(std::vector<Point>& q, int cx, int cy) const;
 
   const QuadTables& tables_;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "family/parameter_ops.hpp"
+#include "family/recentre.hpp"
 #include "tables/monomial_jet.hpp"
 
 namespace stencil_runtime {
@@ -217,13 +218,14 @@ void TrianglePatchDescent::require_polynomial() const {
 }
 
 template <class P>
-void TrianglePatchDescent::descend_to_regular(int& valence, int& region, std::vector<Point>& q, P& x, P& y) const {
+void TrianglePatchDescent::descend_to_regular(int& valence, int& region, std::vector<Point>& q, P& x, P& y, Point& offset) const {
   const int m = tables_.dilation();
   std::vector<Point> next;
   for (int level = 0; valence != 6; ++level) {
     if (level == kMaxLevels)
       throw EvaluationError("the parameter is an extraordinary vertex (or within 2^-64 of one): no parametric "
                             "derivative there");
+    recentre(q, offset);  // each level's differences rounded at their own size (family/recentre.hpp)
     const int c = cell_of(x, y, m);
     const TriangleChild& child = tables_.children(valence, region)[static_cast<std::size_t>(c)];
     apply(child.rows, q, next);
@@ -272,15 +274,20 @@ Derivatives TrianglePatchDescent::derivatives(int valence, int region, std::vect
 
 SecondDerivatives TrianglePatchDescent::second_derivatives(int valence, int region, std::vector<Point>& q, Dual x, Dual y) const {
   require_polynomial();
-  descend_to_regular(valence, region, q, x, y);
-  return regular_derivatives(q, x, y);
+  Point offset{0, 0, 0};
+  descend_to_regular(valence, region, q, x, y, offset);
+  SecondDerivatives out = regular_derivatives(q, x, y);
+  for (std::size_t k = 0; k < 3; ++k) out.point[k] += offset[k];
+  return out;
 }
 
 Derivatives TrianglePatchDescent::derivatives(int valence, int region, std::vector<Point>& q, ExactDual x, ExactDual y) const {
   if (tables_.polynomial_degree() > 0)
     return derivatives(valence, region, q, Dual{to_real(x), x.du, x.dv}, Dual{to_real(y), y.du, y.dv});
-  const std::string at = "(" + x.value.str() + ", " + y.value.str() + ")";
-  descend_to_regular(valence, region, q, x, y);
+  std::string at("(");  // appended: GCC 12 warns falsely (-Wrestrict) on "(" + string here
+  at += x.value.str(), at += ", ", at += y.value.str(), at += ")";
+  Point offset{0, 0, 0};
+  descend_to_regular(valence, region, q, x, y, offset);
   int n = 0;
   std::int64_t a = 0, b = 0;
   if (!held(tables_, x.value, y.value, n, a, b))
@@ -299,6 +306,7 @@ Derivatives TrianglePatchDescent::derivatives(int valence, int region, std::vect
   Derivatives out;
   out.point = combine(grid.weights(kind, a / 3, b / 3), q);
   for (std::size_t k = 0; k < 3; ++k) {
+    out.point[k] += offset[k];
     out.du[k] = x.du * dX[k] + y.du * dY[k];
     out.dv[k] = x.dv * dX[k] + y.dv * dY[k];
   }

@@ -60,7 +60,8 @@ class TrianglePatchDescent {
   // Down the cells holding (x, y) until the cell is regular (valence 6);
   // throws EvaluationError at the extraordinary vertex itself.
   template <class P>
-  void descend_to_regular(int& valence, int& region, std::vector<Point>& points, P& x, P& y) const;
+  // `offset`: where the points were moved to keep their differences (family/recentre.hpp).
+  void descend_to_regular(int& valence, int& region, std::vector<Point>& points, P& x, P& y, Point& offset) const;
   // Throws EvaluationError for a scheme without a polynomial regular patch.
   void require_polynomial() const;
   // The regular cell's polynomial at (x, y) with its first and second derivatives along (u, v).
