@@ -125,3 +125,39 @@ TEST_CASE("stencileval and stenciltess take triangle meshes with sqrt(3) tables"
   }
   fs::remove_all(dir);
 }
+
+// A double is an exact binary fraction, but sqrt(3)'s steps (x 3) never
+// shrink its denominator: adding two such coordinates (to find the face's part
+// holding them) overflowed 64 bits before the descent's own fallback to
+// doubles was reached, and stencileval refused parameters such as
+// (0.001198901704, 0.993872147900) that stencildist itself returns. Now they
+// are evaluated within the tolerance, and land next to the exact limit
+// points of the grid round them (plain subdivision).
+TEST_CASE("sqrt(3) evaluates any double parameter within its bound, next to the reference's limit points", "[runtime][triangle][sqrt3]") {
+  const auto tables = Tables::load(sqrt3_tables().string());
+  const Mesh mesh = bundled("tri-torus");
+  const Surface surface = surface_of(tables, mesh);
+  sqrt3_reference::Subdivision reference(mesh);
+  constexpr long n = 9;
+  reference.step(), reference.step(), reference.step(), reference.step();
+  const auto limits = reference.limits();
+  const double size = extent(mesh), tolerance = 1e-12 * size;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int trial = 0; trial < 100; ++trial) {
+    const std::size_t f = static_cast<std::size_t>(trial) % mesh.face_count();
+    double u = unit(rng), v = unit(rng);
+    if (u + v > 1) u = 1 - u, v = 1 - v;
+    if (trial % 4 == 0) u = 0.001198901704, v = 0.993872147900;  // the reported one, on every fourth face
+    CAPTURE(f, u, v);
+    Evaluation e;
+    REQUIRE_NOTHROW(e = surface.evaluate(f, u, v, tolerance));
+    CHECK(e.bound <= tolerance);
+    // The nearest reference limit point of the face's grid 1/9 is within the grid's reach.
+    double nearest = INFINITY;
+    for (long k = 0; k <= n; ++k)
+      for (long i = 0; i + k <= n; ++i)
+        nearest = std::min(nearest, distance(e.point, limits[static_cast<std::size_t>(reference.vertex_at(static_cast<int>(f), i, k, n))]));
+    CHECK(nearest < 0.2 * size);
+  }
+}

@@ -373,15 +373,15 @@ const TrianglePatchDescent& TriangleFamily::checked_descent() const {
 }
 
 Approximation TriangleFamily::evaluate(std::size_t face, const ExactParameter& at, double tolerance, const Point* prepared) const {
-  PatchStencil s;
-  if (held_stencil(face, at, s)) {  // held by the tables: no descent needed (nor patch subdivision data)
-    Approximation out;
-    out.point = stencil_sum(s.weights, s.points, s.size, prepared);
-    return out;
-  }
   try {
+    PatchStencil s;
+    if (held_stencil(face, at, s)) {  // held by the tables: no descent needed (nor patch subdivision data)
+      Approximation out;
+      out.point = stencil_sum(s.weights, s.points, s.size, prepared);
+      return out;
+    }
     return descend(face, at.u, at.v, tolerance, prepared);
-  } catch (const ParameterOverflow&) {  // beyond 64-bit fractions: the nearest double
+  } catch (const ParameterOverflow&) {  // beyond 64-bit fractions (finding the face's part too): the nearest double
     Approximation a = descend(face, at.u.to_double(), at.v.to_double(), tolerance, prepared);
     a.exact = false;
     return a;
