@@ -648,6 +648,11 @@ TEST_CASE("stencildist answers as the library does and refuses bad points files 
     const float xyz[9] = {0, 0, 0, 1, 1, 1, 2, 2, 2};
     binary.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
     refused(write("more-binary.ply", binary), "12 bytes after the 2 points the header declares");
+    // A coordinate that is not a number is named by its point, counted from 1 as the text files' lines are.
+    std::string nan = "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+    const float values[6] = {0, 0, 0, 1, std::nanf(""), 1};
+    nan.append(reinterpret_cast<const char*>(values), sizeof values);
+    refused(write("nan-binary.ply", nan), "nan-binary.ply: point 2 of 2 (binary): coordinate");
   }
   {
     const CliResult bad = dist(good, "--out " + good);

@@ -274,7 +274,8 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
           } else {
             std::memcpy(&x, data.data() + offset, 8);
           }
-          points[p][static_cast<std::size_t>(k)] = checked_coordinate(x, path + ": point " + std::to_string(p));
+          points[p][static_cast<std::size_t>(k)] =
+              checked_coordinate(x, path + ": point " + std::to_string(p + 1) + " of " + std::to_string(count) + " (binary)");
         }
       offset += static_cast<std::size_t>(bytes);
     }
