@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "distance/face_search.hpp"
@@ -160,7 +161,7 @@ double domain_angle(bool triangle, double x, double y, const Derivatives& d) {
     const Point e1 = along(next), e2 = along(previous);
     return std::atan2(length(cross(e1, e2)), dot(e1, e2));
   }
-  return on_patch_border(triangle, x, y) ? M_PI : 2 * M_PI;
+  return on_patch_border(triangle, x, y) ? std::numbers::pi : 2 * std::numbers::pi;
 }
 
 }  // namespace
