@@ -89,7 +89,7 @@ void TriangleFamily::plan(TessellationLayout& layout, const detail::RangeRunner&
 
 void TriangleFamily::points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
                             std::array<float, 3>* out_all) const {
-  thread_local std::vector<Point> local, consumed;
+  thread_local std::vector<Point> local;
   for (std::size_t f = begin; f != end; ++f) {
     if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
     const TrianglePatch& p = patches_[f];
