@@ -3,7 +3,7 @@
 // the scheme's own rules to >= 100k control faces, uniform rates 4, 8, 16, 24,
 // 1 and 2 threads: a plan made once, then the median of three evaluations of
 // positions alone (TessellationPlan::evaluate) and of positions plus unit
-// normals (evaluate + evaluate_normals), for nonpoly and Catmull-Clark. For
+// normals (evaluate with both outputs, one pass), for nonpoly and Catmull-Clark. For
 // Catmull-Clark, OpenSubdiv's Bfr evaluates the same points with and without
 // first derivatives in the same run (cached surfaces, per face
 // PreparePatchPoints, then Evaluate at every point), as the reference ratio.
@@ -110,8 +110,7 @@ int main(int argc, char** argv) {
         soup.normals.resize(soup.positions.size());
         const double alone = median3([&] { plan.evaluate(surface, soup.positions.data()); });
         const double both = median3([&] {
-          plan.evaluate(surface, soup.positions.data());
-          plan.evaluate_normals(surface, soup.normals.data());
+          plan.evaluate(surface, soup.positions.data(), soup.normals.data());
         });
         std::printf("| %s | %zu | %d | %d | %zu | %.2f | %.2f | %.2f |", tables->scheme().c_str(), mesh.face_count(), rate,
                     threads, soup.positions.size(), alone * 1e3, both * 1e3, both / alone);

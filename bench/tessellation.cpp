@@ -86,8 +86,7 @@ void run_rows(const char* scheme, const NamedMesh& m, const std::shared_ptr<cons
         const TessellationPlan plan(surface.shared_topology(), rates, {threads});
         PolygonSoup soup = plan.make_soup();
         soup.normals.resize(soup.positions.size());
-        plan.evaluate(surface, soup.positions.data());
-        plan.evaluate_normals(surface, soup.normals.data());
+        plan.evaluate(surface, soup.positions.data(), soup.normals.data());
         return std::chrono::duration<double>(Clock::now() - s).count();
       });
       char normals_columns[64];

@@ -121,11 +121,8 @@ int main(int argc, char** argv) {
     if (frames.empty()) {
       const auto t1 = Clock::now();
       surface.set_positions(mesh.positions);
-      plan.evaluate(surface, soup.positions.data());
-      if (with_normals) {
-        soup.normals.resize(soup.positions.size());
-        plan.evaluate_normals(surface, soup.normals.data());
-      }
+      if (with_normals) soup.normals.resize(soup.positions.size());
+      plan.evaluate(surface, soup.positions.data(), with_normals ? soup.normals.data() : nullptr);
       const double tess = seconds_since(t1);
       write_polygons(soup, out);
       std::printf("%zu limit points, %zu quads + %zu triangles (%zu triangles), tessellated in %.4f s (%.1f M triangles/s), "
@@ -158,11 +155,8 @@ int main(int argc, char** argv) {
       const auto t1 = Clock::now();
       try {
         surface.set_positions(frame.positions);
-        plan.evaluate(surface, soup.positions.data());
-        if (with_normals) {
-          soup.normals.resize(soup.positions.size());
-          plan.evaluate_normals(surface, soup.normals.data());
-        }
+        if (with_normals) soup.normals.resize(soup.positions.size());
+        plan.evaluate(surface, soup.positions.data(), with_normals ? soup.normals.data() : nullptr);
       } catch (const std::exception& e) {
         throw std::runtime_error(files[k] + ": frame " + std::to_string(k) + ": " + e.what());
       }

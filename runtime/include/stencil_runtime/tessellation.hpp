@@ -59,9 +59,11 @@ class TessellationPlan {
   void evaluate(const Surface& surface, std::array<float, 3>* positions) const;
   // The unit normals at the same points (du x dv, outward for counter-clockwise
   // faces; docs/runtime.md "Derivatives and normals"), e.g. into make_soup()'s
-  // normals resized to point_count(). Quad schemes only so far: throws
-  // EvaluationError for a triangle scheme.
+  // normals resized to point_count().
   void evaluate_normals(const Surface& surface, std::array<float, 3>* normals) const;
+  // Both in one pass over the faces (cheaper than the two calls above), or
+  // the positions alone where `normals` is null.
+  void evaluate(const Surface& surface, std::array<float, 3>* positions, std::array<float, 3>* normals) const;
 
  private:
   struct Impl;

@@ -209,6 +209,14 @@ class Family {
   // derivatives yet.
   virtual void normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
                        std::array<float, 3>* out) const;
+  // points() and normals() of the same faces; the default runs one after the
+  // other over the range (its points still in cache), a family may fuse them.
+  virtual void points_and_normals(const TessellationLayout& layout, std::size_t begin, std::size_t end,
+                                  const Point* prepared, std::array<float, 3>* positions,
+                                  std::array<float, 3>* normals) const {
+    points(layout, begin, end, prepared, positions);
+    this->normals(layout, begin, end, prepared, normals);
+  }
 
   // Fills layout.point_offsets, quads and triangles for layout.rates.
   virtual void plan(TessellationLayout& layout, const detail::RangeRunner& run) const = 0;

@@ -62,15 +62,13 @@ const Point* prepared_of(const Surface& surface, const SurfaceTopology* planned)
 
 }  // namespace
 
-void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* positions) const {
-  const Point* prepared = prepared_of(surface, topology_.get());
-  const Family& family = topology_->family();
-  const TessellationLayout& layout = impl_->layout;
-  (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
-    family.points(layout, begin, end, prepared, positions);
-  });
+namespace {
+
+// The rim's points (round holes), after the faces'.
+void rim_points(const Family& family, const TessellationLayout& layout, const detail::RangeRunner& run,
+                const Point* prepared, std::array<float, 3>* positions) {
   std::array<float, 3>* rim = positions + layout.point_offsets.back();
-  (*impl_->run)(layout.rim.size(), [&](std::size_t begin, std::size_t end) {
+  run(layout.rim.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t r = begin; r != end; ++r) {
       const RimNode& node = layout.rim[r];
       const Point p = family.edge_node(node.face, node.corner, node.t, layout.rates[node.face], prepared);
@@ -79,17 +77,12 @@ void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* po
   });
 }
 
-void TessellationPlan::evaluate_normals(const Surface& surface, std::array<float, 3>* normals) const {
-  const Point* prepared = prepared_of(surface, topology_.get());
-  const Family& family = topology_->family();
-  const TessellationLayout& layout = impl_->layout;
-  (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
-    family.normals(layout, begin, end, prepared, normals);
-  });
-  // The rim's normals (after the faces': a rim point where the surface has no
-  // tangent plane, such as a corner, takes the normal of the face point beside it).
+// The rim's normals, after the faces' normals: a rim point where the surface
+// has no tangent plane, such as a corner, takes the normal of the face point beside it.
+void rim_normals(const Family& family, const TessellationLayout& layout, const detail::RangeRunner& run,
+                 const Point* prepared, std::array<float, 3>* normals) {
   std::array<float, 3>* rim = normals + layout.point_offsets.back();
-  (*impl_->run)(layout.rim.size(), [&](std::size_t begin, std::size_t end) {
+  run(layout.rim.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t r = begin; r != end; ++r) {
       const RimNode& node = layout.rim[r];
       const auto [x, y] = family.edge_node_parameter(node.face, node.corner, node.t, layout.rates[node.face]);
@@ -107,6 +100,41 @@ void TessellationPlan::evaluate_normals(const Surface& surface, std::array<float
   });
 }
 
+}  // namespace
+
+void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* positions) const {
+  const Point* prepared = prepared_of(surface, topology_.get());
+  const Family& family = topology_->family();
+  const TessellationLayout& layout = impl_->layout;
+  (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
+    family.points(layout, begin, end, prepared, positions);
+  });
+  rim_points(family, layout, *impl_->run, prepared, positions);
+}
+
+void TessellationPlan::evaluate_normals(const Surface& surface, std::array<float, 3>* normals) const {
+  const Point* prepared = prepared_of(surface, topology_.get());
+  const Family& family = topology_->family();
+  const TessellationLayout& layout = impl_->layout;
+  (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
+    family.normals(layout, begin, end, prepared, normals);
+  });
+  rim_normals(family, layout, *impl_->run, prepared, normals);
+}
+
+void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* positions,
+                                std::array<float, 3>* normals) const {
+  if (!normals) return evaluate(surface, positions);
+  const Point* prepared = prepared_of(surface, topology_.get());
+  const Family& family = topology_->family();
+  const TessellationLayout& layout = impl_->layout;
+  (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
+    family.points_and_normals(layout, begin, end, prepared, positions, normals);
+  });
+  rim_points(family, layout, *impl_->run, prepared, positions);
+  rim_normals(family, layout, *impl_->run, prepared, normals);
+}
+
 PolygonSoup TessellationPlan::make_soup() const {
   PolygonSoup soup;
   soup.quads = impl_->layout.quads;
@@ -119,11 +147,8 @@ PolygonSoup tessellate(const Surface& surface, const std::vector<int>& rates, co
                        bool normals) {
   const TessellationPlan plan(surface.shared_topology(), rates, options);
   PolygonSoup soup = plan.make_soup();
-  plan.evaluate(surface, soup.positions.data());
-  if (normals) {
-    soup.normals.resize(soup.positions.size());
-    plan.evaluate_normals(surface, soup.normals.data());
-  }
+  if (normals) soup.normals.resize(soup.positions.size());
+  plan.evaluate(surface, soup.positions.data(), normals ? soup.normals.data() : nullptr);
   return soup;
 }
 

@@ -86,6 +86,10 @@ class TriangleFamily final : public Family {
   // sqrt(3) exact, from the tables' derivative stencils, version 6).
   void normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
                std::array<float, 3>* out) const override;
+  // Both in one pass: each face's points gathered once, a sample's position
+  // and derivative sums in one loop over them.
+  void points_and_normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
+                          std::array<float, 3>* positions, std::array<float, 3>* normals) const override;
 
   // Below the public interface (tests, benchmarks):
   const TriangleTables& tables() const { return tables_; }
@@ -111,6 +115,10 @@ class TriangleFamily final : public Family {
   // A stored rate's stencil at the parameter, without descent.
   bool held_stencil(std::size_t face, const ExactParameter& at, PatchStencil& out) const;
   const TrianglePatchDescent& checked_descent() const;
+  // The tessellation's samples of prepared faces [begin, end): positions, unit normals or both.
+  template <bool kPositions, bool kNormals>
+  void samples(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
+               std::array<float, 3>* positions, std::array<float, 3>* normals) const;
   // A sub-patch's control points over its kind's layout (a sector's without its box), and its kind's parts.
   std::vector<Point> layout_points(const SubPatch& in, int& valence, int& region) const;
   // The normal at an extraordinary vertex from the tables' tangent stencils;

@@ -88,22 +88,76 @@ void TriangleFamily::plan(TessellationLayout& layout, const detail::RangeRunner&
 }
 
 void TriangleFamily::points(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
-                            std::array<float, 3>* out_all) const {
-  thread_local std::vector<Point> local;
+                            std::array<float, 3>* out) const {
+  samples<true, false>(layout, begin, end, pos, out, nullptr);
+}
+
+void TriangleFamily::normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
+                             std::array<float, 3>* out) const {
+  samples<false, true>(layout, begin, end, pos, nullptr, out);
+}
+
+void TriangleFamily::points_and_normals(const TessellationLayout& layout, std::size_t begin, std::size_t end,
+                                        const Point* pos, std::array<float, 3>* positions,
+                                        std::array<float, 3>* normals) const {
+  samples<true, true>(layout, begin, end, pos, positions, normals);
+}
+
+template <bool kPositions, bool kNormals>
+void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
+                             std::array<float, 3>* positions, std::array<float, 3>* normals) const {
+  const TrianglePatchDescent* descent = kNormals ? &checked_descent() : nullptr;
+  thread_local std::vector<Point> local, consumed;
   for (std::size_t f = begin; f != end; ++f) {
     if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
     const TrianglePatch& p = patches_[f];
     const long n = layout.rates[f];
-    gather_points(p.points, pos, local);
+    std::array<float, 3>* position = kPositions ? positions + layout.point_offsets[f] : nullptr;
+    std::array<float, 3>* normal = kNormals ? normals + layout.point_offsets[f] : nullptr;
+    gather_points(p.points, pos, local);  // once per face: the sums below read them n^2 times
+    const std::size_t m = local.size();
     const TriangleTables::Grid grid = tables_.grid(p.valence, static_cast<int>(n), p.region);
-    std::array<float, 3>* out = out_all + layout.point_offsets[f];
+    // Normals: the same points differentiated in the patch's own coordinates;
+    // the patch's rotation keeps the orientation, so du x dv there points the
+    // same way as on the face.
+    auto put_normal = [&](const Point& du, const Point& dv) {
+      const Point u = Derivatives{{0, 0, 0}, du, dv}.normal();
+      *normal++ = {static_cast<float>(u[0]), static_cast<float>(u[1]), static_cast<float>(u[2])};
+    };
     auto put = [&](long a, long b) {
       long pa = 0, pb = 0;
       p.to_patch(a, b, 3 * n, pa, pb);
-      const double* w = grid.weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3);
-      double x = 0, y = 0, z = 0;
-      for (std::size_t h = 0, m = local.size(); h < m; ++h) x += w[h] * local[h][0], y += w[h] * local[h][1], z += w[h] * local[h][2];
-      *out++ = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+      const auto at = static_cast<TriangleTables::GridPoint>(pa % 3);
+      const double* w = kPositions ? grid.weights(at, pa / 3, pb / 3) : nullptr;
+      const double *wu = nullptr, *wv = nullptr;
+      if (kNormals && grid.derivative_weights(at, pa / 3, pb / 3, wu, wv)) {
+        // Regular faces: the tables' derivative stencils at the point itself,
+        // every sum in one pass over the points.
+        double x = 0, y = 0, z = 0, ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
+        for (std::size_t h = 0; h < m; ++h) {
+          const Point& q = local[h];
+          if (kPositions) x += w[h] * q[0], y += w[h] * q[1], z += w[h] * q[2];
+          ux += wu[h] * q[0], uy += wu[h] * q[1], uz += wu[h] * q[2];
+          vx += wv[h] * q[0], vy += wv[h] * q[1], vz += wv[h] * q[2];
+        }
+        if (kPositions) *position++ = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+        put_normal({ux, uy, uz}, {vx, vy, vz});
+        return;
+      }
+      if (kPositions) {
+        double x = 0, y = 0, z = 0;
+        for (std::size_t h = 0; h < m; ++h) x += w[h] * local[h][0], y += w[h] * local[h][1], z += w[h] * local[h][2];
+        *position++ = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+      }
+      if (kNormals) {
+        // Exact parameters: sqrt(3)'s derivative stencils are found at the grid
+        // point the descent reaches; Loop's polynomial takes them as doubles.
+        // The descent consumes its points: a copy, so that `local` stays whole.
+        consumed = local;
+        const Derivatives d = descent->derivatives(p.valence, p.region, consumed, ExactDual{Fraction::make(pa, 3 * n), 1, 0},
+                                                   ExactDual{Fraction::make(pb, 3 * n), 0, 1});
+        put_normal(d.du, d.dv);
+      }
     };
     for (long j = 0; j < n; ++j)
       for (long i = 0; i + j <= n - 1; ++i) put(3 * i + 1, 3 * j + 1);
@@ -140,52 +194,6 @@ std::array<double, 2> TriangleFamily::edge_node_parameter(std::size_t face, int 
   edge_grid_node(corner, t, n, i, j);
   patches_[face].to_patch(i, j, 3L * n, pi, pj);
   return {static_cast<double>(pi) / (3.0 * n), static_cast<double>(pj) / (3.0 * n)};
-}
-
-void TriangleFamily::normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
-                             std::array<float, 3>* out_all) const {
-  const TrianglePatchDescent& descent = checked_descent();
-  thread_local std::vector<Point> local, consumed;
-  for (std::size_t f = begin; f != end; ++f) {
-    if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
-    const TrianglePatch& p = patches_[f];
-    const long n = layout.rates[f];
-    std::array<float, 3>* out = out_all + layout.point_offsets[f];
-    gather_points(p.points, pos, local);  // once per face: both sums below read them n^2 times
-    // The same points as points(), differentiated in the patch's own
-    // coordinates: the patch's rotation keeps the orientation, so du x dv
-    // there points the same way as on the face.
-    // Regular faces: the tables' derivative stencils at the point itself, no descent.
-    const TriangleTables::Grid grid = tables_.grid(p.valence, static_cast<int>(n), p.region);
-    auto put = [&](long a, long b) {
-      long pa = 0, pb = 0;
-      p.to_patch(a, b, 3 * n, pa, pb);
-      const double *wu = nullptr, *wv = nullptr;
-      if (grid.derivative_weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3, wu, wv)) {
-        // Both sums in one pass over the points.
-        double ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
-        for (std::size_t h = 0, m = local.size(); h < m; ++h) {
-          const Point& q = local[h];
-          ux += wu[h] * q[0], uy += wu[h] * q[1], uz += wu[h] * q[2];
-          vx += wv[h] * q[0], vy += wv[h] * q[1], vz += wv[h] * q[2];
-        }
-        const Point normal = Derivatives{{0, 0, 0}, {ux, uy, uz}, {vx, vy, vz}}.normal();
-        *out++ = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
-        return;
-      }
-      // Exact parameters: sqrt(3)'s derivative stencils are found at the grid
-      // point the descent reaches; Loop's polynomial takes them as doubles.
-      // The descent consumes its points: a copy, so that `local` stays whole.
-      consumed = local;
-      const Point normal = descent.derivatives(p.valence, p.region, consumed, ExactDual{Fraction::make(pa, 3 * n), 1, 0},
-                                               ExactDual{Fraction::make(pb, 3 * n), 0, 1}).normal();
-      *out++ = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
-    };
-    for (long j = 0; j < n; ++j)
-      for (long i = 0; i + j <= n - 1; ++i) put(3 * i + 1, 3 * j + 1);
-    for (long j = 0; j + 1 < n; ++j)
-      for (long i = 0; i + j <= n - 2; ++i) put(3 * i + 2, 3 * j + 2);
-  }
 }
 
 }  // namespace stencil_runtime
