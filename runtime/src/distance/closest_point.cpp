@@ -275,12 +275,8 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
       const std::size_t f = live[l];
       for (std::size_t s = 0; s < per_face; ++s) {
         const std::size_t i = per_face * l + s;
-        // Exact derivatives bring the exact point (at the grid point next to
-        // the seed's parameter, where the family's are on grids); else a
-        // bounded evaluation.
         double x = seed_at[s][0], y = seed_at[s][1];
-        Derivatives d;
-        seeds.points[i] = family->derivatives(patches[f], x, y, d) ? d.point : family->evaluate(patches[f], x, y, seed_tolerance).point;
+        seeds.points[i] = family->nearby_point(patches[f], x, y, seed_tolerance).point;
         seeds.faces[i] = f;
         seeds.at[i] = {x, y};
       }

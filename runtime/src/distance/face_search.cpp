@@ -1,5 +1,6 @@
 #include "face_search.hpp"
 #include "distance/point_ops.hpp"
+#include "family/recentre.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -106,16 +107,7 @@ void FaceSearch::improve(const SubPatch& s, const ConvexBound::Result& r, const 
 }
 
 bool FaceSearch::consider(const SubPatch& s, double& x, double& y, const Point& q, FaceHit& best) const {
-  // Where the family has exact derivatives there (perhaps at a grid point
-  // next to (x, y), where (x, y) then moves), they come with the exact point:
-  // far cheaper than a bounded evaluation between the grids (sqrt(3)).
-  Derivatives d;
-  double gx = x, gy = y;
-  if (family_.derivatives(s, gx, gy, d)) {
-    x = gx, y = gy;
-    return improve(s, x, y, d.point, 0, q, best);
-  }
-  const Approximation a = family_.evaluate(s, x, y, tolerance_ * 0.01);
+  const Approximation a = family_.nearby_point(s, x, y, tolerance_ * 0.01);
   return improve(s, x, y, a.point, a.bound, q, best);
 }
 
@@ -250,13 +242,9 @@ void FaceSearch::refine(const Point& q, FaceHit& best) const {
       if (e < nearest) nearest = e, pick = k;
     }
     SubPatch& child = children[pick];
-    Point centre{0, 0, 0};
-    for (const Point& p : child.points)
-      for (int k = 0; k < 3; ++k) centre[k] += p[k] / static_cast<double>(child.points.size());
-    for (Point& p : child.points)
-      for (int k = 0; k < 3; ++k) p[k] -= centre[k];
-    const Point& base = offsets.back();
-    offsets.push_back({base[0] + centre[0], base[1] + centre[1], base[2] + centre[2]});
+    Point offset = offsets.back();
+    recentre(child.points, offset);
+    offsets.push_back(offset);
     path.push_back(std::move(child));
   };
   // Derivatives on the path's end, the point moved back by its origin.

@@ -197,6 +197,19 @@ class Family {
   // sub-patch's finest stored grid. False where there is none (an
   // extraordinary vertex, tables without derivatives, a family without them).
   virtual bool derivatives(const SubPatch& /*in*/, double& /*x*/, double& /*y*/, Derivatives& /*out*/) const { return false; }
+  // The point at (x, y) of a sub-patch: exact, with derivatives(), where the
+  // family has them there (perhaps at a grid point next to (x, y), where
+  // (x, y) then moves: far cheaper than a bounded evaluation between the
+  // grids, sqrt(3)); else evaluate() within `tolerance`.
+  Approximation nearby_point(const SubPatch& in, double& x, double& y, double tolerance) const {
+    Derivatives d;
+    double gx = x, gy = y;
+    if (derivatives(in, gx, gy, d)) {
+      x = gx, y = gy;
+      return {d.point, 0, true};
+    }
+    return evaluate(in, x, y, tolerance);
+  }
   // Sub-patches of kind `kind` that reproduce affine functions (null: none
   // known), and the largest kind number the family uses.
   virtual const AffineParameters* affine_parameters(int /*kind*/) const { return nullptr; }
