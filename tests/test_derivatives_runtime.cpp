@@ -17,6 +17,7 @@
 #include "mesh/uniform_topology.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
+#include "stencil_runtime/closest_point.hpp"
 
 using namespace stencil_runtime;
 using namespace test_runtime;
@@ -463,4 +464,49 @@ TEST_CASE("a directory of exact JSON tables gives the binary file's derivatives"
       REQUIRE(distance(binary.normal(f, at), json.normal(f, at)) < 1e-14);
     }
   fs::remove_all(json_dir.parent_path());
+}
+
+TEST_CASE("a tiny mesh has the normals of the same mesh at unit size, and closest points refuse one below 1e-100",
+          "[runtime][derivatives][tessellation]") {
+  // du x dv of tangents of 1e-100 is 1e-200, whose square underflows: the
+  // normals were not unit (1e-100), zero (1e-150 and below, `vn 0 0 0`) or
+  // off by 1e-5 (1e-80). A mesh scaled down has the same normals.
+  struct Case {
+    fs::path table;
+    std::string mesh;
+  };
+  for (const Case& c : {Case{tables_for("catmull-clark"), "cube"}, Case{tables_for("nonpoly"), "chess-piece"},
+                        Case{generated_table("loop", "--valence 3-8 --n 4", "sgt"), "icosahedron"}}) {
+    const auto tables = Tables::load(c.table.string());
+    const Mesh unit = load(c.mesh);
+    const Surface reference = surface_of(tables, unit);
+    const std::vector<int> rates(unit.face_count(), 4);
+    const PolygonSoup expected = tessellate(reference, rates, {}, true);
+    for (const double scale : {1e-80, 1e-100, 1e-150, 1e-200, 1e-300}) {
+      Mesh tiny = unit;
+      for (Point& p : tiny.positions)
+        for (double& x : p) x *= scale;
+      const Surface surface = surface_of(tables, tiny);
+      INFO(c.mesh << " scaled by " << scale);
+      for (std::size_t f = 0; f < unit.face_count(); f += 3)
+        for (const auto& [u, v] : {std::pair{1.0 / 3, 0.25}, std::pair{0.1, 0.2}, std::pair{0.5, 0.3}}) {
+          const Point n = surface.normal(f, u, v), m = reference.normal(f, u, v);
+          INFO("face " << f << " at " << u << ", " << v);
+          REQUIRE(distance(n, m) < 1e-12);
+        }
+      const PolygonSoup soup = tessellate(surface, rates, {}, true);
+      REQUIRE(soup.normals.size() == expected.normals.size());
+      double worst = 0;
+      for (std::size_t k = 0; k < soup.normals.size(); ++k)
+        for (int i = 0; i < 3; ++i) worst = std::max(worst, static_cast<double>(std::abs(soup.normals[k][i] - expected.normals[k][i])));
+      CHECK(worst < 1e-6);
+      if (scale < 1e-100)
+        CHECK_THROWS_WITH(ClosestPointQuery(surface), Catch::Contains("below 1e-100") && Catch::Contains("scale the mesh up"));
+    }
+  }
+  // All control points at the origin: no extent to measure distances by.
+  Mesh flat = load("cube");
+  for (Point& p : flat.positions) p = {0, 0, 0};
+  CHECK_THROWS_WITH(ClosestPointQuery(surface_of(Tables::load(tables_for("catmull-clark").string()), flat)),
+                    Catch::Contains("span 0 (bounding-box diagonal)"));
 }

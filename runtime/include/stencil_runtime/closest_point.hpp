@@ -10,6 +10,7 @@
 // the surface closer by more than the tolerance can be missed. Faces tagged
 // as holes (SurfaceTopology) have no surface and are never answered.
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -26,6 +27,9 @@ struct ClosestPointOptions {
   // Points farther than this from the surface come back with found == false.
   double max_distance = std::numeric_limits<double>::infinity();
   int threads = 0;  // batch queries: 0 for all cores
+  // Batch queries: called about once a second with how many of how many are
+  // done, from one query thread at a time (for a long run's progress lines).
+  std::function<void(std::size_t done, std::size_t total)> progress;
 };
 
 struct ClosestPoint {

@@ -36,5 +36,9 @@ inline constexpr std::size_t kMaxMeshLineBytes = std::size_t{1} << 20;
 // Largest coordinate magnitude of a control point: tessellations are written
 // as 32-bit floats, so larger coordinates could not be represented.
 inline constexpr double kMaxCoordinate = 1e37;
+// The smallest extent (control points' bounding-box diagonal) closest-point
+// queries accept: squared distances of its 1e-9 (the default tolerance) stay
+// far above the doubles' denormals, where digits are lost.
+inline constexpr double kMinQueryExtent = 1e-100;
 
 }  // namespace stencil_runtime::limits

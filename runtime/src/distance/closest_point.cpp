@@ -7,6 +7,8 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
+#include <mutex>
 #include <cstdio>
 #include <chrono>
 #include <cmath>
@@ -204,10 +206,9 @@ Point ClosestPointQuery::Impl::outward(const FaceHit& hit, const Point& normal) 
     double x = at.x, y = at.y;
     Derivatives d;
     search.derivatives(at.patch, x, y, d);
-    const Point n = cross(d.du, d.dv);
-    const double len = length(n);
-    if (!(len > 0)) continue;
-    const double w = orientation[g] * domain_angle(triangle, at.x, at.y, d) / len;
+    const Point n = unit_cross(d.du, d.dv);
+    if (!(length(n) > 0)) continue;
+    const double w = orientation[g] * domain_angle(triangle, at.x, at.y, d);
     for (int k = 0; k < 3; ++k) sum[k] += w * n[k];
   }
   const double len = length(sum);
@@ -231,7 +232,14 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
   for (const Point& p : prepared)
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
   const double diagonal = std::sqrt(dot(minus(hi, lo), minus(hi, lo)));
-  tolerance = options.tolerance > 0 ? options.tolerance : 1e-9 * std::max(diagonal, 1e-300);
+  if (!(diagonal >= limits::kMinQueryExtent)) {
+    char extent[32];
+    std::snprintf(extent, sizeof extent, "%.3g", diagonal);
+    throw EvaluationError(std::string("closest points: the control points span ") + extent +
+                          " (bounding-box diagonal), below 1e-100: distances at that scale lose their digits in "
+                          "doubles; scale the mesh up");
+  }
+  tolerance = options.tolerance > 0 ? options.tolerance : 1e-9 * diagonal;
   std::vector<SubPatch> patches(faces);
   roots.kinds.assign(faces, 0);
   roots.slabs.assign(faces, {});
@@ -355,18 +363,16 @@ ClosestPoint ClosestPointQuery::Impl::find(const Point& q) const {
   double x = h.x, y = h.y;
   Derivatives d;
   search.derivatives(h.patch, x, y, d);
-  Point n = cross(d.du, d.dv);
-  double len = std::sqrt(dot(n, n));
-  if (!(len > 0)) {  // a degenerate parametrisation at this point: the normal a little inside the sub-patch
+  Point n = unit_cross(d.du, d.dv);
+  if (!(length(n) > 0)) {  // a degenerate parametrisation at this point: the normal a little inside the sub-patch
     const SubPatch& s = h.patch;
     const auto c = s.domain.centre();
     x = h.x + 1e-3 * (c[0] - h.x), y = h.y + 1e-3 * (c[1] - h.y);
     search.derivatives(s, x, y, d);
-    n = cross(d.du, d.dv);
-    len = std::sqrt(dot(n, n));
+    n = unit_cross(d.du, d.dv);
   }
-  if (len > 0)
-    for (int k = 0; k < 3; ++k) out.normal[k] = orientation[h.face] * n[k] / len;
+  if (length(n) > 0)
+    for (int k = 0; k < 3; ++k) out.normal[k] = orientation[h.face] * n[k];
   const double side = dot(minus(q, out.point), outward(h, out.normal));
   out.signed_distance = side < 0 ? -out.distance : out.distance;
   return out;
@@ -401,6 +407,10 @@ ClosestPoint ClosestPointQuery::find(const Point& q) const { return impl_->find(
 
 std::vector<ClosestPoint> ClosestPointQuery::find(const std::vector<Point>& queries) const {
   std::vector<ClosestPoint> out(queries.size());
+  const auto& progress = impl_->options.progress;
+  std::atomic<std::size_t> done{0};
+  std::mutex reporting;  // one report at a time; a thread that finds it taken goes on
+  auto last_report = std::chrono::steady_clock::now();
   tbb::task_arena arena(impl_->options.threads > 0 ? impl_->options.threads : tbb::task_arena::automatic);
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, queries.size(), 16), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -411,6 +421,15 @@ std::vector<ClosestPoint> ClosestPointQuery::find(const std::vector<Point>& quer
           char at[96];
           std::snprintf(at, sizeof at, "query %zu (%.9g, %.9g, %.9g): ", i, queries[i][0], queries[i][1], queries[i][2]);
           throw EvaluationError(at + std::string(e.what()));
+        }
+      }
+      const std::size_t now_done = done += r.size();
+      if (progress && reporting.try_lock()) {
+        const std::lock_guard<std::mutex> held(reporting, std::adopt_lock);
+        const auto now = std::chrono::steady_clock::now();
+        if (now - last_report >= std::chrono::seconds(1)) {
+          last_report = now;
+          progress(now_done, queries.size());
         }
       }
     });

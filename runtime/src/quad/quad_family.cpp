@@ -856,15 +856,13 @@ void QuadFamily::normals(const TessellationLayout& layout, std::size_t begin, st
         const double* wy = w + 4 * j;
         const double* dwy = dw + 4 * j;
         for (int i = 0; i < n; ++i) {
-          double du[3], dv[3];
-          for (int k = 0; k < 3; ++k) {
+          Point du, dv;
+          for (std::size_t k = 0; k < 3; ++k) {
             du[k] = wy[0] * s0[i][k] + wy[1] * s1[i][k] + wy[2] * s2[i][k] + wy[3] * s3[i][k];
             dv[k] = dwy[0] * r0[i][k] + dwy[1] * r1[i][k] + dwy[2] * r2[i][k] + dwy[3] * r3[i][k];
           }
-          const double nx = du[1] * dv[2] - du[2] * dv[1], ny = du[2] * dv[0] - du[0] * dv[2], nz = du[0] * dv[1] - du[1] * dv[0];
-          const double length = std::sqrt(nx * nx + ny * ny + nz * nz);
-          const double scale = length > 0 ? 1 / length : 0;
-          out[j * n + i] = {static_cast<float>(nx * scale), static_cast<float>(ny * scale), static_cast<float>(nz * scale)};
+          const Point u = unit_cross(du, dv);
+          out[j * n + i] = {static_cast<float>(u[0]), static_cast<float>(u[1]), static_cast<float>(u[2])};
         }
       }
       continue;

@@ -121,7 +121,7 @@ void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin
     // the patch's rotation keeps the orientation, so du x dv there points the
     // same way as on the face.
     auto put_normal = [&](const Point& du, const Point& dv) {
-      const Point u = Derivatives{{0, 0, 0}, du, dv}.normal();
+      const Point u = unit_cross(du, dv);
       *normal++ = {static_cast<float>(u[0]), static_cast<float>(u[1]), static_cast<float>(u[2])};
     };
     auto put = [&](long a, long b) {
