@@ -239,5 +239,20 @@ TEST_CASE("a successful run writes JSON and binary tables for every rate, and ve
   const CliResult plot = run_stencilgen("plot --scheme fourpoint --n 21 --out " + (dir / "p.svg").string());
   CHECK(plot.status == 0);
   CHECK(fs::file_size(dir / "p.svg") > 1000);
+  // A scheme file is never an output: plot writes .svg only (it used to
+  // replace its own scheme with SVG), and a generation refuses a scheme file
+  // inside the folder OUT/<scheme> it replaces (it used to delete it).
+  const fs::path scheme = dir / "od" / "fourpoint" / "fourpoint.json";
+  fs::create_directories(scheme.parent_path());
+  fs::copy_file(sg::default_schemes_dir() / "fourpoint.json", scheme);
+  const std::uintmax_t bytes = fs::file_size(scheme);
+  const CliResult onto = run_stencilgen("plot --scheme " + scheme.string() + " --n 5 --out " + scheme.string());
+  CHECK(onto.status == 1);
+  CHECK_THAT(onto.output, Catch::Contains("plot --out must end in .svg"));
+  const CliResult inside = run_stencilgen("--scheme " + scheme.string() + " --n 2 --out " + (dir / "od").string() + " -q");
+  INFO(inside.output);
+  CHECK(inside.status == 1);
+  CHECK_THAT(inside.output, Catch::Contains("is inside") && Catch::Contains("which the run replaces whole"));
+  CHECK(fs::file_size(scheme) == bytes);
   fs::remove_all(dir);
 }

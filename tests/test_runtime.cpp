@@ -185,7 +185,7 @@ TEST_CASE("bad tables and bad meshes get clear errors, and nothing is written", 
   CHECK(approximate.status == 0);
   CHECK(approximate.output.find("within") != std::string::npos);
   CHECK(approximate.output.find("of the exact one (bound; tolerance") != std::string::npos);
-  CHECK(eval(good.string(), cube, "--face 0 --uv 0.3,0.7 --tolerance 0").output.find("--tolerance must be a positive number") !=
+  CHECK(eval(good.string(), cube, "--face 0 --uv 0.3,0.7 --tolerance 0").output.find("--tolerance must be a positive finite number") !=
         std::string::npos);
   CHECK(eval(good.string(), cube, "--face 0 --uv 3/2,0").output.find("lies outside face 0 (its domain is 0 <= u, v <= 1)") != std::string::npos);
   // A valence the tables lack: name the vertex and the stencilgen call.

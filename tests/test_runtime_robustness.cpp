@@ -383,8 +383,8 @@ TEST_CASE("tool options and parameters outside their limits are refused, not wra
   expect_error(tess("--rate 2147483647"), "--rate must be 1..4096");
   expect_error(tess("--rate 0"), "--rate must be 1..4096");
   expect_error(tess("--rate 4 --threads 2147483647"), "--threads must be 1..256");
-  expect_error(tess("--tolerance 0"), "--tolerance must be a positive number");
-  expect_error(tess("--camera 0,0,5,0,0,0 --pixels 0"), "--pixels must be a positive number");
+  expect_error(tess("--tolerance 0"), "--tolerance must be a positive finite number");
+  expect_error(tess("--camera 0,0,5,0,0,0 --pixels 0"), "--pixels must be a positive finite number");
   expect_error(tess("--camera 0,0,5,0,0 --pixels 4"), "--camera expects");
   expect_error(tess("--rate nope"), "--rate");
   expect_error(tess("--camera 1e308,0,6,0,0,0 --pixels 8"), "too large");

@@ -537,8 +537,66 @@ TEST_CASE("Adaptive fitting refines where the error is large, within the budget,
     CHECK_THAT(tight.stopped, Catch::Contains("budget"));
   }
   CHECK_THROWS_WITH(fit_adaptively(tables, ico, points, options, 11), Catch::Contains("below the control mesh's 12"));
+  // The splits make a new mesh from the faces alone: a tag would be dropped
+  // and the fit would answer for another surface (it used to, silently).
+  for (int kind = 0; kind < 3; ++kind) {
+    Mesh tagged = ico;
+    tagged.source = "ico.obj";
+    if (kind == 0) tagged.tags.creases.push_back({ico.face_vertices[0], ico.face_vertices[1], 2.0, 21});
+    if (kind == 1) tagged.tags.corners.push_back({ico.face_vertices[0], 3.0, 22});
+    if (kind == 2) tagged.tags.holes.push_back({5, 23});
+    CHECK_THROWS_WITH(fit_adaptively(tables, tagged, points, options, 120),
+                      Catch::Contains("ico.obj:2" + std::to_string(kind + 1)) && Catch::Contains("does not carry tags"));
+  }
   options.max_error = 0;
   CHECK_THROWS_WITH(fit_adaptively(tables, ico, points, options, 100), Catch::Contains("max error above 0"));
+}
+
+TEST_CASE("no tool writes over its tables or into their folder", "[fitting][cli]") {
+  // The tables are an input like the mesh and the points: stencildist and
+  // stencilfit used to replace a .sgs given again as --out, --report or --plot.
+  const std::filesystem::path table = generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs");
+  const auto dir = scratch_dir("tables-as-output");
+  const std::filesystem::path copy = dir / "tables" / "cc.sgs";
+  std::filesystem::create_directories(copy.parent_path());
+  std::filesystem::copy_file(table, copy);
+  const std::uintmax_t bytes = std::filesystem::file_size(copy);
+  write_points(dir / "points.xyz", ellipsoid_points(100, 0, 3));
+  write_mesh(dir / "sphere.obj", quad_sphere(2));
+  const std::string mesh = (dir / "sphere.obj").string(), points = (dir / "points.xyz").string();
+  const std::string inside = (copy.parent_path() / "new.obj").string();
+  for (const std::string& tables : {copy.string(), copy.parent_path().string()}) {
+    const std::vector<std::pair<CliResult, std::string>> runs{
+        {run_command(STENCILDIST_EXE, "--tables " + tables + " --mesh " + mesh + " --points " + points + " --out " + copy.string()),
+         copy.string() + " is an input and the output"},
+        {run_stencilfit("--tables " + tables + " --points " + points + " --control " + mesh + " --out " +
+                        (dir / "f.obj").string() + " --report " + copy.string()),
+         copy.string() + " is an input and the output"},
+        {run_stencilfit("--tables " + tables + " --points " + points + " --control " + mesh + " --out " +
+                        (dir / "f.obj").string() + " --plot " + copy.string()),
+         copy.string() + " is an input and the output"}};
+    for (const auto& [r, message] : runs) {
+      INFO(tables << "\n" << r.output);
+      CHECK(r.status == 1);
+      CHECK_THAT(r.output, Catch::Contains(message) || Catch::Contains("is inside the input folder"));
+    }
+    if (tables == copy.parent_path().string()) {
+      // A table folder is read whole: nothing is written into it.
+      const std::vector<CliResult> into{
+          run_command(STENCILDIST_EXE, "--tables " + tables + " --mesh " + mesh + " --points " + points + " --out " + inside),
+          run_stenciltess("--tables " + tables + " --mesh " + mesh + " --rate 2 --out " + inside),
+          run_stencilfit("--tables " + tables + " --points " + points + " --control " + mesh + " --out " + inside)};
+      for (const CliResult& r : into) {
+        INFO(r.output);
+        CHECK(r.status == 1);
+        CHECK_THAT(r.output, Catch::Contains("is inside the input folder"));
+      }
+      CHECK_FALSE(std::filesystem::exists(inside));
+    }
+  }
+  CHECK(std::filesystem::file_size(copy) == bytes);
+  CHECK(Tables::load(copy.string())->scheme() == "catmull-clark");
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("every tool refuses, before its work, an output it could not write at the end", "[fitting][cli]") {

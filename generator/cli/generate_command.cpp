@@ -25,6 +25,21 @@ namespace {
 
 const char* const kSurfaceRateLimit = "the largest rate for surface schemes";
 
+// The run replaces OUT/<name> whole: a scheme file inside it would be lost.
+void check_scheme_outside_output(const std::string& source, const std::string& name, const std::string& out) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path folder = fs::weakly_canonical(fs::path(out) / name, ec);
+  if (ec || source.empty()) return;
+  const fs::path file = fs::weakly_canonical(source, ec);
+  if (ec) return;
+  auto f = folder.begin(), p = file.begin();
+  for (; f != folder.end() && !f->empty(); ++f, ++p)
+    if (p == file.end() || *p != *f) return;
+  throw Error("the scheme file " + source + " is inside " + (fs::path(out) / name).string() +
+              ", which the run replaces whole; move the scheme file elsewhere or choose another --out");
+}
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -32,6 +47,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 int generate_curve(const GenerateOptions& o) {
   const auto rates = parse_rate_spec(o.rates, limits::kMaxCurveRate, "the largest rate for curve schemes");
   const CurveScheme scheme = load_curve_scheme(o.scheme, o.params);
+  check_scheme_outside_output(scheme.source, scheme.name, o.out);
   const RouteChoice choice = o.route == "residue" ? RouteChoice::Residue
                              : o.route == "eigen" ? RouteChoice::Eigen
                                                   : RouteChoice::Both;
@@ -52,6 +68,7 @@ int generate_quad(const GenerateOptions& o, const std::string& valence_spec) {
   const auto rates = parse_rate_spec(o.rates, limits::kMaxSurfaceRate, kSurfaceRateLimit);
   const auto valences = parse_valence_spec(valence_spec);
   const QuadScheme scheme = load_quad_scheme(o.scheme, o.params);
+  check_scheme_outside_output(scheme.source, scheme.name, o.out);
   check_valences(valences, scheme.min_valence, scheme.max_valence, scheme.source);
   const auto start = std::chrono::steady_clock::now();
   for (int v : valences) {
@@ -81,6 +98,7 @@ int generate_triangle(const GenerateOptions& o, const std::string& valence_spec)
   const auto rates = parse_rate_spec(o.rates, limits::kMaxSurfaceRate, kSurfaceRateLimit);
   auto valences = parse_valence_spec(valence_spec);
   const TriangleScheme scheme = load_triangle_scheme(o.scheme, o.params);
+  check_scheme_outside_output(scheme.source, scheme.name, o.out);
   check_valences(valences, scheme.min_valence, scheme.max_valence, scheme.source);
   // Valence 6 is the regular patch, which the runtime needs for every ordinary triangle.
   if (std::find(valences.begin(), valences.end(), 6) == valences.end()) valences.push_back(6);

@@ -1,4 +1,5 @@
 // stencilgen plot --scheme S --n N --out FILE.svg: the scaling functions of a curve scheme at rate n.
+#include <filesystem>
 #include <iostream>
 
 #include "base/error.hpp"
@@ -16,7 +17,13 @@ int plot(const std::string& scheme_spec, long n, const std::string& out, const s
   if (n < 1 || n > limits::kMaxCurveRate)
     throw Error("plot --n " + std::to_string(n) + " is outside 1.." + std::to_string(limits::kMaxCurveRate) +
                 " (the largest rate for curve schemes)");
+  if (std::filesystem::path(out).extension() != ".svg") throw Error(out + ": plot --out must end in .svg");
   const CurveScheme scheme = load_curve_scheme(scheme_spec, params);
+  {
+    std::error_code ea, eb;
+    if (std::filesystem::weakly_canonical(out, ea) == std::filesystem::weakly_canonical(scheme.source, eb) && !ea && !eb)
+      throw Error(out + " is the scheme file and the output; give the output another name");
+  }
   const CurveTable table = make_table(scheme, solve_by_residues(scheme, n));
   write_file_atomically(out, plot_table_svg(table));
   std::cout << "wrote " << out << "\n";

@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
                  "adaptive refinement: while the max error is above --max-error, split the triangles with points "
                  "farther than half of it (red-green, the worst first) and fit again (--iterations per round), up to "
                  "this many control points; the refined mesh's new vertices follow the old ones (a triangle control "
-                 "mesh; needs --max-error)");
+                 "mesh without crease, corner or hole tags; needs --max-error)");
   app.add_option("--tolerance", options.tolerance,
                  "closest-point tolerance, as a fraction of the diagonal (default 1e-9)");
   app.add_option("--threads", options.threads, "threads (default 0: all cores)");
@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
     if (!(options.max_error >= 0) || !std::isfinite(options.max_error))
       throw std::runtime_error("--max-error must be a number >= 0");
     if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
-      throw std::runtime_error("--tolerance must be a positive number");
+      throw std::runtime_error("--tolerance must be a positive finite number");
     if (options.threads < 0 || options.threads > 256) throw std::runtime_error("--threads must be 1..256 (or 0 for all cores)");
     if (std::filesystem::path(out_path).extension() != ".obj") throw std::runtime_error(out_path + ": --out must end in .obj");
 
@@ -111,15 +111,10 @@ int main(int argc, char** argv) {
     if (app.count("--max-control-points") && max_control_points < 4)
       throw std::runtime_error("--max-control-points must be at least 4, got " + std::to_string(max_control_points));
     {  // three outputs, three files: one must not overwrite another
-      namespace fs = std::filesystem;
-      auto same = [](const std::string& a, const std::string& b) {
-        return !a.empty() && !b.empty() && fs::weakly_canonical(a) == fs::weakly_canonical(b);
-      };
+      const auto same = stencil_tools::same_path;
       if (same(out_path, report_path) || same(out_path, plot_path) || same(report_path, plot_path))
         throw std::runtime_error("--out, --report and --plot must name three different files");
-      for (const std::string& input : {points_path, control_path})
-        if (same(input, out_path) || same(input, report_path) || same(input, plot_path))
-          throw std::runtime_error(input + " is an input and an output; give the output another name");
+      stencil_tools::check_outputs_are_not_inputs({out_path, report_path, plot_path}, {tables_spec, points_path, control_path});
     }
     for (const std::string& output : {out_path, report_path, plot_path}) stencil_tools::check_output_can_be_written(output);
     if (max_control_points > 0 && !(options.max_error > 0))

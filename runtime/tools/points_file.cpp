@@ -123,7 +123,9 @@ std::vector<Point> read_off(const std::string& path, const std::string& text) {
     points.push_back(parse_point(words, where));
     return points.size() < expected;
   });
-  if (points.size() < expected || expected == 0)
+  if (stage == 0) throw std::runtime_error(path + ": the file is empty (an OFF file starts with a line `OFF`)");
+  if (stage == 1) throw std::runtime_error(path + ": the file ends before its counts line `vertices faces edges`");
+  if (points.size() < expected)
     throw std::runtime_error(path + ": the file ends after " + std::to_string(points.size()) + " of " +
                              std::to_string(expected) + " vertices");
   return points;
@@ -174,8 +176,12 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
         continue;  // later elements (faces) are not read, only counted
       }
       if (name != "vertex") throw std::runtime_error(where + ": the first element must be 'vertex', got " + stencil_runtime::quoted_excerpt(name));
-      count = parse_index(n, where + ": vertex count");
-      if (count > limits::kMaxMeshElements) throw std::runtime_error(where + ": more than 2^30 points");
+      {
+        const auto [stop, err] = std::from_chars(n.data(), n.data() + n.size(), count);
+        if (err != std::errc() || stop != n.data() + n.size() || count > limits::kMaxMeshElements)
+          throw std::runtime_error(where + ": the vertex count " + stencil_runtime::quoted_excerpt(n) +
+                                   " is not a number from 0 to 2^30");
+      }
       in_vertex = seen_vertex = true;
     } else if (key == "property" && in_vertex) {
       std::string type, name;

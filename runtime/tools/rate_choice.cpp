@@ -62,7 +62,7 @@ int rate_for(double need) {
 }  // namespace
 
 std::vector<int> rates_for_tolerance(const Mesh& mesh, double tolerance) {
-  if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive number");
+  if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive finite number");
   const stencil_runtime::Connectivity connectivity{mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices};
   const stencil_runtime::PolygonLinks links = stencil_runtime::link_polygons(connectivity);
   auto at = [&](std::size_t h) -> const V& { return mesh.positions[static_cast<std::size_t>(mesh.face_vertices[h])]; };
@@ -107,7 +107,7 @@ Camera parse_camera(const std::string& text) {
 }
 
 std::vector<int> rates_for_view(const Mesh& mesh, const Camera& cam, double target_pixels) {
-  if (!(target_pixels > 0) || !std::isfinite(target_pixels)) throw std::runtime_error("--pixels must be a positive number");
+  if (!(target_pixels > 0) || !std::isfinite(target_pixels)) throw std::runtime_error("--pixels must be a positive finite number");
   if (!(cam.fov_degrees > 0 && cam.fov_degrees < 180)) throw std::runtime_error("--fov must be between 0 and 180 degrees");
   if (cam.width_pixels < 1 || cam.width_pixels > 1000000) throw std::runtime_error("--width must be 1..1000000 pixels");
   const V forward0 = sub(cam.target, cam.eye);

@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
       "from stencilgen's tables (a quad scheme's .sgs with a polygon mesh, a triangle scheme's .sgt with a triangle\n"
       "mesh). One line per query point, in input order: `face u v x y z distance` (face numbered from 0 in file\n"
       "order, (u, v) in that face's domain as stencileval --help describes), plus `nx ny nz` (the unit normal) with\n"
-      "--normals; `none` for a point farther than --max-distance. A summary goes to stderr. Each distance is at\n"
+      "--normals; `none` for a point farther than --max-distance. A summary goes to stderr (and, on a long run,\n"
+      "a progress line every few seconds). Each distance is at\n"
       "most --tolerance above the true distance to the limit surface (docs/runtime.md, \"Closest points\").\n\n"
       "  stencildist --tables tables/catmull-clark --mesh meshes/chess-piece.obj --points queries.xyz --out d.txt\n"
       "  stencildist --tables tables/nonpoly --mesh meshes/cube.obj --points scan.ply --signed --normals",
@@ -66,13 +67,13 @@ int main(int argc, char** argv) {
   stencil_tools::BoundaryOption boundary;
   boundary.add(app);
   return stencil_tools::run_tool(app, argc, argv, [&] {
-    if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive number");
+    if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive finite number");
     if (tolerance < 1e-14)
       throw std::runtime_error("--tolerance must be at least 1e-14 (a fraction of the diagonal; doubles resolve about "
                                "1e-16 of it)");
     if (!(max_distance > 0)) throw std::runtime_error("--max-distance must be a positive number");
     if (threads < 0 || threads > 256) throw std::runtime_error("--threads must be 1..256 (or 0 for all cores)");
-    stencil_tools::check_output_is_not_input(out_path, {mesh_path, points_path});
+    stencil_tools::check_output_is_not_input(out_path, {tables_spec, mesh_path, points_path});
     stencil_tools::check_output_can_be_written(out_path);
     const auto tables = Tables::load(tables_spec);
     Mesh mesh = read_obj(mesh_path);
@@ -95,6 +96,15 @@ int main(int argc, char** argv) {
     options.tolerance = tolerance * diagonal;
     options.max_distance = max_distance;
     options.threads = threads;
+    const auto start_all = std::chrono::steady_clock::now();
+    auto last = start_all;
+    options.progress = [&](std::size_t done, std::size_t total) {  // long runs: a line every few seconds
+      const auto now = std::chrono::steady_clock::now();
+      if (now - last < std::chrono::seconds(3)) return;
+      last = now;
+      std::fprintf(stderr, "stencildist: %zu of %zu points (%.0f%%), %.0f s\n", done, total, 100.0 * done / total,
+                   std::chrono::duration<double>(now - start_all).count());
+    };
     const ClosestPointQuery query(surface, options);
     const auto start = std::chrono::steady_clock::now();
     const std::vector<ClosestPoint> results = query.find(queries);

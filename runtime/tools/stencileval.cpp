@@ -173,7 +173,7 @@ int main(int argc, char** argv) {
   app.add_flag("--second-derivatives", columns.second, "also d2/du2, d2/dudv, d2/dv2 (Catmull-Clark, Loop)");
   app.add_flag("--normal", columns.normal, "also the unit normal (every scheme; sqrt(3) at the parameters its tables hold)");
   return stencil_tools::run_tool(app, argc, argv, [&] {
-    if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive number");
+    if (!(tolerance > 0) || !std::isfinite(tolerance)) throw std::runtime_error("--tolerance must be a positive finite number");
     if (tolerance < 1e-14)
       throw std::runtime_error("--tolerance must be at least 1e-14 (a fraction of the face's extent; doubles resolve about "
                                "1e-16 of it)");

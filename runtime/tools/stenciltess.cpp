@@ -80,8 +80,12 @@ int main(int argc, char** argv) {
     if (app.count("--rate") && (rate < 1 || rate > limits::kMaxRate))
       throw std::runtime_error("--rate must be 1.." + std::to_string(limits::kMaxRate));
     if (!frames.empty()) stencil_tools::check_frame_pattern(out);
-    else stencil_tools::check_output_is_not_input(out, {mesh_path, rates_file});
+    else stencil_tools::check_output_is_not_input(out, {tables_spec, mesh_path, rates_file});
     stencil_tools::check_output_can_be_written(frames.empty() ? out : stencil_tools::frame_name(out, 0));
+    {  // the format, before the work (write_polygons would refuse it only at the end)
+      const std::string ext = std::filesystem::path(out).extension().string();
+      if (ext != ".obj" && ext != ".ply") throw std::runtime_error(out + ": --out must end in .obj or .ply");
+    }
     if (camera.empty())
       for (const char* option : {"--pixels", "--fov", "--width"})
         if (app.count(option)) throw std::runtime_error(std::string(option) + " applies to --camera rates only");
@@ -138,6 +142,7 @@ int main(int argc, char** argv) {
     if (files.size() > 1000000) throw std::runtime_error(stencil_runtime::quoted_excerpt(frames) + " names more than 1000000 frames");
     std::vector<std::string> inputs = files, names;
     inputs.push_back(mesh_path);
+    inputs.push_back(tables_spec);
     inputs.push_back(rates_file);
     for (std::size_t k = 0; k < files.size(); ++k) names.push_back(stencil_tools::frame_name(out, k));
     stencil_tools::check_outputs_are_not_inputs(names, inputs);

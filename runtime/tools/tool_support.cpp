@@ -143,13 +143,44 @@ void check_output_is_not_input(const std::string& output, const std::vector<std:
   check_outputs_are_not_inputs({output}, inputs);
 }
 
+namespace {
+
+// The path with its links resolved where they can be (its file need not
+// exist); where they cannot (a loop of links, /dev/stdout), the path made
+// absolute, so that the comparison below still sees "./a" and "a" as one.
+fs::path resolved(const std::string& path) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(path, ec);
+  if (ec) p = fs::absolute(path, ec).lexically_normal();
+  return p;
+}
+
+bool inside(const fs::path& path, const fs::path& folder) {
+  auto f = folder.begin(), p = path.begin();
+  for (; f != folder.end() && !f->empty(); ++f, ++p)
+    if (p == path.end() || *p != *f) return false;
+  return true;
+}
+
+}  // namespace
+
+bool same_path(const std::string& a, const std::string& b) { return !a.empty() && !b.empty() && resolved(a) == resolved(b); }
+
 void check_outputs_are_not_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
-  std::set<fs::path> read;
-  for (const std::string& input : inputs)
-    if (!input.empty()) read.insert(fs::weakly_canonical(input));
-  for (const std::string& output : outputs)
-    if (!output.empty() && read.count(fs::weakly_canonical(output)))
-      throw std::runtime_error(output + " is an input and the output; give the output another name");
+  // An input folder (a table directory) is read whole: nothing may be written into it.
+  for (const std::string& input : inputs) {
+    if (input.empty()) continue;
+    const fs::path read = resolved(input);
+    std::error_code ec;
+    const bool folder = fs::is_directory(read, ec);
+    for (const std::string& output : outputs) {
+      if (output.empty()) continue;
+      const fs::path written = resolved(output);
+      if (written == read) throw std::runtime_error(output + " is an input and the output; give the output another name");
+      if (folder && inside(written, read))
+        throw std::runtime_error(output + " is inside the input folder " + input + "; write the output elsewhere");
+    }
+  }
 }
 
 void check_output_can_be_written(const std::string& output) {

@@ -51,8 +51,11 @@ std::string frame_name(const std::string& pattern, std::size_t frame);
 // throws when it names none.
 std::vector<std::string> expand_pattern(const std::string& pattern);
 
-// Refuses an output path that names one of the inputs (the run would destroy
-// what it reads); empty paths are ignored.
+// Whether two paths name one file (links resolved where they can be); false for an empty path.
+bool same_path(const std::string& a, const std::string& b);
+
+// Refuses an output path that names one of the inputs, or lies inside an
+// input folder (the run would destroy what it reads); empty paths are ignored.
 void check_output_is_not_input(const std::string& output, const std::vector<std::string>& inputs);
 void check_outputs_are_not_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
 

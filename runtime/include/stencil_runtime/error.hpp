@@ -29,10 +29,21 @@ struct EvaluationError : Error {
 
 // User text as a message quotes it: 'text' when short, else its start and its
 // length, so that a 100,000-character argument does not make a message as long.
+// Control characters are shown as \xNN: a NUL would end the message there
+// (what() is a C string), a newline would break its one line, and others
+// would garble the terminal.
 inline std::string quoted_excerpt(std::string_view text) {
   constexpr std::size_t kShown = 60;
   std::string out(1, '\'');
-  out.append(text.substr(0, kShown));
+  for (const char c : text.substr(0, kShown)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte != 0x7f) {
+      out.push_back(c);
+    } else {
+      const char* const hex = "0123456789abcdef";
+      out.append("\\x").append(1, hex[byte >> 4]).append(1, hex[byte & 15]);
+    }
+  }
   if (text.size() <= kShown) return out.append(1, '\'');
   return out.append("...' (").append(std::to_string(text.size())).append(" characters)");
 }

@@ -101,7 +101,8 @@ Mesh refine_red_green(const Mesh& mesh, const std::vector<bool>& marked, int max
 // budget allows; red-green, valences kept within the tables') and fit again
 // from the refined mesh. Returns the
 // last mesh with the fitted positions and the iterations of every round.
-// Throws FitError for a budget below the mesh's vertex count.
+// Throws FitError for a budget below the mesh's vertex count, and for a mesh
+// with tags (creases, corners, holes, options), which the splits do not carry yet.
 struct AdaptiveFit {
   Mesh mesh;
   FitResult fit;

@@ -18,6 +18,27 @@ AdaptiveFit fit_adaptively(const std::shared_ptr<const Tables>& tables, const Me
       throw FitError("adaptive refinement splits triangles: face " + std::to_string(f) + " of the control mesh has " +
                      std::to_string(mesh.face_sizes[f]) +
                      " corners (give a triangle control mesh, or let --control-points make one)");
+  // The splits below make a new mesh from the old one's faces alone: a tag
+  // would be dropped or left naming the wrong faces, and a fit that ignored it
+  // would answer for another surface than the file asks for.
+  {
+    const MeshTags& t = mesh.tags;
+    long line = 0;
+    const char* what = nullptr;
+    for (const auto& c : t.creases)
+      if (c.sharpness > 0 && !what) what = "a crease", line = c.line;
+    for (const auto& c : t.corners)
+      if (c.sharpness > 0 && !what) what = "a corner", line = c.line;
+    if (!t.holes.empty() && !what) what = "a hole", line = t.holes.front().line;
+    if (t.smooth_triangles && !what) what = "`smoothtriangles`", line = t.smooth_triangles_line;
+    if (t.chaikin_creases && !what) what = "`creasemethod chaikin`";
+    if (t.boundary != BoundaryInterpolation::EdgeOnly && !what) what = "an `interpolateboundary` option";
+    if (what)
+      throw FitError((mesh.source.empty() ? std::string("the control mesh") : mesh.source) +
+                     (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + what +
+                     " tag; adaptive refinement does not carry tags through its splits yet (fit without it, or "
+                     "remove the tags)");
+  }
   AdaptiveFit out;
   out.mesh = mesh;
   double elapsed = 0;

@@ -19,7 +19,10 @@ fs::path table_file(const std::string& spec) {
   if (p.filename().empty()) p = p.parent_path();  // "tables/nonpoly/"
   std::error_code ec;
   if (fs::is_regular_file(p, ec)) return p;
-  if (!fs::is_directory(p, ec)) throw LoadError(spec + ": no such table file or directory");
+  if (!fs::is_directory(p, ec)) {
+    if (fs::exists(p, ec)) throw LoadError(spec + ": not a table file (a regular .sgs or .sgt file) nor a directory");
+    throw LoadError(spec + ": no such table file or directory");
+  }
   fs::path found;
   for (const auto& e : fs::directory_iterator(p, ec))
     if (e.path().extension() == ".sgs" || e.path().extension() == ".sgt") {
