@@ -296,6 +296,11 @@ TEST_CASE("meshes outside the runtime's limits get a clear error naming the line
   expect_error(eval((dir / "long.obj").string()), "long.obj:2: line longer than");
   write_file(dir / "index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999\n");
   expect_error(eval((dir / "index.obj").string()), "index.obj:4: bad face index");
+  // Texture and normal indices are not used, but a face vertex that is none of v, v/vt, v//vn, v/vt/vn is refused.
+  for (const char* vertex : {"3/x", "3/1/2/4", "3/-"}) {
+    write_file(dir / "slash.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 ") + vertex + "\n");
+    expect_error(eval((dir / "slash.obj").string()), "slash.obj:4: bad face vertex");
+  }
   // Valence 2 (a pillow of two quads) and valence 70 (a bipyramid's apex).
   write_file(dir / "pillow.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 4 3 2 1\n");
   expect_error(eval((dir / "pillow.obj").string()), "vertex 0 has valence 2; subdivision surfaces need every vertex in at least 3 faces");

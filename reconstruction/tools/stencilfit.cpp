@@ -62,10 +62,10 @@ int main(int argc, char** argv) {
   FitOptions options;
   app.add_option("--tables", tables_spec, "a .sgs (quad scheme) or .sgt (triangle scheme) table file, or the directory stencilgen wrote it to")
       ->required();
-  app.add_option("--points", points_path, "the points: .xyz/.txt (`x y z` or `x y z nx ny nz` lines), .ply (vertices) or .off (vertices)")
+  app.add_option("--points", points_path, "the points: .ply or .off (vertices), any other name `x y z` or `x y z nx ny nz` lines (.xyz, .txt)")
       ->required();
   long long control_points = 0;  // signed, so that a negative count is named rather than wrapped
-  auto* control = app.add_option("--control", control_path, "the initial control mesh (.obj): a closed mesh near the points");
+  auto* control = app.add_option("--control", control_path, "the initial control mesh (.obj) near the points; closed, or with boundaries as docs/runtime.md allows for the scheme");
   auto* made = app.add_option("--control-points", control_points,
                               "make the initial control mesh from the points, with this many vertices (at least 4)");
   control->excludes(made);

@@ -1,5 +1,6 @@
 #include "stencil_runtime/mesh_io.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -91,6 +92,24 @@ Mesh read_obj(const std::string& path) {
         const auto [end, err] = std::from_chars(item.data(), item.data() + item.size(), index);
         if (err != std::errc() || end == item.data() || (end != item.data() + item.size() && *end != '/'))
           fail("bad face index " + quoted_excerpt(item));
+        // v/vt, v//vn or v/vt/vn: the texture and normal indices are not used, but must be indices or empty.
+        {
+          std::string_view rest = item.substr(static_cast<std::size_t>(end - item.data()));
+          auto is_index = [](std::string_view t) {  // empty, or an optionally negative run of digits
+            if (t.empty()) return true;
+            if (t[0] == '-') t.remove_prefix(1);
+            return !t.empty() && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
+          };
+          int parts = 0;
+          bool ok = true;
+          while (!rest.empty() && ok) {  // rest starts with '/'
+            rest.remove_prefix(1);
+            const std::size_t slash = std::min(rest.find('/'), rest.size());
+            ok = ++parts <= 2 && is_index(rest.substr(0, slash));
+            rest.remove_prefix(slash);
+          }
+          if (!ok) fail("bad face vertex " + quoted_excerpt(item) + " (expected v, v/vt, v//vn or v/vt/vn)");
+        }
         const auto n = static_cast<long long>(mesh.positions.size());
         if (index < 0) index += n + 1;
         if (index < 1 || index > n) fail("face index " + std::string(item) + " refers to no vertex defined so far");
