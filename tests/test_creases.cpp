@@ -235,17 +235,17 @@ TEST_CASE("infinitely sharp creases and corners (sharpness >= 10) on quad meshes
   };
   std::vector<Case> cases;
   {  // every edge: each vertex on three sharp edges, a corner; every face a patch of its own
-    Case c{"cube, every edge infinitely sharp", cube, {}};
+    Case c{"cube, every edge infinitely sharp", cube, {}, {}};
     for (const auto& [a, b] : edges_of(cube)) c.f.crease(a, b, 10);
     cases.push_back(c);
   }
   {  // a loop round the top face: its vertices on two sharp edges, in one face above and two below
-    Case c{"cube, a sharp loop round a face", cube, {}};
+    Case c{"cube, a sharp loop round a face", cube, {}, {}};
     for (std::size_t k = 0; k < 4; ++k) c.f.crease(top[k], top[(k + 1) % 4], 10);
     cases.push_back(c);
   }
   {  // the loop, with a corner tag on one of its vertices and a semi-sharp edge leaving another
-    Case c{"cube, a sharp loop, a sharp corner and a semi-sharp edge of 1.5 at its vertices", cube, {}};
+    Case c{"cube, a sharp loop, a sharp corner and a semi-sharp edge of 1.5 at its vertices", cube, {}, {}};
     for (std::size_t k = 0; k < 4; ++k) c.f.crease(top[k], top[(k + 1) % 4], 12.5f);
     c.f.corner(top[0], 10);
     for (const auto& [a, b] : edges_of(cube))
@@ -253,7 +253,7 @@ TEST_CASE("infinitely sharp creases and corners (sharpness >= 10) on quad meshes
     cases.push_back(c);
   }
   {  // three sharp edges at vertex 0, continued to the opposite corner: no dart
-    Case c{"cube, sharp paths from vertex 0 to the opposite corner", cube, {}};
+    Case c{"cube, sharp paths from vertex 0 to the opposite corner", cube, {}, {}};
     const auto e = edges_of(cube);
     std::set<int> on;
     for (const auto& [a, b] : e)
@@ -263,7 +263,7 @@ TEST_CASE("infinitely sharp creases and corners (sharpness >= 10) on quad meshes
     cases.push_back(c);
   }
   {  // the chess piece: every edge of its first face's vertex ring... its first face's edges, a sharp loop
-    Case c{"chess piece, a sharp loop round a face with extraordinary corners", chess, {}};
+    Case c{"chess piece, a sharp loop round a face with extraordinary corners", chess, {}, {}};
     const std::vector<int> ring(chess.face_vertices.begin(), chess.face_vertices.begin() + chess.face_sizes[0]);
     for (std::size_t k = 0; k < ring.size(); ++k) c.f.crease(ring[k], ring[(k + 1) % ring.size()], 10);
     cases.push_back(c);
@@ -280,7 +280,7 @@ TEST_CASE("infinitely sharp creases and corners (sharpness >= 10) on quad meshes
     cases.push_back(c);
   }
   {  // cone points: sharp vertices on no sharp edge (OpenSubdiv's corner rule, smooth edges round them), valence 3
-    Case c{"cube, two cone points at opposite corners", cube, {}};
+    Case c{"cube, two cone points at opposite corners", cube, {}, {}};
     c.f.corner(0, 10);
     c.f.corner(7, 10);
     cases.push_back(c);
@@ -291,7 +291,7 @@ TEST_CASE("infinitely sharp creases and corners (sharpness >= 10) on quad meshes
     const auto four = std::find(faces_at.begin(), faces_at.end(), 4), five = std::find(faces_at.begin(), faces_at.end(), 5);
     REQUIRE(four != faces_at.end());
     REQUIRE(five != faces_at.end());
-    Case c{"chess piece, cone points of valence 4 and 5, a semi-sharp edge of 1.5 at one", chess, {}};
+    Case c{"chess piece, cone points of valence 4 and 5, a semi-sharp edge of 1.5 at one", chess, {}, {}};
     const int v4 = static_cast<int>(four - faces_at.begin()), v5 = static_cast<int>(five - faces_at.begin());
     c.f.corner(v4, 10);
     c.f.corner(v5, 10);
@@ -304,7 +304,7 @@ TEST_CASE("infinitely sharp creases and corners (sharpness >= 10) on quad meshes
   }
   {  // an open grid: two cone points side by side inside, next to the boundary (they share faces until steps part them)
     Mesh grid = test_meshes::open_grid(4, 3);
-    Case c{"open grid, two neighbouring cone points next to the boundary", grid, {}};
+    Case c{"open grid, two neighbouring cone points next to the boundary", grid, {}, {}};
     c.f.corner(1 * 5 + 1, 10);  // (1, 1)
     c.f.corner(1 * 5 + 2, 10);  // (2, 1)
     cases.push_back(c);
@@ -317,7 +317,7 @@ TEST_CASE("infinitely sharp creases and corners (sharpness >= 10) on quad meshes
   }
   {  // an open grid: a sharp line across it, boundary to boundary, and a sharp corner on its boundary in two faces
     Mesh grid = test_meshes::open_grid(4, 3);
-    Case c{"open grid, a sharp line across and a sharp boundary corner", grid, {}};
+    Case c{"open grid, a sharp line across and a sharp boundary corner", grid, {}, {}};
     for (int i = 0; i < 4; ++i) c.f.crease(1 * 5 + i, 1 * 5 + i + 1, 10);  // row j = 1, vertices (i, 1)
     c.f.corner(2, 10);                                                   // (2, 0): on the boundary in two faces
     cases.push_back(c);

@@ -102,25 +102,25 @@ std::vector<int> vertices_of_valence(const Mesh& m, const std::vector<int>& vale
 std::vector<Case> crease_cases() {
   std::vector<Case> out;
   {
-    Case c{"torus 8x6, one ring", triangle_torus(8, 6), {}};
+    Case c{"torus 8x6, one ring", triangle_torus(8, 6), {}, {}, {}};
     ring(c.features, 8, 2, 10);
     out.push_back(c);
   }
   {
-    Case c{"torus 8x6, two rings and a semi-sharp edge between them", triangle_torus(8, 6), {}};
+    Case c{"torus 8x6, two rings and a semi-sharp edge between them", triangle_torus(8, 6), {}, {}, {}};
     ring(c.features, 8, 1, 10);
     ring(c.features, 8, 4, 12);
     c.features.crease(2 * 8 + 3, 3 * 8 + 3, 1.5f);
     out.push_back(c);
   }
   {
-    Case c{"torus 6x5, one meridian", triangle_torus(6, 5), {}};
+    Case c{"torus 6x5, one meridian", triangle_torus(6, 5), {}, {}, {}};
     meridian(c.features, 6, 5, 2, 10);
     out.push_back(c);
   }
   {
     // The flipped quad (0, 3) has corners on row 3 and 4: valence 5 and 7 on the crease's side.
-    Case c{"torus 7x7 with valence 5 and 7 next to a ring", with_flip(triangle_torus(7, 7), 7, 3), {}};
+    Case c{"torus 7x7 with valence 5 and 7 next to a ring", with_flip(triangle_torus(7, 7), 7, 3), {}, {}, {}};
     ring(c.features, 7, 2, 10);
     ring(c.features, 7, 5, 10);
     out.push_back(c);
@@ -128,32 +128,32 @@ std::vector<Case> crease_cases() {
   {
     // The ring round vertex 3 * 8 + 3: the loop's vertices have two faces
     // inside and four outside (boundary sectors of the cut mesh).
-    Case c{"torus 8x6, a hexagonal loop", triangle_torus(8, 6), {}};
+    Case c{"torus 8x6, a hexagonal loop", triangle_torus(8, 6), {}, {}, {}};
     const int centre = 3 * 8 + 3;
     const int hexagon[6] = {centre + 1, centre + 9, centre + 8, centre - 1, centre - 9, centre - 8};
     for (int k = 0; k < 6; ++k) c.features.crease(hexagon[k], hexagon[(k + 1) % 6], 10);
     out.push_back(c);
   }
   {
-    Case c{"torus 8x6, a ring with an infinitely sharp corner on it", triangle_torus(8, 6), {}};
+    Case c{"torus 8x6, a ring with an infinitely sharp corner on it", triangle_torus(8, 6), {}, {}, {}};
     ring(c.features, 8, 2, 10);
     c.features.corner(2 * 8 + 3, 10);
     out.push_back(c);
   }
   {
     // Four sharp edges where they cross: a corner whose sides have one and two faces.
-    Case c{"torus 8x6, a ring crossing a meridian", triangle_torus(8, 6), {}};
+    Case c{"torus 8x6, a ring crossing a meridian", triangle_torus(8, 6), {}, {}, {}};
     ring(c.features, 8, 2, 10);
     meridian(c.features, 8, 6, 0, 10);
     out.push_back(c);
   }
   {
-    Case c{"tube 8x4 with a ring inside, edge-only", triangle_tube(8, 4), {}};
+    Case c{"tube 8x4 with a ring inside, edge-only", triangle_tube(8, 4), {}, {}, {}};
     ring(c.features, 8, 2, 10);
     out.push_back(c);
   }
   {
-    Case c{"tube 8x4 with a ring inside, edge-and-corner, a semi-sharp corner on the ring", triangle_tube(8, 4), {}};
+    Case c{"tube 8x4 with a ring inside, edge-and-corner, a semi-sharp corner on the ring", triangle_tube(8, 4), {}, {}, {}};
     c.features.boundary(BoundaryInterpolation::EdgeAndCorner);
     ring(c.features, 8, 2, 10);
     c.features.corner(2 * 8 + 5, 2.0f);
@@ -161,13 +161,13 @@ std::vector<Case> crease_cases() {
   }
   {
     // Corners where it meets the rims: sectors of four faces on one side and two on the other.
-    Case c{"tube 8x4 with a meridian from rim to rim, edge-only", triangle_tube(8, 4), {}};
+    Case c{"tube 8x4 with a meridian from rim to rim, edge-only", triangle_tube(8, 4), {}, {}, {}};
     for (int j = 0; j < 4; ++j) c.features.crease(j * 8 + 3, (j + 1) * 8 + 3, 10);
     out.push_back(c);
   }
   {
     // Under `none`: the crease loop's vertices are sectors of the cut mesh (two faces inside, four outside), not of its boundary.
-    Case c{"tube 8x5 with a hexagonal loop inside, none", triangle_tube(8, 5), {}};
+    Case c{"tube 8x5 with a hexagonal loop inside, none", triangle_tube(8, 5), {}, {}, {}};
     c.features.boundary(BoundaryInterpolation::None);
     const int centre = 2 * 8 + 3;
     const int hexagon[6] = {centre + 1, centre + 9, centre + 8, centre - 1, centre - 9, centre - 8};
@@ -175,26 +175,26 @@ std::vector<Case> crease_cases() {
     out.push_back(c);
   }
   {
-    Case c{"tube 8x4 with a ring one row from the rim, none", triangle_tube(8, 4), {}};
+    Case c{"tube 8x4 with a ring one row from the rim, none", triangle_tube(8, 4), {}, {}, {}};
     c.features.boundary(BoundaryInterpolation::None);
     ring(c.features, 8, 1, 10);
     out.push_back(c);
   }
   // Darts: the ends of infinitely sharp creases inside the mesh (sector patches with Loop's smooth rule at B).
   {
-    Case c{"torus 8x6, two edges of a ring (darts of valence 6 at its ends)", triangle_torus(8, 6), {}};
+    Case c{"torus 8x6, two edges of a ring (darts of valence 6 at its ends)", triangle_torus(8, 6), {}, {}, {}};
     c.features.crease(16, 17, 10);
     c.features.crease(17, 18, 10);
     c.darts = {16, 18};
     out.push_back(c);
   }
   {
-    Case c{"torus 8x6, one sharp edge (two darts next to each other)", triangle_torus(8, 6), {}};
+    Case c{"torus 8x6, one sharp edge (two darts next to each other)", triangle_torus(8, 6), {}, {}, {}};
     sharp_edges_from(c, {3 * 8 + 2});
     out.push_back(c);
   }
   {
-    Case c{"icosahedron, a sharp path of two edges (darts of valence 5)", read_obj((kMeshes / "icosahedron.obj").string()), {}};
+    Case c{"icosahedron, a sharp path of two edges (darts of valence 5)", read_obj((kMeshes / "icosahedron.obj").string()), {}, {}, {}};
     const auto& fv = c.mesh.face_vertices;  // the path a - b - c along the first face's two edges
     c.features.crease(fv[0], fv[1], 10);
     c.features.crease(fv[1], fv[2], 10);
@@ -202,38 +202,38 @@ std::vector<Case> crease_cases() {
     out.push_back(c);
   }
   {
-    Case c{"tri-mix, a sharp edge at a vertex of valence 3, 4 and 8 each", read_obj((kMeshes / "tri-mix.obj").string()), {}};
+    Case c{"tri-mix, a sharp edge at a vertex of valence 3, 4 and 8 each", read_obj((kMeshes / "tri-mix.obj").string()), {}, {}, {}};
     sharp_edges_from(c, vertices_of_valence(c.mesh, {3, 4, 8}));
     out.push_back(c);
   }
   {
-    Case c{"tri-torus, a sharp edge at a vertex of valence 5 and 7", read_obj((kMeshes / "tri-torus.obj").string()), {}};
+    Case c{"tri-torus, a sharp edge at a vertex of valence 5 and 7", read_obj((kMeshes / "tri-torus.obj").string()), {}, {}, {}};
     sharp_edges_from(c, vertices_of_valence(c.mesh, {5, 7}));
     out.push_back(c);
   }
   {
     // The edge from the rim's vertex 3 inward: a corner on the rim (two boundary edges and it), a dart inside.
-    Case c{"tube 8x4, a sharp edge from the rim inward, edge-only", triangle_tube(8, 4), {}};
+    Case c{"tube 8x4, a sharp edge from the rim inward, edge-only", triangle_tube(8, 4), {}, {}, {}};
     c.features.crease(3, 8 + 3, 10);
     c.darts = {8 + 3};
     out.push_back(c);
   }
   // Cone points: sharp vertices on no sharp edge (B held, the smooth rules round it).
   {
-    Case c{"torus 8x6, a cone point of valence 6 next to a sharp ring", triangle_torus(8, 6), {}};
+    Case c{"torus 8x6, a cone point of valence 6 next to a sharp ring", triangle_torus(8, 6), {}, {}, {}};
     ring(c.features, 8, 2, 10);
     c.features.corner(3 * 8 + 3, 10);
     c.cones = {3 * 8 + 3};
     out.push_back(c);
   }
   {
-    Case c{"icosahedron, a cone point of valence 5", read_obj((kMeshes / "icosahedron.obj").string()), {}};
+    Case c{"icosahedron, a cone point of valence 5", read_obj((kMeshes / "icosahedron.obj").string()), {}, {}, {}};
     c.features.corner(c.mesh.face_vertices[0], 10);
     c.cones = {c.mesh.face_vertices[0]};
     out.push_back(c);
   }
   {
-    Case c{"tri-mix, cone points of valence 3, 4 and 8", read_obj((kMeshes / "tri-mix.obj").string()), {}};
+    Case c{"tri-mix, cone points of valence 3, 4 and 8", read_obj((kMeshes / "tri-mix.obj").string()), {}, {}, {}};
     for (int v : vertices_of_valence(c.mesh, {3, 4, 8})) c.features.corner(v, 10), c.cones.insert(v);
     out.push_back(c);
   }
