@@ -67,7 +67,8 @@ Fraction multiply(const Fraction& a, std::int64_t k) {
 
 int compare(const Fraction& a, const Fraction& b) {
   // a.num * b.den vs b.num * a.den, in 128 bits (both denominators positive).
-  const __int128 l = static_cast<__int128>(a.num) * b.den, r = static_cast<__int128>(b.num) * a.den;
+  __extension__ typedef __int128 Wide;  // GCC and Clang: no warning under -Wpedantic
+  const Wide l = static_cast<Wide>(a.num) * b.den, r = static_cast<Wide>(b.num) * a.den;
   return l < r ? -1 : (l > r ? 1 : 0);
 }
 
