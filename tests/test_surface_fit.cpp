@@ -546,13 +546,21 @@ TEST_CASE("Adaptive fitting refines where the error is large, within the budget,
     if (kind == 1) tagged.tags.corners.push_back({ico.face_vertices[0], 3.0, 22});
     if (kind == 2) tagged.tags.holes.push_back({5, 23});
     CHECK_THROWS_WITH(fit_adaptively(tables, tagged, points, options, 120),
-                      Catch::Contains("ico.obj:2" + std::to_string(kind + 1)) && Catch::Contains("does not carry tags"));
+                      Catch::Contains("ico.obj:2" + std::to_string(kind + 1)) &&
+                          Catch::Contains("does not carry crease, corner or hole tags"));
+  }
+  {  // the whole-mesh options go with every round
+    Mesh with_options = ico;
+    with_options.tags.boundary = BoundaryInterpolation::EdgeAndCorner;
+    const AdaptiveFit carried = fit_adaptively(tables, with_options, points, options, 24);
+    CHECK(carried.rounds >= 1);
+    CHECK(carried.mesh.tags.boundary == BoundaryInterpolation::EdgeAndCorner);
   }
   options.max_error = 0;
   CHECK_THROWS_WITH(fit_adaptively(tables, ico, points, options, 100), Catch::Contains("max error above 0"));
 }
 
-TEST_CASE("no tool writes over its tables or into their folder", "[fitting][cli]") {
+TEST_CASE("no tool writes over its tables or into a folder of JSON tables", "[fitting][cli]") {
   // The tables are an input like the mesh and the points: stencildist and
   // stencilfit used to replace a .sgs given again as --out, --report or --plot.
   const std::filesystem::path table = generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs");
@@ -564,38 +572,42 @@ TEST_CASE("no tool writes over its tables or into their folder", "[fitting][cli]
   write_points(dir / "points.xyz", ellipsoid_points(100, 0, 3));
   write_mesh(dir / "sphere.obj", quad_sphere(2));
   const std::string mesh = (dir / "sphere.obj").string(), points = (dir / "points.xyz").string();
-  const std::string inside = (copy.parent_path() / "new.obj").string();
-  for (const std::string& tables : {copy.string(), copy.parent_path().string()}) {
-    const std::vector<std::pair<CliResult, std::string>> runs{
-        {run_command(STENCILDIST_EXE, "--tables " + tables + " --mesh " + mesh + " --points " + points + " --out " + copy.string()),
-         copy.string() + " is an input and the output"},
-        {run_stencilfit("--tables " + tables + " --points " + points + " --control " + mesh + " --out " +
-                        (dir / "f.obj").string() + " --report " + copy.string()),
-         copy.string() + " is an input and the output"},
-        {run_stencilfit("--tables " + tables + " --points " + points + " --control " + mesh + " --out " +
-                        (dir / "f.obj").string() + " --plot " + copy.string()),
-         copy.string() + " is an input and the output"}};
-    for (const auto& [r, message] : runs) {
+  for (const std::string& tables : {copy.string(), copy.parent_path().string(), copy.parent_path().string() + "/"}) {
+    const std::vector<CliResult> runs{
+        run_command(STENCILDIST_EXE, "--tables " + tables + " --mesh " + mesh + " --points " + points + " --out " + copy.string()),
+        run_stencilfit("--tables " + tables + " --points " + points + " --control " + mesh + " --out " +
+                       (dir / "f.obj").string() + " --report " + copy.string()),
+        run_stencilfit("--tables " + tables + " --points " + points + " --control " + mesh + " --out " +
+                       (dir / "f.obj").string() + " --plot " + copy.string())};
+    for (const CliResult& r : runs) {
       INFO(tables << "\n" << r.output);
       CHECK(r.status == 1);
-      CHECK_THAT(r.output, Catch::Contains(message) || Catch::Contains("is inside the input folder"));
-    }
-    if (tables == copy.parent_path().string()) {
-      // A table folder is read whole: nothing is written into it.
-      const std::vector<CliResult> into{
-          run_command(STENCILDIST_EXE, "--tables " + tables + " --mesh " + mesh + " --points " + points + " --out " + inside),
-          run_stenciltess("--tables " + tables + " --mesh " + mesh + " --rate 2 --out " + inside),
-          run_stencilfit("--tables " + tables + " --points " + points + " --control " + mesh + " --out " + inside)};
-      for (const CliResult& r : into) {
-        INFO(r.output);
-        CHECK(r.status == 1);
-        CHECK_THAT(r.output, Catch::Contains("is inside the input folder"));
-      }
-      CHECK_FALSE(std::filesystem::exists(inside));
+      CHECK_THAT(r.output, Catch::Contains(copy.string() + " is an input and the output"));
     }
   }
   CHECK(std::filesystem::file_size(copy) == bytes);
   CHECK(Tables::load(copy.string())->scheme() == "catmull-clark");
+  // Other files beside a table file are not read: an output may go there.
+  const std::string beside = (copy.parent_path() / "beside.obj").string();
+  const CliResult next_to = run_stenciltess("--tables " + copy.parent_path().string() + " --mesh " + mesh + " --rate 2 --out " + beside);
+  INFO(next_to.output);
+  CHECK(next_to.status == 0);
+  CHECK(std::filesystem::exists(beside));
+  // A folder of exact JSON tables is read whole: nothing is written into it.
+  const std::filesystem::path json = dir / "json";
+  std::filesystem::copy(table.parent_path(), json, std::filesystem::copy_options::recursive);
+  std::filesystem::remove(json / table.filename());
+  const std::string inside = (json / "v3" / "new.obj").string();
+  const std::vector<CliResult> into{
+      run_command(STENCILDIST_EXE, "--tables " + json.string() + " --mesh " + mesh + " --points " + points + " --out " + inside),
+      run_stenciltess("--tables " + json.string() + " --mesh " + mesh + " --rate 2 --out " + inside),
+      run_stencilfit("--tables " + json.string() + " --points " + points + " --control " + mesh + " --out " + inside)};
+  for (const CliResult& r : into) {
+    INFO(r.output);
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains("a folder of tables read whole"));
+  }
+  CHECK_FALSE(std::filesystem::exists(inside));
   std::filesystem::remove_all(dir);
 }
 

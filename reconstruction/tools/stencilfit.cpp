@@ -114,7 +114,9 @@ int main(int argc, char** argv) {
       const auto same = stencil_tools::same_path;
       if (same(out_path, report_path) || same(out_path, plot_path) || same(report_path, plot_path))
         throw std::runtime_error("--out, --report and --plot must name three different files");
-      stencil_tools::check_outputs_are_not_inputs({out_path, report_path, plot_path}, {tables_spec, points_path, control_path});
+      const stencil_tools::TableInput read = stencil_tools::table_input(tables_spec);
+      stencil_tools::check_outputs_are_not_inputs({out_path, report_path, plot_path}, {read.file, points_path, control_path},
+                                                  {read.folder});
     }
     for (const std::string& output : {out_path, report_path, plot_path}) stencil_tools::check_output_can_be_written(output);
     if (max_control_points > 0 && !(options.max_error > 0))

@@ -73,7 +73,8 @@ int main(int argc, char** argv) {
                                "1e-16 of it)");
     if (!(max_distance > 0)) throw std::runtime_error("--max-distance must be a positive number");
     if (threads < 0 || threads > 256) throw std::runtime_error("--threads must be 1..256 (or 0 for all cores)");
-    stencil_tools::check_output_is_not_input(out_path, {tables_spec, mesh_path, points_path});
+    const stencil_tools::TableInput read = stencil_tools::table_input(tables_spec);
+    stencil_tools::check_output_is_not_input(out_path, {read.file, mesh_path, points_path}, {read.folder});
     stencil_tools::check_output_can_be_written(out_path);
     const auto tables = Tables::load(tables_spec);
     Mesh mesh = read_obj(mesh_path);

@@ -79,8 +79,9 @@ int main(int argc, char** argv) {
     if (threads < 0 || threads > 256) throw std::runtime_error("--threads must be 1..256 (or 0 for all cores)");
     if (app.count("--rate") && (rate < 1 || rate > limits::kMaxRate))
       throw std::runtime_error("--rate must be 1.." + std::to_string(limits::kMaxRate));
+    const stencil_tools::TableInput read = stencil_tools::table_input(tables_spec);
     if (!frames.empty()) stencil_tools::check_frame_pattern(out);
-    else stencil_tools::check_output_is_not_input(out, {tables_spec, mesh_path, rates_file});
+    else stencil_tools::check_output_is_not_input(out, {read.file, mesh_path, rates_file}, {read.folder});
     stencil_tools::check_output_can_be_written(frames.empty() ? out : stencil_tools::frame_name(out, 0));
     {  // the format, before the work (write_polygons would refuse it only at the end)
       const std::string ext = std::filesystem::path(out).extension().string();
@@ -142,10 +143,10 @@ int main(int argc, char** argv) {
     if (files.size() > 1000000) throw std::runtime_error(stencil_runtime::quoted_excerpt(frames) + " names more than 1000000 frames");
     std::vector<std::string> inputs = files, names;
     inputs.push_back(mesh_path);
-    inputs.push_back(tables_spec);
+    inputs.push_back(read.file);
     inputs.push_back(rates_file);
     for (std::size_t k = 0; k < files.size(); ++k) names.push_back(stencil_tools::frame_name(out, k));
-    stencil_tools::check_outputs_are_not_inputs(names, inputs);
+    stencil_tools::check_outputs_are_not_inputs(names, inputs, {read.folder});
     for (std::size_t k = 0; k < files.size(); ++k) {
       const Mesh frame = read_obj(files[k]);
       if (!topology->same_connectivity(frame.vertex_count(), frame.face_sizes, frame.face_vertices))

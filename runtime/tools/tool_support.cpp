@@ -2,6 +2,7 @@
 #include "tool_support.hpp"
 
 #include "mesh/file_output.hpp"
+#include "stencil_runtime/tables.hpp"
 
 #include <glob.h>
 
@@ -139,8 +140,9 @@ std::vector<std::string> expand_pattern(const std::string& pattern) {
   return out;
 }
 
-void check_output_is_not_input(const std::string& output, const std::vector<std::string>& inputs) {
-  check_outputs_are_not_inputs({output}, inputs);
+void check_output_is_not_input(const std::string& output, const std::vector<std::string>& inputs,
+                               const std::vector<std::string>& folders) {
+  check_outputs_are_not_inputs({output}, inputs, folders);
 }
 
 namespace {
@@ -166,21 +168,30 @@ bool inside(const fs::path& path, const fs::path& folder) {
 
 bool same_path(const std::string& a, const std::string& b) { return !a.empty() && !b.empty() && resolved(a) == resolved(b); }
 
-void check_outputs_are_not_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
-  // An input folder (a table directory) is read whole: nothing may be written into it.
-  for (const std::string& input : inputs) {
-    if (input.empty()) continue;
-    const fs::path read = resolved(input);
-    std::error_code ec;
-    const bool folder = fs::is_directory(read, ec);
-    for (const std::string& output : outputs) {
-      if (output.empty()) continue;
-      const fs::path written = resolved(output);
-      if (written == read) throw std::runtime_error(output + " is an input and the output; give the output another name");
-      if (folder && inside(written, read))
-        throw std::runtime_error(output + " is inside the input folder " + input + "; write the output elsewhere");
-    }
+void check_outputs_are_not_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs,
+                                  const std::vector<std::string>& folders) {
+  // Each path resolved once: an animation checks a million frames against a million inputs.
+  std::set<fs::path> read;
+  for (const std::string& input : inputs)
+    if (!input.empty()) read.insert(resolved(input));
+  std::vector<std::pair<fs::path, std::string>> read_whole;
+  for (const std::string& folder : folders)
+    if (!folder.empty()) read_whole.emplace_back(resolved(folder), folder);
+  for (const std::string& output : outputs) {
+    if (output.empty()) continue;
+    const fs::path written = resolved(output);
+    if (read.count(written)) throw std::runtime_error(output + " is an input and the output; give the output another name");
+    for (const auto& [folder, given] : read_whole)
+      if (inside(written, folder))
+        throw std::runtime_error(output + " is inside " + given + ", a folder of tables read whole; write the output elsewhere");
   }
+}
+
+TableInput table_input(const std::string& spec) {
+  const std::string path = stencil_runtime::Tables::file_of(spec);
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) return {"", path};
+  return {path, ""};
 }
 
 void check_output_can_be_written(const std::string& output) {

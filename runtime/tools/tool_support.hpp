@@ -54,10 +54,20 @@ std::vector<std::string> expand_pattern(const std::string& pattern);
 // Whether two paths name one file (links resolved where they can be); false for an empty path.
 bool same_path(const std::string& a, const std::string& b);
 
-// Refuses an output path that names one of the inputs, or lies inside an
-// input folder (the run would destroy what it reads); empty paths are ignored.
-void check_output_is_not_input(const std::string& output, const std::vector<std::string>& inputs);
-void check_outputs_are_not_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
+// Refuses an output path that names one of the input files, or lies inside
+// one of the folders read whole (the run would destroy what it reads); empty
+// paths are ignored.
+void check_output_is_not_input(const std::string& output, const std::vector<std::string>& inputs,
+                               const std::vector<std::string>& folders = {});
+void check_outputs_are_not_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs,
+                                  const std::vector<std::string>& folders = {});
+
+// What Tables::load(spec) reads, for the checks above: its table file, or
+// its folder of exact JSON tables. Throws LoadError as the load would.
+struct TableInput {
+  std::string file, folder;
+};
+TableInput table_input(const std::string& spec);
 
 // Refuses, before the work, an output that could not be written at its end:
 // a path that is a directory, or whose folder is missing, not a folder or not

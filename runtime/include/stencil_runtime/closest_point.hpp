@@ -29,6 +29,7 @@ struct ClosestPointOptions {
   int threads = 0;  // batch queries: 0 for all cores
   // Batch queries: called about once a second with how many of how many are
   // done, from one query thread at a time (for a long run's progress lines).
+  // It must not start parallel work itself (a query thread calls it).
   std::function<void(std::size_t done, std::size_t total)> progress;
 };
 

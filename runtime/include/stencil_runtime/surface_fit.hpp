@@ -102,7 +102,8 @@ Mesh refine_red_green(const Mesh& mesh, const std::vector<bool>& marked, int max
 // from the refined mesh. Returns the
 // last mesh with the fitted positions and the iterations of every round.
 // Throws FitError for a budget below the mesh's vertex count, and for a mesh
-// with tags (creases, corners, holes, options), which the splits do not carry yet.
+// with crease, corner or hole tags, which the splits do not carry yet (the
+// whole-mesh options, such as interpolateboundary, go with every round).
 struct AdaptiveFit {
   Mesh mesh;
   FitResult fit;

@@ -28,6 +28,9 @@ class Tables {
   // version, checksum, a count, index or rate out of its limits, or a scheme
   // hash other than a nonzero `expected_hash`).
   static std::shared_ptr<const Tables> load(const std::string& path, std::uint64_t expected_hash = 0);
+  // What load(path) reads: the table file, or the directory of exact JSON
+  // tables. Throws LoadError as load() does when there is none.
+  static std::string file_of(const std::string& path);
 
   SchemeFamily family() const { return family_; }
   const std::string& scheme() const { return scheme_; }  // e.g. "nonpoly"

@@ -160,7 +160,13 @@ double domain_angle(bool triangle, double x, double y, const Derivatives& d) {
       const double a = to[0] - c[0], b = to[1] - c[1];
       return Point{a * d.du[0] + b * d.dv[0], a * d.du[1] + b * d.dv[1], a * d.du[2] + b * d.dv[2]};
     };
-    const Point e1 = along(next), e2 = along(previous);
+    // Scaled to their largest component: the angle does not change, and
+    // neither cross nor dot underflows on a tiny mesh (tangents of 1e-90).
+    auto scaled = [](const Point& a) {
+      const double m = std::fmax(std::fabs(a[0]), std::fmax(std::fabs(a[1]), std::fabs(a[2])));
+      return m > 0 ? Point{a[0] / m, a[1] / m, a[2] / m} : a;
+    };
+    const Point e1 = scaled(along(next)), e2 = scaled(along(previous));
     return std::atan2(length(cross(e1, e2)), dot(e1, e2));
   }
   return on_patch_border(triangle, x, y) ? std::numbers::pi : 2 * std::numbers::pi;
@@ -231,11 +237,13 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
   Point lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
   for (const Point& p : prepared)
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  const double diagonal = std::sqrt(dot(minus(hi, lo), minus(hi, lo)));
+  const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);  // no underflow for a tiny mesh
+  // Measured on the prepared points, which the queries use (inside the control points' hull).
+  if (diagonal == 0) throw EvaluationError("closest points: the control points all coincide (the surface is one point)");
   if (!(diagonal >= limits::kMinQueryExtent)) {
     char extent[32];
     std::snprintf(extent, sizeof extent, "%.3g", diagonal);
-    throw EvaluationError(std::string("closest points: the control points span ") + extent +
+    throw EvaluationError(std::string("closest points: the prepared control points span ") + extent +
                           " (bounding-box diagonal), below 1e-100: distances at that scale lose their digits in "
                           "doubles; scale the mesh up");
   }
@@ -423,13 +431,13 @@ std::vector<ClosestPoint> ClosestPointQuery::find(const std::vector<Point>& quer
           throw EvaluationError(at + std::string(e.what()));
         }
       }
-      const std::size_t now_done = done += r.size();
+      done += r.size();
       if (progress && reporting.try_lock()) {
         const std::lock_guard<std::mutex> held(reporting, std::adopt_lock);
         const auto now = std::chrono::steady_clock::now();
         if (now - last_report >= std::chrono::seconds(1)) {
           last_report = now;
-          progress(now_done, queries.size());
+          progress(done.load(), queries.size());  // read under the lock: reports never go backwards
         }
       }
     });

@@ -18,9 +18,11 @@ AdaptiveFit fit_adaptively(const std::shared_ptr<const Tables>& tables, const Me
       throw FitError("adaptive refinement splits triangles: face " + std::to_string(f) + " of the control mesh has " +
                      std::to_string(mesh.face_sizes[f]) +
                      " corners (give a triangle control mesh, or let --control-points make one)");
-  // The splits below make a new mesh from the old one's faces alone: a tag
-  // would be dropped or left naming the wrong faces, and a fit that ignored it
-  // would answer for another surface than the file asks for.
+  // The splits below make a new mesh from the old one's faces alone: a tag on
+  // an edge, a vertex or a face would be dropped or left naming the wrong
+  // elements, and a fit that ignored it would answer for another surface than
+  // the file asks for. The options that apply to the whole mesh
+  // (interpolateboundary, creasemethod, smoothtriangles) go with every round.
   {
     const MeshTags& t = mesh.tags;
     long line = 0;
@@ -30,21 +32,17 @@ AdaptiveFit fit_adaptively(const std::shared_ptr<const Tables>& tables, const Me
     for (const auto& c : t.corners)
       if (c.sharpness > 0 && !what) what = "a corner", line = c.line;
     if (!t.holes.empty() && !what) what = "a hole", line = t.holes.front().line;
-    if (t.smooth_triangles && !what) what = "`smoothtriangles`", line = t.smooth_triangles_line;
-    if (t.chaikin_creases && !what) what = "`creasemethod chaikin`";
-    if (t.boundary != BoundaryInterpolation::EdgeOnly && !what) what = "an `interpolateboundary` option";
     if (what)
       throw FitError((mesh.source.empty() ? std::string("the control mesh") : mesh.source) +
                      (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + what +
-                     " tag; adaptive refinement does not carry tags through its splits yet (fit without it, or "
-                     "remove the tags)");
+                     " tag; adaptive refinement does not carry crease, corner or hole tags through its splits yet "
+                     "(fit without it, or remove the tags)");
   }
   AdaptiveFit out;
   out.mesh = mesh;
   double elapsed = 0;
   for (;;) {
-    const auto topology =
-        SurfaceTopology::create(tables, out.mesh.vertex_count(), out.mesh.face_sizes, out.mesh.face_vertices);
+    const auto topology = SurfaceTopology::create(tables, out.mesh);  // with the whole-mesh options
     FitOptions round = options;
     const auto offset = out.fit.history.empty() ? 0 : out.fit.history.back().iteration;
     round.progress = [&](const FitIteration& it) {
@@ -100,6 +98,10 @@ AdaptiveFit fit_adaptively(const std::shared_ptr<const Tables>& tables, const Me
       out.stopped = "the control-point budget has no room for a split with its closure";
       break;
     }
+    refined.tags.boundary = mesh.tags.boundary;
+    refined.tags.chaikin_creases = mesh.tags.chaikin_creases;
+    refined.tags.smooth_triangles = mesh.tags.smooth_triangles;
+    refined.source = mesh.source;
     out.mesh = std::move(refined);
     ++out.rounds;
   }

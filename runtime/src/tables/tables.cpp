@@ -41,6 +41,8 @@ fs::path table_file(const std::string& spec) {
 Tables::Tables() = default;
 Tables::~Tables() = default;
 
+std::string Tables::file_of(const std::string& path) { return table_file(path).string(); }
+
 std::shared_ptr<const Tables> Tables::load(const std::string& path, std::uint64_t expected_hash) {
   const fs::path file = table_file(path);
   std::shared_ptr<Tables> t(new Tables());
