@@ -7,11 +7,19 @@
 
 namespace stencil_runtime {
 
+// `a` divided by its largest component's magnitude (zero stays zero): the
+// direction is kept, and products of two such vectors neither underflow nor
+// overflow, whatever the mesh's size.
+inline Point scaled_to_unit_max(const Point& a) {
+  const double m = std::fmax(std::fabs(a[0]), std::fmax(std::fabs(a[1]), std::fabs(a[2])));
+  return m > 0 ? Point{a[0] / m, a[1] / m, a[2] / m} : a;
+}
+
 // du x dv, normalised: outward for a mesh whose faces are counter-clockwise
 // seen from outside. Zero where du and dv are parallel (a degenerate mesh).
 // Tangents of a tiny mesh (coordinates of 1e-80, say) have a cross product
-// whose squared length underflows: those are scaled to their largest
-// component first, which changes the direction by nothing but rounding.
+// whose squared length underflows: those are scaled first
+// (scaled_to_unit_max), which changes the direction by nothing but rounding.
 inline Point unit_cross(const Point& du, const Point& dv) {
   auto cross = [](const Point& a, const Point& b) {
     return Point{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
@@ -19,11 +27,7 @@ inline Point unit_cross(const Point& du, const Point& dv) {
   Point n = cross(du, dv);
   double squared = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
   if (squared < 1e-280) {  // or zero: far above the denormals, where digits go
-    auto scaled = [](const Point& a) {
-      const double m = std::fmax(std::fabs(a[0]), std::fmax(std::fabs(a[1]), std::fabs(a[2])));
-      return m > 0 ? Point{a[0] / m, a[1] / m, a[2] / m} : a;
-    };
-    n = cross(scaled(du), scaled(dv));
+    n = cross(scaled_to_unit_max(du), scaled_to_unit_max(dv));
     squared = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
   }
   const double length = std::sqrt(squared);

@@ -17,6 +17,7 @@
 
 #include "distance/face_search.hpp"
 #include "distance/point_ops.hpp"
+#include "stencil_runtime/derivatives.hpp"
 #include "stencil_runtime/error.hpp"
 #include "stencil_runtime/limits.hpp"
 
@@ -160,13 +161,9 @@ double domain_angle(bool triangle, double x, double y, const Derivatives& d) {
       const double a = to[0] - c[0], b = to[1] - c[1];
       return Point{a * d.du[0] + b * d.dv[0], a * d.du[1] + b * d.dv[1], a * d.du[2] + b * d.dv[2]};
     };
-    // Scaled to their largest component: the angle does not change, and
-    // neither cross nor dot underflows on a tiny mesh (tangents of 1e-90).
-    auto scaled = [](const Point& a) {
-      const double m = std::fmax(std::fabs(a[0]), std::fmax(std::fabs(a[1]), std::fabs(a[2])));
-      return m > 0 ? Point{a[0] / m, a[1] / m, a[2] / m} : a;
-    };
-    const Point e1 = scaled(along(next)), e2 = scaled(along(previous));
+    // Scaled: the angle does not change, and neither cross nor dot
+    // underflows on a tiny mesh (tangents of 1e-90).
+    const Point e1 = scaled_to_unit_max(along(next)), e2 = scaled_to_unit_max(along(previous));
     return std::atan2(length(cross(e1, e2)), dot(e1, e2));
   }
   return on_patch_border(triangle, x, y) ? std::numbers::pi : 2 * std::numbers::pi;
