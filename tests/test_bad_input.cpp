@@ -91,6 +91,16 @@ TEST_CASE("unknown schemes, bad rates and bad parameters are refused") {
   expect_failure("--scheme fourpoint --n=-2", "not a positive integer", out);
   expect_failure("--scheme fourpoint --n 3 --param q=1/2", "has no parameter 'q'", out);
   expect_failure("--scheme fourpoint --n 3 --param w=1/0", "division by zero", out);
+  // A parameter given twice is a mistake, not "the last one wins".
+  expect_failure("--scheme fourpoint --n 3 --param w=1/32 --param w=1/16", "parameter 'w' is overridden twice", out);
+  // An empty value names no file: refused, not taken as "none" or as ".".
+  for (const std::string& args : {std::string("--scheme fourpoint --n 3 --out ''"), "--scheme '' --n 3 --out " + out.string(),
+                                 std::string("plot --scheme fourpoint --n 3 --out ''")}) {
+    const CliResult r = run_stencilgen(args);
+    INFO(args << "\n" << r.output);
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains(": an empty value"));
+  }
   // Options that would change nothing for the scheme's kind are refused, not ignored.
   expect_failure("--scheme fourpoint --n 3 --binary-precision single", "--binary-precision applies to surface schemes", out);
   expect_failure("--scheme loop --n 2 --route eigen", "--route applies to curve schemes", out);
@@ -239,6 +249,9 @@ TEST_CASE("a successful run writes JSON and binary tables for every rate, and ve
   const CliResult plot = run_stencilgen("plot --scheme fourpoint --n 21 --out " + (dir / "p.svg").string());
   CHECK(plot.status == 0);
   CHECK(fs::file_size(dir / "p.svg") > 1000);
+  const CliResult upper = run_stencilgen("plot --scheme fourpoint --n 21 --out " + (dir / "P.SVG").string());
+  CHECK(upper.status == 0);  // the extension in either case
+  CHECK(fs::exists(dir / "P.SVG"));
   // A scheme file is never an output: plot writes .svg only (it used to
   // replace its own scheme with SVG), and a generation refuses a scheme file
   // inside the folder OUT/<scheme> it replaces (it used to delete it).

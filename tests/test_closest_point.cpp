@@ -643,6 +643,30 @@ TEST_CASE("stencildist answers as the library does and refuses bad points files 
   const std::string header = "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
   refused(write("more.ply", header + "0 0 0\n1 1 1\n2 2 2\n"), "more.ply:10: more lines than the header's 2 points declare");
   refused(write("wide.ply", header + "0 0 0\n1 1 1 1\n"), "wide.ply:9: more than the 3 values the header declares");
+  // A property declared twice (which x is meant?), and faces cut short, as text and in binary.
+  refused(write("twice.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+                             "property double x\nend_header\n0 0 0 1\n"),
+          "twice.ply:7: vertex property 'x' is declared twice");
+  const std::string faces = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                            "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  refused(write("cut-faces.ply", faces + "3 0 1 2\n"), "truncated: the file ends after 1 of the 2 lines of the elements after the points (face");
+  {
+    std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                         "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
+    const float xyz[9] = {0.1f, 0.2f, 0.9f, 3, -1, 0.5f, 0, 0, 0};
+    binary.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+    const int triangle[3] = {0, 1, 2};
+    std::string face(1, '\3');
+    face.append(reinterpret_cast<const char*>(triangle), sizeof triangle);
+    refused(write("cut-faces-binary.ply", binary + face), "truncated: the file ends within face 2 of 2 (binary)");
+    refused(write("long-faces-binary.ply", binary + face + face + "x"), "1 bytes after the 3 points the header declares and the elements after them");
+    // Both faces whole: read, and the same points as the text file.
+    const std::string whole = write("faces-binary.ply", binary + face + face);
+    const CliResult r = dist(whole, "--out " + out);
+    INFO(r.output);
+    CHECK(r.status == 0);
+    std::filesystem::remove(out);
+  }
   {
     std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
     const float xyz[9] = {0, 0, 0, 1, 1, 1, 2, 2, 2};

@@ -417,6 +417,65 @@ TEST_CASE("tool options and parameters outside their limits are refused, not wra
   fs::remove_all(dir);
 }
 
+TEST_CASE("empty option values are refused, extensions are read in either case, a mesh too small for floats is refused",
+          "[runtime][robustness]") {
+  const fs::path dir = scratch_dir("robust-names");
+  const std::string tables = nonpoly_dir(), cube = (kMeshes / "cube.obj").string();
+  write_file(dir / "q.xyz", "0.1 0.2 0.9\n3 -1 0.5\n");
+  auto dist = [&](const std::string& points, const std::string& extra) {
+    return run_command(STENCILDIST_EXE, "--tables " + tables + " --mesh " + cube + " --points " + points + " " + extra);
+  };
+  // `--out ''` used to write the results to standard output, as if no --out were given.
+  const CliResult empty = dist((dir / "q.xyz").string(), "--out ''");
+  expect_error(empty, "--out: an empty value");
+  expect_error(run_stenciltess("--tables " + tables + " --mesh '' --rate 2 --out " + (dir / "t.obj").string()), "--mesh: an empty value");
+  expect_error(run_stencileval("--tables " + tables + " --mesh " + cube + " --face 0 --uv ''"), "--uv: an empty value");
+  // A points file named .PLY is a PLY file (it used to be read as `x y z` lines and fail on its header).
+  write_file(dir / "Q.PLY", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
+                             "0.1 0.2 0.9\n3 -1 0.5\n");
+  const CliResult xyz = dist((dir / "q.xyz").string(), ""), ply = dist((dir / "Q.PLY").string(), "");
+  INFO(ply.output);
+  CHECK(ply.status == 0);
+  CHECK(xyz.status == 0);
+  CHECK(ply.output.substr(0, ply.output.find("points")) == xyz.output.substr(0, xyz.output.find("points")));
+  // A tessellation written as OUT.PLY is the binary PLY that out.ply would be.
+  const CliResult upper = run_stenciltess("--tables " + tables + " --mesh " + cube + " --rate 2 --out " + (dir / "T.PLY").string());
+  INFO(upper.output);
+  REQUIRE(upper.status == 0);
+  CHECK(read_text(dir / "T.PLY").rfind("ply\nformat binary_little_endian", 0) == 0);
+  // A cube of 1e-40: its tessellation's floats are below the smallest normal
+  // float and have lost their digits, so it is refused; one of 1e-30 is not.
+  auto scaled_cube = [&](const std::string& scale) {
+    const fs::path path = dir / ("cube" + scale + ".obj");
+    std::ifstream in(cube);
+    std::ofstream out(path);
+    std::string line;
+    while (std::getline(in, line)) {
+      if (line.rfind("v ", 0) == 0) {
+        std::istringstream v(line.substr(2));
+        double x = 0, y = 0, z = 0;
+        v >> x >> y >> z;
+        out << "v " << x << scale << " " << y << scale << " " << z << scale << "\n";
+      } else {
+        out << line << "\n";
+      }
+    }
+    return path.string();
+  };
+  for (const char* ext : {".obj", ".ply"}) {
+    const fs::path out = dir / (std::string("tiny") + ext);
+    const CliResult tiny = run_stenciltess("--tables " + tables + " --mesh " + scaled_cube("e-40") + " --rate 2 --out " + out.string());
+    INFO(tiny.output);  // the progress line of the tessellation, then the error
+    CHECK(tiny.status == 1);
+    CHECK_THAT(tiny.output, Catch::Contains("coordinate of the tessellation is at most") && Catch::Contains("too small for its floats"));
+    CHECK_FALSE(fs::exists(out));
+    const CliResult small = run_stenciltess("--tables " + tables + " --mesh " + scaled_cube("e-30") + " --rate 2 --out " + out.string());
+    INFO(small.output);
+    CHECK(small.status == 0);
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("triangle tables' children and regular polynomial are checked at load", "[runtime][robustness][triangle]") {
   const fs::path dir = scratch_dir("robust-children");
   std::ifstream in(generated_table("loop", "--valence 3 --n 1", "sgt"), std::ios::binary);

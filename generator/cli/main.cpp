@@ -9,6 +9,16 @@
 
 namespace {
 
+// `--out ""` and the like: an empty value is never meant (the runtime's tools
+// refuse it the same way; the two layers share no code).
+void check_no_empty_values(const CLI::App& app) {
+  for (const CLI::Option* o : app.get_options())
+    if (o->get_type_size_max() > 0)
+      for (const std::string& value : o->results())
+        if (value.empty()) throw CLI::ValidationError(o->get_name() + ": an empty value");
+  for (const CLI::App* sub : app.get_subcommands()) check_no_empty_values(*sub);
+}
+
 int run(int argc, char** argv) {
   CLI::App app{
       "stencilgen: exact evaluation stencils for stationary subdivision schemes.\n"
@@ -84,6 +94,7 @@ int run(int argc, char** argv) {
   } catch (const CLI::Success& e) {  // --help
     return app.exit(e);
   }
+  check_no_empty_values(app);
   if (verify->parsed()) return sg::cli::verify(verify_files, verify_scheme, verify_params);
   if (analyze->parsed()) return sg::cli::analyze(analyze_scheme, analyze_valences, analyze_params, analyze_samples);
   if (plot->parsed()) return sg::cli::plot(plot_scheme, plot_n, plot_out, plot_params);

@@ -1,4 +1,5 @@
 // stencilgen plot --scheme S --n N --out FILE.svg: the scaling functions of a curve scheme at rate n.
+#include <cctype>
 #include <filesystem>
 #include <iostream>
 
@@ -17,7 +18,9 @@ int plot(const std::string& scheme_spec, long n, const std::string& out, const s
   if (n < 1 || n > limits::kMaxCurveRate)
     throw Error("plot --n " + std::to_string(n) + " is outside 1.." + std::to_string(limits::kMaxCurveRate) +
                 " (the largest rate for curve schemes)");
-  if (std::filesystem::path(out).extension() != ".svg") throw Error(out + ": plot --out must end in .svg");
+  std::string extension = std::filesystem::path(out).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".svg") throw Error(out + ": plot --out must end in .svg (either case)");
   const CurveScheme scheme = load_curve_scheme(scheme_spec, params);
   {
     std::error_code ea, eb;

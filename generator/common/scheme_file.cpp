@@ -99,10 +99,13 @@ Bindings resolve_parameters(const json& doc, const std::vector<std::string>& ove
       params[key] = ctx.rational(value, field, {});
     }
   }
+  std::set<std::string> overridden;
   for (const std::string& o : overrides) {
     const auto eq = o.find('=');
     if (eq == std::string::npos) throw Error("parameter override '" + excerpt(o) + "' is not NAME=VALUE");
     const std::string key = o.substr(0, eq);
+    if (!overridden.insert(key).second)
+      throw Error("parameter '" + excerpt(key) + "' is overridden twice (--param " + excerpt(key) + "=... given more than once)");
     if (!params.count(key)) {
       std::string known;
       for (const auto& [k, v] : params) known += (known.empty() ? "" : ", ") + k;

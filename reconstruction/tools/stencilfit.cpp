@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
   FitOptions options;
   app.add_option("--tables", tables_spec, "a .sgs (quad scheme) or .sgt (triangle scheme) table file, or the directory stencilgen wrote it to")
       ->required();
-  app.add_option("--points", points_path, "the points: .ply or .off (vertices), any other name `x y z` or `x y z nx ny nz` lines (.xyz, .txt)")
+  app.add_option("--points", points_path, "the points: .ply or .off (vertices; either case), any other name `x y z` or `x y z nx ny nz` lines (.xyz, .txt)")
       ->required();
   long long control_points = 0;  // signed, so that a negative count is named rather than wrapped
   auto* control = app.add_option("--control", control_path, "the initial control mesh (.obj) near the points; closed, or with boundaries as docs/runtime.md allows for the scheme");
@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
     if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
       throw std::runtime_error("--tolerance must be a positive finite number");
     if (options.threads < 0 || options.threads > 256) throw std::runtime_error("--threads must be 1..256 (or 0 for all cores)");
-    if (std::filesystem::path(out_path).extension() != ".obj") throw std::runtime_error(out_path + ": --out must end in .obj");
+    if (stencil_runtime::lowercase_extension(out_path) != ".obj") throw std::runtime_error(out_path + ": --out must end in .obj");
 
     if (options.tolerance < 1e-14)
       throw std::runtime_error("--tolerance must be at least 1e-14 (a fraction of the diagonal; doubles resolve about "

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -12,6 +13,7 @@
 
 #include "stencil_runtime/error.hpp"
 #include "stencil_runtime/limits.hpp"
+#include "stencil_runtime/mesh_io.hpp"
 #include "tool_support.hpp"
 
 namespace stencil_tools {
@@ -131,6 +133,55 @@ std::vector<Point> read_off(const std::string& path, const std::string& text) {
   return points;
 }
 
+// The elements of a PLY file after its vertices (faces, say): not read, but
+// the file must hold exactly what they declare, or it was cut short or its
+// header does not describe it.
+struct LaterProperty {
+  int count_bytes = 0;  // a list's count; 0 for a single value
+  int bytes = 0;
+};
+struct LaterElement {
+  std::string name;
+  std::size_t count = 0;
+  std::vector<LaterProperty> properties;
+};
+
+// Bytes of a PLY scalar type; 0 for a name that is none.
+int ply_type_bytes(const std::string& type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32") return 4;
+  if (type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+// Where the later elements of a binary (little-endian) file end, walking
+// their lists' counts from `offset`; an error where the file ends first.
+std::size_t later_elements_end(const std::string& path, const std::string& data, std::size_t offset,
+                               const std::vector<LaterElement>& later) {
+  for (const LaterElement& e : later)
+    for (std::size_t i = 0; i < e.count; ++i)
+      for (const LaterProperty& q : e.properties) {
+        const std::size_t left = data.size() - std::min(offset, data.size());
+        std::size_t items = 1;
+        if (q.count_bytes > 0) {
+          if (left < static_cast<std::size_t>(q.count_bytes)) items = std::size_t(-1);
+          else {
+            std::uint64_t n = 0;  // little-endian, unsigned: a signed count's negative values are huge and refused below
+            for (int b = q.count_bytes - 1; b >= 0; --b) n = (n << 8) | static_cast<unsigned char>(data[offset + static_cast<std::size_t>(b)]);
+            items = n;
+            offset += static_cast<std::size_t>(q.count_bytes);
+          }
+        }
+        const std::size_t rest = data.size() - std::min(offset, data.size());
+        if (items == std::size_t(-1) || items > rest / static_cast<std::size_t>(q.bytes))
+          throw std::runtime_error(path + ": truncated: the file ends within " + e.name + " " + std::to_string(i + 1) + " of " +
+                                   std::to_string(e.count) + " (binary)");
+        offset += items * static_cast<std::size_t>(q.bytes);
+      }
+  return offset;
+}
+
 std::vector<Point> read_ply(const std::string& path, const std::string& data) {
   // Header lines end in LF or (files written on Windows) CRLF, consistently.
   const bool crlf = data.compare(0, 5, "ply\r\n") == 0;
@@ -143,13 +194,13 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
   std::istringstream header(header_text);
   std::string line, format;
   std::size_t line_number = 0, count = 0;
-  bool in_vertex = false, seen_vertex = false, later_elements = false;
-  std::size_t later_lines = 0;  // the later elements' count: in ASCII, one line each
+  bool in_vertex = false, seen_vertex = false;
   struct Property {
     std::string name;
     int bytes = 0;  // 4 float, 8 double
   };
   std::vector<Property> properties;
+  std::vector<LaterElement> later;  // faces, say: not read, but the file must hold what they declare
   while (std::getline(header, line)) {
     ++line_number;
     const std::string where = path + ":" + std::to_string(line_number);
@@ -167,13 +218,12 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
       words >> name >> n;
       if (seen_vertex) {
         in_vertex = false;
-        later_elements = true;
         std::size_t k = 0;
         const auto [stop, err] = std::from_chars(n.data(), n.data() + n.size(), k);
         if (err != std::errc() || stop != n.data() + n.size() || k > limits::kMaxMeshElements)
           throw std::runtime_error(where + ": element " + stencil_runtime::quoted_excerpt(name) + " has no valid count");
-        later_lines += k;
-        continue;  // later elements (faces) are not read, only counted
+        later.push_back({name, k, {}});
+        continue;
       }
       if (name != "vertex") throw std::runtime_error(where + ": the first element must be 'vertex', got " + stencil_runtime::quoted_excerpt(name));
       {
@@ -183,9 +233,31 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
                                    " is not a number from 0 to 2^30");
       }
       in_vertex = seen_vertex = true;
-    } else if (key == "property" && in_vertex) {
+    } else if (key == "property" && !seen_vertex) {
+      throw std::runtime_error(where + ": a property before any element");
+    } else if (key == "property" && !in_vertex) {
+      std::string type, item;
+      words >> type;
+      LaterProperty q;
+      if (type == "list") {
+        std::string count_type;
+        words >> count_type >> item;
+        q.count_bytes = ply_type_bytes(count_type);
+        if (q.count_bytes <= 0 || count_type.find("float") != std::string::npos || count_type == "double")
+          throw std::runtime_error(where + ": a list's count type " + stencil_runtime::quoted_excerpt(count_type) +
+                                   " is not an integer type");
+      } else {
+        item = type;
+      }
+      q.bytes = ply_type_bytes(item);
+      if (q.bytes <= 0) throw std::runtime_error(where + ": unknown property type " + stencil_runtime::quoted_excerpt(item));
+      later.back().properties.push_back(q);
+    } else if (key == "property") {
       std::string type, name;
       words >> type >> name;
+      for (const Property& q : properties)
+        if (q.name == name)
+          throw std::runtime_error(where + ": vertex property " + stencil_runtime::quoted_excerpt(name) + " is declared twice");
       int bytes = 0;
       if (type == "float" || type == "float32") bytes = 4;
       else if (type == "double" || type == "float64") bytes = 8;
@@ -243,7 +315,10 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
       std::string more;
       if (values >> more) throw std::runtime_error(where + ": more than the " + std::to_string(properties.size()) + " values the header declares");
     }
-    // What follows is the later elements, a line each: more is a file whose header says less than it holds.
+    // What follows is the later elements, a line each: more is a file whose
+    // header says less than it holds, fewer one that was cut short.
+    std::size_t later_lines = 0;
+    for (const LaterElement& e : later) later_lines += e.count;
     std::size_t lines = 0;
     for (std::size_t at = start; at < data.size();) {
       std::size_t end = data.find('\n', at);
@@ -252,10 +327,13 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
         ++lines;
         if (lines > later_lines)
           throw std::runtime_error(path + ":" + std::to_string(line_number + 1 + lines) + ": more lines than the header's " +
-                                   std::to_string(count) + " points" + (later_elements ? " and later elements" : "") + " declare");
+                                   std::to_string(count) + " points" + (later.empty() ? "" : " and later elements") + " declare");
       }
       at = end + 1;
     }
+    if (lines < later_lines)
+      throw std::runtime_error(path + ": truncated: the file ends after " + std::to_string(lines) + " of the " +
+                               std::to_string(later_lines) + " lines of the elements after the points (" + later.front().name + ", ...)");
     return points;
   }
   std::size_t stride = 0;
@@ -263,9 +341,10 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
   if ((data.size() - body) / stride < count)
     throw std::runtime_error(path + ": truncated: " + std::to_string(count) + " points of " + std::to_string(stride) +
                              " bytes need more than the file holds");
-  if (!later_elements && data.size() - body != count * stride)
-    throw std::runtime_error(path + ": " + std::to_string(data.size() - body - count * stride) + " bytes after the " +
-                             std::to_string(count) + " points the header declares (and no further element)");
+  const std::size_t end = later_elements_end(path, data, body + count * stride, later);
+  if (end != data.size())
+    throw std::runtime_error(path + ": " + std::to_string(data.size() - end) + " bytes after the " + std::to_string(count) +
+                             " points the header declares" + (later.empty() ? " (and no further element)" : " and the elements after them"));
   for (std::size_t p = 0; p < count; ++p) {
     std::size_t offset = body + p * stride;
     for (std::size_t i = 0; i < properties.size(); ++i) {
@@ -293,7 +372,7 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
 
 std::vector<Point> read_points(const std::string& path) {
   const std::string text = read_text_file(path, kMaxPointsFileBytes);
-  const std::string ext = std::filesystem::path(path).extension().string();
+  const std::string ext = stencil_runtime::lowercase_extension(path);
   if (ext == ".ply") return read_ply(path, text);
   if (ext == ".off") return read_off(path, text);
   return read_xyz(path, text);

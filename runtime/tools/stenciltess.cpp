@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
     else stencil_tools::check_output_is_not_input(out, {read.file, mesh_path, rates_file}, {read.folder});
     stencil_tools::check_output_can_be_written(frames.empty() ? out : stencil_tools::frame_name(out, 0));
     {  // the format, before the work (write_polygons would refuse it only at the end)
-      const std::string ext = std::filesystem::path(out).extension().string();
+      const std::string ext = stencil_runtime::lowercase_extension(out);
       if (ext != ".obj" && ext != ".ply") throw std::runtime_error(out + ": --out must end in .obj or .ply");
     }
     if (camera.empty())

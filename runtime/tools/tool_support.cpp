@@ -23,11 +23,26 @@ namespace stencil_tools {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// `--out ""` would otherwise mean "no file" to a tool whose default is
+// standard output, and an unnamed file to the others.
+void check_no_empty_values(const CLI::App& app) {
+  for (const CLI::Option* o : app.get_options())
+    if (o->get_type_size_max() > 0)
+      for (const std::string& value : o->results())
+        if (value.empty()) throw CLI::ValidationError(o->get_name() + ": an empty value");
+  for (const CLI::App* sub : app.get_subcommands()) check_no_empty_values(*sub);
+}
+
+}  // namespace
+
 int run_tool(CLI::App& app, int argc, char** argv, const std::function<int()>& body) {
   const std::string name = app.get_name();
   try {
     try {
       app.parse(argc, argv);
+      check_no_empty_values(app);
     } catch (const CLI::CallForHelp& e) {
       return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {

@@ -23,9 +23,16 @@ namespace stencil_runtime {
 // with the Mesh refuses the ones the runtime cannot evaluate.
 Mesh read_obj(const std::string& path);
 
-// OBJ (text) or binary little-endian PLY, chosen by the extension (.obj/.ply),
-// with per-vertex normals when the soup has them. Writes a temporary file
-// beside `path` and renames it, so a failure leaves nothing behind.
+// A path's extension in lower case ("scan.PLY" gives ".ply"): what every
+// reader and writer chooses its format by, so "OUT.OBJ" is an OBJ file.
+std::string lowercase_extension(const std::string& path);
+
+// OBJ (text) or binary little-endian PLY, chosen by the extension (.obj/.ply,
+// any case), with per-vertex normals when the soup has them. A soup holds
+// floats: one whose coordinates are all below 1.2e-38 in magnitude (the
+// smallest normal float) has lost digits, and is refused. Writes a
+// temporary file beside `path` and renames it, so a failure leaves nothing
+// behind.
 void write_polygons(const PolygonSoup& soup, const std::string& path);
 
 // A control mesh as OBJ (`v` lines with every digit of the doubles, then `f`

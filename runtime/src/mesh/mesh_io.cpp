@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -180,9 +182,29 @@ void write_ply(const PolygonSoup& s, std::FILE* f) {
 }  // namespace
 
 
+std::string lowercase_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
 void write_polygons(const PolygonSoup& soup, const std::string& path) {
-  const std::string ext = fs::path(path).extension().string();
+  const std::string ext = lowercase_extension(path);
   if (ext != ".obj" && ext != ".ply") throw LoadError(path + ": output must end in .obj or .ply");
+  if (!soup.positions.empty()) {
+    // Floats keep 24 bits down to 1.2e-38 (the smallest normal float) and
+    // fewer below: a shape all of whose coordinates are smaller has lost its
+    // digits (or become a point) in the soup's floats.
+    float largest = 0;
+    for (const auto& p : soup.positions)
+      for (const float x : p) largest = std::max(largest, std::fabs(x));
+    if (largest < std::numeric_limits<float>::min()) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", static_cast<double>(largest));
+      throw LoadError(path + ": every coordinate of the tessellation is at most " + text +
+                      " in magnitude, too small for its floats (below 1.2e-38 they lose digits); scale the mesh up");
+    }
+  }
   if (!soup.normals.empty() && soup.normals.size() != soup.positions.size())
     throw LoadError(path + ": the tessellation has " + std::to_string(soup.normals.size()) + " normals for " +
                     std::to_string(soup.positions.size()) + " points");
@@ -193,7 +215,7 @@ void write_polygons(const PolygonSoup& soup, const std::string& path) {
 }
 
 void write_obj(const Mesh& mesh, const std::string& path) {
-  if (fs::path(path).extension() != ".obj") throw LoadError(path + ": a control mesh is written as .obj");
+  if (lowercase_extension(path) != ".obj") throw LoadError(path + ": a control mesh is written as .obj");
   write_file_atomically(path, [&](std::FILE* f) {
     for (const Point& p : mesh.positions) std::fprintf(f, "v %.17g %.17g %.17g\n", p[0], p[1], p[2]);
     std::size_t offset = 0;
