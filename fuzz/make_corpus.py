@@ -167,7 +167,14 @@ def main():
                     "\x01" + "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
                     "property float z\nend_header\n0 0 0\n1 1 1\n",
                     "\x01" + "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty double x\n"
-                    "property double y\nproperty double z\nend_header\n" + "\x00" * 24]
+                    "property double y\nproperty double z\nend_header\n" + "\x00" * 24,
+                    # Elements after the points: walked, not read (ASCII lines, binary lists).
+                    "\x01" + "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                    "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                    "\x01" + "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n"
+                    "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                    "property uchar flag\nend_header\n" + "\x00" * 12 + "\x03" + "\x00" * 12 + "\x01"]
     for k, text in enumerate(points_seeds):
         seed("points_file", f"seed{k}", text)
     for k, text in enumerate(["24", "12-24", "3,5,7", "1-4,8", "", "0", "5-3", "1,,2", "1234567", "3-8"]):
