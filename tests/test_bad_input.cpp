@@ -252,6 +252,12 @@ TEST_CASE("a successful run writes JSON and binary tables for every rate, and ve
   const CliResult upper = run_stencilgen("plot --scheme fourpoint --n 21 --out " + (dir / "P.SVG").string());
   CHECK(upper.status == 0);  // the extension in either case
   CHECK(fs::exists(dir / "P.SVG"));
+  // A link is written through (it used to be replaced by a plain file).
+  fs::create_symlink("P.SVG", dir / "link.svg");
+  fs::remove(dir / "P.SVG");
+  CHECK(run_stencilgen("plot --scheme fourpoint --n 5 --out " + (dir / "link.svg").string()).status == 0);
+  CHECK(fs::is_symlink(dir / "link.svg"));
+  CHECK(fs::file_size(dir / "P.SVG") > 500);
   // A scheme file is never an output: plot writes .svg only (it used to
   // replace its own scheme with SVG), and a generation refuses a scheme file
   // inside the folder OUT/<scheme> it replaces (it used to delete it).

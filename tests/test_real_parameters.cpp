@@ -122,6 +122,8 @@ TEST_CASE("real parameters outside a face, or bad tolerances, are refused", "[ru
   const Surface surface = surface_of(tables, bundled("cube"));
   CHECK_THROWS_WITH(surface.evaluate(0, 1.5, 0.5, 1e-9), Catch::Contains("lies outside face 0"));
   CHECK_THROWS_WITH(surface.evaluate(0, std::nan(""), 0.5, 1e-9), Catch::Contains("lies outside face 0"));
+  // Every digit: a %f "(0.500000, -0.000000)" hid why the parameter was outside.
+  CHECK_THROWS_WITH(surface.evaluate(0, 0.5, -1e-7, 1e-9), Catch::Contains("the parameter (0.5, -9.9999999999999995e-08) lies outside"));
   CHECK_THROWS_WITH(surface.evaluate(0, 0.5, 0.5, -1), Catch::Contains("tolerance"));
   CHECK_THROWS_WITH(surface.evaluate(9, 0.5, 0.5, 1e-9), Catch::Contains("face 9 does not exist"));
 }

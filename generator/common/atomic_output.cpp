@@ -174,13 +174,25 @@ void OutputTransaction::commit() {
 }
 
 void write_file_atomically(const fs::path& path, const std::string& bytes) {
-  const fs::path target = normalised(path);
+  // A symbolic link is followed, so that it stays and what it names is
+  // replaced; a device or FIFO would be deleted by the rename: refused. (The
+  // runtime's output_file does the same; the layers share no code.)
+  fs::path target = normalised(path);
+  std::error_code ec;
+  fs::file_status status = fs::symlink_status(target, ec);
+  for (int links = 0; fs::is_symlink(status); ++links) {
+    const fs::path to = fs::read_symlink(target, ec);
+    if (links == 40 || ec) throw Error("cannot write " + path.string() + ": a loop of symbolic links or an unreadable one");
+    target = (to.is_absolute() ? to : target.parent_path() / to).lexically_normal();
+    status = fs::symlink_status(target, ec);
+  }
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    throw Error("cannot write " + path.string() + ": not a regular file (a directory, device, FIFO or socket)");
   const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
   const fs::path temporary = sibling(parent, target, "staging");
   Undo undo(temporary, create_folders(parent));
   sweep_interrupted(parent, target);
   write_bytes(temporary, bytes, target);
-  std::error_code ec;
   fs::rename(temporary, target, ec);
   if (ec) throw Error("cannot write " + target.string() + ": " + ec.message());
   undo.dismiss();

@@ -12,6 +12,7 @@
 //    u towards the middle of edge s -> s+1, v towards the middle of edge s -> s-1,
 //    (1, 1) at the face's centre.
 #include <cstdint>
+#include <string>
 
 #include "exact_parameter.hpp"
 #include "tables.hpp"
@@ -38,6 +39,13 @@ struct FaceDomain {
   int subface(const ExactParameter& p, ExactParameter& local) const;
   // A description for error messages, e.g. "[0,1]^2" or "u, v >= 0, u + v <= 1".
   const char* describe() const;
+  // The message for a parameter outside face `face`'s domain, the parameter
+  // written with every digit it has (a %f "-0.000000" would hide why).
+  std::string outside(std::size_t face, double u, double v) const;
+  std::string outside(std::size_t face, const ExactParameter& at) const;
+
+ private:
+  std::string outside_text(std::size_t face, const std::string& at) const;
 };
 
 }  // namespace stencil_runtime

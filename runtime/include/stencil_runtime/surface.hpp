@@ -65,17 +65,16 @@ class Surface {
 
   // The limit point and its first partial derivatives along the face's (u, v)
   // (for an N-gon's sub-faces, along the face's own (u, v): each sub-face's
-  // coordinates are the tile's doubled). Quad schemes, and Loop on triangle
-  // meshes (its regular patch is polynomial: exact to rounding anywhere but an
-  // extraordinary vertex), and sqrt(3) at exact rationals whose descent reaches
-  // a stored grid (its tables' derivative stencils; other parameters are
-  // refused). Computed by
-  // the scheme's own subdivision of the patch down to a regular patch: exact
-  // to rounding where that patch is polynomial (Catmull-Clark), and for any
-  // scheme at exact rationals whose descent reaches a stored grid (k/n of a
-  // stored rate n). Throws EvaluationError at an extraordinary vertex (no
-  // parametric derivative there), for a non-polynomial scheme at a parameter
-  // between its grids, and for a face or parameter outside the surface.
+  // coordinates are the tile's doubled). Computed by the scheme's own
+  // subdivision of the patch down to a regular patch, exact to rounding: for
+  // Catmull-Clark and Loop anywhere (polynomial regular patches); for a
+  // non-polynomial quad scheme (nonpoly) anywhere too, its regular curve's
+  // basis and derivative following the parameter's halvings to a stored grid
+  // or round their cycle (curve_orbit.hpp); for sqrt(3) at exact rationals
+  // whose descent reaches a stored grid (its tables' derivative stencils).
+  // Throws EvaluationError at an extraordinary vertex (no parametric
+  // derivative there), for sqrt(3) at other parameters, and for a face or
+  // parameter outside the surface.
   Derivatives derivatives(std::size_t face, const ExactParameter& at) const;
   Derivatives derivatives(std::size_t face, double u, double v) const;
   // The unit normal (du x dv normalised, outward for counter-clockwise faces)

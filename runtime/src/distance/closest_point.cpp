@@ -244,7 +244,10 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
                           " (bounding-box diagonal), below 1e-100: distances at that scale lose their digits in "
                           "doubles; scale the mesh up");
   }
-  tolerance = options.tolerance > 0 ? options.tolerance : 1e-9 * diagonal;
+  // Below 1e-14 of the extent, doubles cannot tell the distances apart and
+  // the search would subdivide without end (a fit whose points are a
+  // millionth of the control mesh's size asked for that): raised to it.
+  tolerance = options.tolerance > 0 ? std::max(options.tolerance, 1e-14 * diagonal) : 1e-9 * diagonal;
   std::vector<SubPatch> patches(faces);
   roots.kinds.assign(faces, 0);
   roots.slabs.assign(faces, {});

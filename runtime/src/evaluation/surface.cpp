@@ -82,8 +82,7 @@ Evaluation Surface::evaluate(std::size_t face, const ExactParameter& at, double 
   check_request(*this, tolerance);
   const FaceDomain domain = topology_->domain(face);
   if (!domain.contains(at))
-    throw EvaluationError("the parameter " + at.str() + " lies outside face " + std::to_string(face) + " (its domain is " +
-                          domain.describe() + ")");
+    throw EvaluationError(domain.outside(face, at));
   return checked(topology_->family().evaluate(face, at, tolerance, prepared_.data()), rounding_);
 }
 
@@ -91,8 +90,7 @@ Evaluation Surface::evaluate(std::size_t face, double u, double v, double tolera
   check_request(*this, tolerance);
   const FaceDomain domain = topology_->domain(face);
   if (!domain.contains(u, v))
-    throw EvaluationError("the parameter (" + std::to_string(u) + ", " + std::to_string(v) + ") lies outside face " +
-                          std::to_string(face) + " (its domain is " + domain.describe() + ")");
+    throw EvaluationError(domain.outside(face, u, v));
   return checked(topology_->family().evaluate(face, u, v, tolerance, prepared_.data()), rounding_);
 }
 
@@ -119,15 +117,13 @@ void check_inside(const Surface& surface, std::size_t face, const ExactParameter
   check_request(surface, 0);
   const FaceDomain domain = surface.topology().domain(face);
   if (!domain.contains(at))
-    throw EvaluationError("the parameter " + at.str() + " lies outside face " + std::to_string(face) + " (its domain is " +
-                          domain.describe() + ")");
+    throw EvaluationError(domain.outside(face, at));
 }
 void check_inside(const Surface& surface, std::size_t face, double u, double v) {
   check_request(surface, 0);
   const FaceDomain domain = surface.topology().domain(face);
   if (!domain.contains(u, v))
-    throw EvaluationError("the parameter (" + std::to_string(u) + ", " + std::to_string(v) + ") lies outside face " +
-                          std::to_string(face) + " (its domain is " + domain.describe() + ")");
+    throw EvaluationError(domain.outside(face, u, v));
 }
 
 }  // namespace

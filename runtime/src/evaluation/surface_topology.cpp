@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <numeric>
 #include <set>
+#include <cstdio>
 #include <string>
 #include <type_traits>
 
@@ -186,8 +187,7 @@ EvaluationError not_held(const SurfaceTopology& topology, std::size_t face, cons
 PatchStencil checked_stencil(const SurfaceTopology& topology, std::size_t face, const ExactParameter& at) {
   const FaceDomain domain = topology.domain(face);
   if (!domain.contains(at))
-    throw EvaluationError("the parameter " + at.str() + " lies outside face " + std::to_string(face) + " (its domain is " +
-                          domain.describe() + ")");
+    throw EvaluationError(domain.outside(face, at));
   PatchStencil s;
   if (!topology.family().stencil(face, at, s)) throw not_held(topology, face, at);
   return s;
@@ -204,10 +204,10 @@ namespace {
 // The stencil at a real parameter, checked, or an EvaluationError that says why not.
 PatchStencil checked_stencil(const SurfaceTopology& topology, std::size_t face, double u, double v) {
   const FaceDomain domain = topology.domain(face);
-  const std::string at = "(" + std::to_string(u) + ", " + std::to_string(v) + ")";
-  if (!domain.contains(u, v))
-    throw EvaluationError("the parameter " + at + " lies outside face " + std::to_string(face) + " (its domain is " +
-                          domain.describe() + ")");
+  if (!domain.contains(u, v)) throw EvaluationError(domain.outside(face, u, v));
+  char text[64];
+  std::snprintf(text, sizeof text, "(%.17g, %.17g)", u, v);
+  const std::string at = text;
   PatchStencil s;
   if (!topology.family().stencil(face, u, v, s))
     throw EvaluationError("the limit point at " + at + " of face " + std::to_string(face) +

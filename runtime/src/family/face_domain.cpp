@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "stencil_runtime/limits.hpp"
@@ -34,6 +35,18 @@ const char* FaceDomain::describe() const {
     case Kind::Triangle: return "u, v >= 0 and u + v <= 1";
     default: return "the tiles of its sub-faces (sub-face s: [s % U, s % U + 1/2] x [s / U, s / U + 1/2])";
   }
+}
+
+std::string FaceDomain::outside(std::size_t face, double u, double v) const {
+  char text[64];
+  std::snprintf(text, sizeof text, "(%.17g, %.17g)", u, v);
+  return outside_text(face, text);
+}
+
+std::string FaceDomain::outside(std::size_t face, const ExactParameter& at) const { return outside_text(face, at.str()); }
+
+std::string FaceDomain::outside_text(std::size_t face, const std::string& at) const {
+  return "the parameter " + at + " lies outside face " + std::to_string(face) + " (its domain is " + describe() + ")";
 }
 
 bool FaceDomain::contains(double u, double v) const {

@@ -22,6 +22,23 @@ bool process_is_gone(long pid) { return ::kill(static_cast<pid_t>(pid), 0) == -1
 
 }  // namespace
 
+std::string output_file(const std::string& path) {
+  fs::path p(path);
+  std::error_code ec;
+  fs::file_status status = fs::symlink_status(p, ec);
+  for (int links = 0; fs::is_symlink(status); ++links) {
+    if (links == 40) throw LoadError(path + ": cannot be written: a loop of symbolic links");  // as the kernel's ELOOP
+    const fs::path to = fs::read_symlink(p, ec);
+    if (ec) throw LoadError(path + ": cannot be written: " + ec.message());
+    p = to.is_absolute() ? to : p.parent_path() / to;
+    status = fs::symlink_status(p, ec);
+  }
+  if (fs::is_directory(status)) throw LoadError(path + ": is a directory, not a file to write");
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    throw LoadError(path + ": is not a regular file (a device, FIFO or socket); outputs are written to regular files only");
+  return p.lexically_normal().string();
+}
+
 std::string name_beside(const std::string& target, const char* what) {
   const fs::path p(target);
   std::string name(1, '.');  // appended: GCC 12 warns falsely on "." + string
@@ -67,8 +84,9 @@ void sweep_left_by_killed_runs(const std::string& target) {
 }
 
 void write_file_atomically(const std::string& path, const std::function<void(std::FILE*)>& write) {
-  sweep_left_by_killed_runs(path);
-  const std::string temp = name_beside(path, "partial");
+  const std::string target = output_file(path);
+  sweep_left_by_killed_runs(target);
+  const std::string temp = name_beside(target, "partial");
   std::FILE* f = std::fopen(temp.c_str(), "wb");
   if (!f) throw LoadError(path + ": cannot write");
   try {
@@ -84,7 +102,7 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     throw LoadError(path + ": write failed");
   }
   std::error_code ec;
-  fs::rename(temp, path, ec);
+  fs::rename(temp, target, ec);
   if (ec) {
     std::remove(temp.c_str());
     throw LoadError(path + ": cannot move the finished file into place: " + ec.message());

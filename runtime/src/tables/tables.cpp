@@ -31,8 +31,9 @@ fs::path table_file(const std::string& spec) {
     }
   if (found.empty() && fs::is_directory(p / "regular", ec)) return p;  // exact JSON tables
   if (found.empty())
-    throw LoadError(spec + ": no .sgs or .sgt table file here (make one with: stencilgen --scheme nonpoly "
-                           "--valence 3-8 --n 24 --out tables, or --scheme loop)");
+    throw LoadError(spec + ": no .sgs or .sgt table file here, nor exact JSON tables (folders 'regular' and "
+                           "v<V>/ of n<N>.json files); make them with: stencilgen --scheme nonpoly --valence 3-8 --n 24 --out tables, or "
+                           "--scheme loop");
   return found;
 }
 
