@@ -151,3 +151,39 @@ TEST_CASE("stenciltess --frames keeps the files that were there when a frame fai
   CHECK(files == 4);
   fs::remove_all(dir);
 }
+
+TEST_CASE("stenciltess --frames: a frame without tags takes the mesh's, one with other tags is refused, not ignored",
+          "[runtime][tools][frames][errors]") {
+  // A frame's own `t hole` used to be ignored without a word: its output was
+  // the mesh's surface, not the one its file asks for.
+  const std::string nonpoly = generated_table("nonpoly", "--valence 3-8 --n 24", "sgs").parent_path().string();
+  const fs::path dir = scratch_dir("animation-tags");
+  const std::string cube = bytes_of(kMeshes / "cube.obj");
+  const std::string hole = "\nt hole 1/0/0 3\n";
+  std::ofstream(dir / "rest.obj") << cube << hole;
+  const std::vector<fs::path> frames = make_frames(read_obj((kMeshes / "cube.obj").string()), dir, 2);
+  std::ofstream(frames[1], std::ios::app) << hole;  // frame 1 repeats the mesh's tag; frame 0 has none
+  const std::string tess = "--tables " + nonpoly + " --rate 3 ";
+  CliResult r = run_stenciltess(tess + "--mesh " + (dir / "rest.obj").string() + " --frames '" + (dir / "frame_*.obj").string() +
+                                "' --out '" + (dir / "f%d.obj").string() + "'");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  // Each frame equals a run on the frame with the mesh's hole.
+  for (int k = 0; k < 2; ++k) {
+    const fs::path alone = dir / ("alone" + std::to_string(k) + ".obj");
+    std::ofstream(alone) << bytes_of(frames[static_cast<std::size_t>(k)]) << (k == 0 ? hole : "");
+    const fs::path out = dir / ("single" + std::to_string(k) + ".obj");
+    REQUIRE(run_stenciltess(tess + "--mesh " + alone.string() + " --out " + out.string()).status == 0);
+    CHECK(bytes_of(out) == bytes_of(dir / ("f" + std::to_string(k) + ".obj")));
+  }
+  // A frame with another hole: refused, naming it, and nothing written.
+  fs::remove(dir / "f0.obj");
+  fs::remove(dir / "f1.obj");
+  std::ofstream(frames[1]) << bytes_of(frames[0]) << "\nt hole 1/0/0 4\n";
+  r = run_stenciltess(tess + "--mesh " + (dir / "rest.obj").string() + " --frames '" + (dir / "frame_*.obj").string() +
+                      "' --out '" + (dir / "f%d.obj").string() + "'");
+  CHECK(r.status == 1);
+  CHECK(r.output.find("frame_1.obj: frame 1 has other tag lines") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "f0.obj"));
+  fs::remove_all(dir);
+}

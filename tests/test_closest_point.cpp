@@ -594,6 +594,27 @@ TEST_CASE("sub-patch derivatives equal difference quotients of exact evaluations
   }
 }
 
+TEST_CASE("a tolerance below what doubles resolve is raised to 1e-14 of the extent, and the query ends",
+          "[runtime][distance]") {
+  // A fit of points a millionth of the control mesh's size asked for 1e-15 of
+  // the mesh, and its first query never ended.
+  const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string());
+  const Mesh mesh = read_obj((kMeshes / "cube.obj").string());
+  const Surface surface = surface_of(tables, mesh);
+  ClosestPointOptions options;
+  options.tolerance = 1e-20;
+  const ClosestPointQuery query(surface, options);
+  // The prepared control points of the unit cube span between 1 and sqrt(3).
+  CHECK(query.tolerance() >= 1e-14);
+  CHECK(query.tolerance() <= 2e-14);
+  const ClosestPointQuery usual(surface);
+  for (const Point& q : {Point{0.1, 0.2, 0.9}, Point{0.3, -0.45, 0.1}, Point{2, 3, -1}}) {
+    const ClosestPoint tight = query.find(q), loose = usual.find(q);
+    CHECK(tight.distance <= loose.distance + 1e-12);
+    CHECK(tight.accuracy <= 1e-12);
+  }
+}
+
 TEST_CASE("stencildist answers as the library does and refuses bad points files by line", "[runtime][distance][cli]") {
   const std::string tables = generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string();
   const std::string cube = (kMeshes / "cube.obj").string();
@@ -684,6 +705,22 @@ TEST_CASE("stencildist answers as the library does and refuses bad points files 
     CHECK(bad.output.find("is an input and the output") != std::string::npos);
   }
   refused(good + " --tolerance 1e-300", "at least 1e-14");
+  // --signed on a surface that is open: by a boundary, or cut open at a
+  // non-manifold edge (it used to say "boundary" for both).
+  {
+    const std::string vertices = "v -0.5 -0.5 -0.5\nv -0.5 -0.5 0.5\nv -0.5 0.5 -0.5\nv -0.5 0.5 0.5\n"
+                                 "v 0.5 -0.5 -0.5\nv 0.5 -0.5 0.5\nv 0.5 0.5 -0.5\nv 0.5 0.5 0.5\n";
+    const std::string faces = "f 1 3 7 5\nf 2 6 8 4\nf 1 5 6 2\nf 3 4 8 7\nf 1 2 4 3\n";
+    auto signed_on = [&](const char* name, const std::string& obj) {
+      return run_command(STENCILDIST_EXE, "--tables " + tables + " --mesh " + write(name, obj) + " --points " + good + " --signed");
+    };
+    CliResult r = signed_on("open.obj", vertices + faces);
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains("--signed needs a closed surface, and this mesh has a boundary (edge"));
+    r = signed_on("three.obj", vertices + faces + "f 5 7 8 6\nf 6 8 7 5\n");  // the last face twice, once flipped
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains("has non-manifold edges (edge") && Catch::Contains("is in 3 faces"));
+  }
   // Files from Windows: a byte-order mark and CRLF line ends, in .xyz and in a PLY header, read as the plain file.
   const std::string crlf_ply = write("w.ply", "ply\r\nformat ascii 1.0\r\nelement vertex 3\r\nproperty float x\r\nproperty float y\r\n"
                                                "property float z\r\nend_header\r\n0.1 0.2 0.9\r\n3 -1 0.5\r\n0 0 0\r\n");

@@ -2,6 +2,8 @@
 // table reader checks every count, index, rate and key before use; meshes,
 // parameters and options outside their limits get one clear line and exit
 // code 1, and nothing is written. One regression test per class found.
+#include <sys/stat.h>
+
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <cstring>
@@ -369,6 +371,12 @@ TEST_CASE("tool options and parameters outside their limits are refused, not wra
   const Point half = last_point(eval("--face 0 --uv 1/2,1/3")), got = last_point(wrapped);
   CHECK(std::hypot(got[0] - half[0], got[1] - half[1], got[2] - half[2]) < 1e-12);
   expect_error(eval("--face 0 --uv 1/99999999999999999999,1/2"), "is not an exact rational");
+  // A leading '+' is taken by decimals as by rationals (+1/2 was, +0.5 was refused).
+  const CliResult plus = eval("--face 0 --uv +0.5,+0.25");
+  INFO(plus.output);
+  CHECK(plus.status == 0);
+  CHECK(last_point(plus) == last_point(eval("--face 0 --uv 0.5,0.25")));
+  expect_error(eval("--face 0 --uv +-0.5,0.25"), "is neither an exact rational");
   expect_error(eval("--face -1 --uv 1/2,1/2"), "--face '-1' is not a number");
   expect_error(eval("--face 0 --uv 1/2"), "--uv expects U,V");
   expect_error(eval("--face 0"), "give --face and --uv, or --batch");
@@ -401,7 +409,8 @@ TEST_CASE("tool options and parameters outside their limits are refused, not wra
     const CliResult r = tess(mode);
     INFO(r.output);
     CHECK(r.status == 0);
-    CHECK(r.output.find("were asked for; the tables stop at 24") != std::string::npos);
+    CHECK(r.output.find("were asked for on the prepared faces") != std::string::npos);
+    CHECK(r.output.find("; the tables stop at 24") != std::string::npos);
     CHECK(r.output.find("rates 24..24") != std::string::npos);
   }
   // --tolerance takes polygon meshes, as --rate does.
@@ -473,6 +482,54 @@ TEST_CASE("empty option values are refused, extensions are read in either case, 
     INFO(small.output);
     CHECK(small.status == 0);
   }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("an output that is a symbolic link is written through it, and a FIFO or device is refused, not replaced",
+          "[runtime][robustness]") {
+  // Renaming the finished file onto the output's name used to replace a link
+  // with a plain file, and to delete a FIFO or device (`--out /dev/null`).
+  const fs::path dir = scratch_dir("robust-links");
+  const std::string tables = nonpoly_dir(), cube = (kMeshes / "cube.obj").string();
+  write_file(dir / "q.xyz", "0.1 0.2 0.9\n3 -1 0.5\n");
+  auto dist = [&](const fs::path& out) {
+    return run_command(STENCILDIST_EXE, "--tables " + tables + " --mesh " + cube + " --points " + (dir / "q.xyz").string() +
+                                            " --out " + out.string());
+  };
+  fs::create_directories(dir / "real");
+  write_file(dir / "real" / "r.txt", "earlier");
+  fs::create_symlink("real/r.txt", dir / "link.txt");  // relative, as `ln -s` makes them
+  fs::create_symlink("link.txt", dir / "link2.txt");   // and a chain of two
+  for (const char* name : {"link.txt", "link2.txt"}) {
+    write_file(dir / "real" / "r.txt", "earlier");
+    const CliResult r = dist(dir / name);
+    INFO(r.output);
+    CHECK(r.status == 0);
+    CHECK(fs::is_symlink(dir / name));
+    const std::string results = read_text(dir / "real" / "r.txt");  // the results, a line per point
+    CHECK(std::count(results.begin(), results.end(), '\n') == 2);
+    CHECK(results.find("earlier") == std::string::npos);
+  }
+  CHECK(std::distance(fs::directory_iterator(dir / "real"), fs::directory_iterator{}) == 1);  // nothing staged left
+  // A link that names no file yet: the file is made where it points.
+  fs::create_symlink("real/new.txt", dir / "dangling.txt");
+  CHECK(dist(dir / "dangling.txt").status == 0);
+  CHECK(fs::is_regular_file(dir / "real" / "new.txt"));
+  CHECK(fs::is_symlink(dir / "dangling.txt"));
+  // A FIFO is refused before any work, and stays a FIFO (the tessellation's frames too).
+  REQUIRE(::mkfifo((dir / "fifo.txt").c_str(), 0600) == 0);
+  expect_error(dist(dir / "fifo.txt"), "is not a regular file (a device, FIFO or socket)");
+  CHECK(fs::is_fifo(dir / "fifo.txt"));
+  REQUIRE(::mkfifo((dir / "f1.obj").c_str(), 0600) == 0);
+  write_file(dir / "frame0.obj", read_text(cube));
+  write_file(dir / "frame1.obj", read_text(cube));
+  const CliResult frames = run_stenciltess("--tables " + tables + " --mesh " + cube + " --rate 2 --frames '" +
+                                           (dir / "frame*.obj").string() + "' --out '" + (dir / "f%d.obj").string() + "'");
+  INFO(frames.output);
+  CHECK(frames.status == 1);
+  CHECK_THAT(frames.output, Catch::Contains("is not a regular file"));
+  CHECK(fs::is_fifo(dir / "f1.obj"));
+  CHECK_FALSE(fs::exists(dir / "f0.obj"));
   fs::remove_all(dir);
 }
 

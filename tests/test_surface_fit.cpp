@@ -374,6 +374,25 @@ TEST_CASE("stencilfit: fits a perturbed control mesh to points, writes the mesh,
   CHECK_THAT(text, Catch::StartsWith("<svg") && Catch::Contains("<polyline"));
 }
 
+TEST_CASE("stencilfit ends when the points are a millionth of the control mesh's size", "[fitting][cli]") {
+  // Its closest-point tolerance, 1e-9 of the points' diagonal, was 1e-15 of
+  // the surface's, finer than doubles resolve there: the first query never
+  // ended. The query now raises it to 1e-14 of the surface's extent.
+  const std::string tables = generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string();
+  const auto dir = scratch_dir("stencilfit-tiny");
+  std::vector<Point> points = ellipsoid_points(100, 0, 3);
+  for (Point& p : points)
+    for (double& x : p) x *= 1e-6;
+  write_points(dir / "tiny.xyz", points);
+  write_mesh(dir / "sphere.obj", quad_sphere(2));
+  const CliResult r = run_command(std::string("timeout -s KILL 120 ") + STENCILFIT_EXE,
+                                  "--tables " + tables + " --points " + (dir / "tiny.xyz").string() + " --control " +
+                                      (dir / "sphere.obj").string() + " --iterations 2 --out " + (dir / "out.obj").string());
+  INFO(r.output);
+  CHECK(r.status == 0);
+  CHECK(std::filesystem::exists(dir / "out.obj"));
+}
+
 TEST_CASE("stencilfit refuses bad inputs with one line naming the fault, and writes nothing", "[fitting][cli]") {
   const std::string tables = generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string();
   const std::string loop = generated_table("loop", "--valence 3-8 --n 4", "sgt").string();
@@ -384,6 +403,9 @@ TEST_CASE("stencilfit refuses bad inputs with one line naming the fault, and wri
     std::ofstream(dir / "empty.xyz") << "# nothing\n";
     std::ofstream(dir / "columns.xyz") << "0 0 0\n1 2\n";
     std::ofstream(dir / "short.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n";
+    // The faces an OFF header declares must be there, and nothing after them (as for PLY).
+    std::ofstream(dir / "faces.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+    std::ofstream(dir / "extra.off") << "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   }
   write_mesh(dir / "sphere.obj", quad_sphere(2));
   const std::string out = (dir / "out.obj").string();
@@ -396,6 +418,9 @@ TEST_CASE("stencilfit refuses bad inputs with one line naming the fault, and wri
       {"empty.xyz", "", tables, "no points"},
       {"columns.xyz", "", tables, "columns.xyz:2"},
       {"short.off", "", tables, "2 of 3 vertices"},
+      {"faces.off", "", tables, "truncated: the file ends after 0 of the 1 faces its header declares"},
+      {"extra.off", "", tables, "extra.off:6: more lines than the header's 3 vertices and 0 faces declare"},
+      {"points.xyz", "--smoothing 1e300", tables, "--smoothing must be a number from 0 to 1000"},
       {"points.xyz", "--method xdm", tables, "'xdm'"},
       {"points.xyz", "--smoothing -1", tables, "--smoothing"},
       {"points.xyz", "--iterations -2", tables, "--iterations"},

@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
                  "at most this many iterations (default 20; with --max-control-points, per refinement round)");
   app.add_option("--smoothing", options.smoothing,
                  "weight of the smoothing term in the first iteration, halved each iteration down to 1/100 of it "
-                 "(default 1e-3; 0: none)");
+                 "(default 1e-3; 0: none; at most 1000)");
   app.add_option("--max-error", options.max_error,
                  "stop once the largest distance is at most this fraction of the diagonal (default 0: run all "
                  "iterations)");
@@ -94,8 +94,11 @@ int main(int argc, char** argv) {
   return stencil_tools::run_tool(app, argc, argv, [&] {
     options.method = parse_fit_method(method);
     if (options.iterations < 0 || options.iterations > 100000) throw std::runtime_error("--iterations must be 0..100000");
-    if (!(options.smoothing >= 0) || !std::isfinite(options.smoothing))
-      throw std::runtime_error("--smoothing must be a number >= 0");
+    // Far above the points' weight, the smoothing term alone (whose null
+    // space is the translations) decides the fit, and the system is singular.
+    if (!(options.smoothing >= 0) || !(options.smoothing <= 1000))
+      throw std::runtime_error("--smoothing must be a number from 0 to 1000 (a weight relative to the points': above "
+                               "it the smoothing term alone would decide the fit)");
     if (!(options.max_error >= 0) || !std::isfinite(options.max_error))
       throw std::runtime_error("--max-error must be a number >= 0");
     if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))

@@ -93,8 +93,8 @@ std::vector<Point> read_xyz(const std::string& path, const std::string& text) {
 // vertex (the faces that follow are not read).
 std::vector<Point> read_off(const std::string& path, const std::string& text) {
   std::vector<Point> points;
-  std::size_t expected = 0;
-  int stage = 0;  // 0: the OFF line, 1: the counts, 2: vertices
+  std::size_t expected = 0, faces = 0, face_lines = 0;
+  int stage = 0;  // 0: the OFF line, 1: the counts, 2: vertices, 3: faces (counted, not read)
   for_each_line(text, [&](std::size_t line, const std::vector<std::string_view>& words) {
     const std::string where = path + ":" + std::to_string(line);
     if (stage == 0) {
@@ -116,20 +116,35 @@ std::vector<Point> read_off(const std::string& path, const std::string& text) {
       if (expected > text.size() / 6)
         throw std::runtime_error(where + ": " + std::to_string(expected) + " vertices cannot fit in a file of " +
                                  std::to_string(text.size()) + " bytes");
+      const auto f = words[1];
+      const auto [fstop, ferr] = std::from_chars(f.data(), f.data() + f.size(), faces);
+      if (ferr != std::errc() || fstop != f.data() + f.size() || faces > limits::kMaxMeshElements)
+        throw std::runtime_error(where + ": the face count " + stencil_runtime::quoted_excerpt(f) + " is not a number from 0 to " +
+                                 std::to_string(limits::kMaxMeshElements));
       points.reserve(expected);
       stage = 2;
+      return true;
+    }
+    if (stage == 3) {  // a face per line: more is a file whose header says less than it holds
+      if (++face_lines > faces)
+        throw std::runtime_error(where + ": more lines than the header's " + std::to_string(expected) + " vertices and " +
+                                 std::to_string(faces) + " faces declare");
       return true;
     }
     if (words.size() < 3)
       throw std::runtime_error(where + ": expected a vertex `x y z`, got " + std::to_string(words.size()) + " columns");
     points.push_back(parse_point(words, where));
-    return points.size() < expected;
+    if (points.size() == expected) stage = 3;
+    return true;
   });
   if (stage == 0) throw std::runtime_error(path + ": the file is empty (an OFF file starts with a line `OFF`)");
   if (stage == 1) throw std::runtime_error(path + ": the file ends before its counts line `vertices faces edges`");
   if (points.size() < expected)
     throw std::runtime_error(path + ": the file ends after " + std::to_string(points.size()) + " of " +
                              std::to_string(expected) + " vertices");
+  if (face_lines < faces)
+    throw std::runtime_error(path + ": truncated: the file ends after " + std::to_string(face_lines) + " of the " +
+                             std::to_string(faces) + " faces its header declares");
   return points;
 }
 
@@ -160,7 +175,7 @@ int ply_type_bytes(const std::string& type) {
 std::size_t later_elements_end(const std::string& path, const std::string& data, std::size_t offset,
                                const std::vector<LaterElement>& later) {
   for (const LaterElement& e : later)
-    for (std::size_t i = 0; i < e.count; ++i)
+    for (std::size_t i = 0; i < e.count && !e.properties.empty(); ++i)  // each item takes a byte at least: bounded by the file
       for (const LaterProperty& q : e.properties) {
         const std::size_t left = data.size() - std::min(offset, data.size());
         std::size_t items = 1;
@@ -318,7 +333,7 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
     // What follows is the later elements, a line each: more is a file whose
     // header says less than it holds, fewer one that was cut short.
     std::size_t later_lines = 0;
-    for (const LaterElement& e : later) later_lines += e.count;
+    for (const LaterElement& e : later) later_lines += e.properties.empty() ? 0 : e.count;  // an empty line is not counted
     std::size_t lines = 0;
     for (std::size_t at = start; at < data.size();) {
       std::size_t end = data.find('\n', at);

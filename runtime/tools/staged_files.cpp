@@ -17,9 +17,8 @@ StagedFiles::~StagedFiles() {
   for (const auto& [staging, target] : staged_) std::remove(staging.c_str());
 }
 
-std::string StagedFiles::stage(const std::string& target) {
-  std::error_code ec;
-  if (fs::is_directory(target, ec)) throw std::runtime_error(target + ": is a directory, not a file to write");
+std::string StagedFiles::stage(const std::string& output) {
+  const std::string target = stencil_runtime::output_file(output);  // a link kept, a device refused
   stencil_runtime::sweep_left_by_killed_runs(target);
   staged_.emplace_back(name_beside(target, "staged"), target);
   return staged_.back().first;

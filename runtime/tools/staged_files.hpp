@@ -18,7 +18,9 @@ class StagedFiles {
   ~StagedFiles();  // removes what was staged and not committed
 
   // The name to write `target`'s content to now: beside it, same extension
-  // (writers choose the format by it). Throws if `target` is a directory.
+  // (writers choose the format by it). A symbolic link is followed (the link
+  // stays; what it names is replaced); throws if `target` is a directory or
+  // another file that is not regular (stencil_runtime::output_file).
   std::string stage(const std::string& target);
   // Moves every staged file onto its target; throws, having restored the
   // targets' earlier content, if one cannot be moved.

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
+#include <optional>
+#include <set>
 #include <string>
 
 #include "points_file.hpp"
@@ -15,6 +18,38 @@
 #include "tool_support.hpp"
 
 namespace {
+
+// Why a mesh's surface is open: an edge in one face (a boundary), or, where
+// every edge is in two faces or more, an edge in three or more or two faces
+// that run it the same way (non-manifold: the surface is cut open there).
+std::string open_edge_reason(const stencil_runtime::Mesh& mesh) {
+  std::map<std::pair<int, int>, int> faces;  // undirected edge -> faces
+  std::set<std::pair<int, int>> directed;
+  std::optional<std::pair<int, int>> twice;  // an edge two faces run the same way
+  std::size_t corner = 0;
+  for (const int size : mesh.face_sizes) {
+    for (int c = 0; c < size; ++c) {
+      const int a = mesh.face_vertices[corner + static_cast<std::size_t>(c)];
+      const int b = mesh.face_vertices[corner + static_cast<std::size_t>((c + 1) % size)];
+      ++faces[{std::min(a, b), std::max(a, b)}];
+      if (!directed.insert({a, b}).second && !twice) twice = std::pair{a, b};
+    }
+    corner += static_cast<std::size_t>(size);
+  }
+  for (const auto& [edge, count] : faces)
+    if (count == 1)
+      return "has a boundary (edge " + std::to_string(edge.first) + "-" + std::to_string(edge.second) +
+             " is in one face; vertices numbered from 0)";
+  const std::string cut = "), where the surface is cut open as OpenSubdiv cuts it (vertices numbered from 0)";
+  for (const auto& [edge, count] : faces)
+    if (count > 2)
+      return "has non-manifold edges (edge " + std::to_string(edge.first) + "-" + std::to_string(edge.second) + " is in " +
+             std::to_string(count) + " faces" + cut;
+  if (twice)
+    return "has non-manifold edges (two faces run edge " + std::to_string(twice->first) + "-" + std::to_string(twice->second) +
+           " the same way: one is flipped against the other" + cut;
+  return "has a boundary";
+}
 
 using namespace stencil_runtime;
 
@@ -88,7 +123,7 @@ int main(int argc, char** argv) {
 
     const auto topology = SurfaceTopology::create(tables, mesh);
     if (signed_distance && topology->has_boundary())
-      throw std::runtime_error(mesh_path + ": --signed needs a closed surface, and this mesh has a boundary");
+      throw std::runtime_error(mesh_path + ": --signed needs a closed surface, and this mesh " + open_edge_reason(mesh));
     if (signed_distance && topology->has_holes())
       throw std::runtime_error(mesh_path + ": --signed needs a closed surface, and this mesh has faces tagged `hole` "
                                "(line " + std::to_string(mesh.tags.holes.front().line) + ")");

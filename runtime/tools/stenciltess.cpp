@@ -33,8 +33,9 @@ int main(int argc, char** argv) {
       "vertex. The output is closed and consistently oriented for any mix of rates.\n"
       "Animation: --frames names a sequence of OBJ files with the mesh's connectivity and new positions (sorted by\n"
       "file name); the topology and the tessellation plan are made once from --mesh (rates from its positions), and\n"
-      "frame k is written to --out with %d replaced by k (from 0). Every frame's output equals what a run on that\n"
-      "frame alone writes with the same rates (--rate or --rates).\n"
+      "frame k is written to --out with %d replaced by k (from 0). A frame's tag lines, if it has any, must be the\n"
+      "mesh's (a frame without them takes the mesh's creases, corners and holes); every frame's output then equals\n"
+      "what a run on that frame alone, with the mesh's tags, writes with the same rates (--rate or --rates).\n"
       "The mesh's OpenSubdiv tag lines are honoured: faces tagged `hole` are left out (their rims become the\n"
       "output's boundaries); semi-sharp creases and corners (`t crease`, `t corner`, sharpness below 10, and\n"
       "`t creasemethod chaikin`) and `t smoothtriangles` (Catmull-Clark) as in OpenSubdiv; the output stays closed\n"
@@ -111,11 +112,23 @@ int main(int argc, char** argv) {
     const auto topology = SurfaceTopology::create(tables, mesh);
     const TessellationPlan plan(topology, rates, {threads});
     const double setup = seconds_since(t0);
-    if (plan.largest_wanted_rate() > tables->rates().back())
-      std::fprintf(stderr,
-                   "stenciltess: warning: rates up to %d were asked for; the tables stop at %d, which is used instead "
-                   "(more: stencilgen --scheme %s --valence <valences> --n %d --out <dir>)\n",
-                   plan.largest_wanted_rate(), tables->rates().back(), tables->scheme().c_str(), plan.largest_wanted_rate());
+    if (plan.largest_wanted_rate() > tables->rates().back()) {
+      // Rates are the mesh's; a face that the preparation split k times has
+      // its rate divided by 2^k on each part, which is what the tables serve.
+      const bool split = topology->prepared_face_count() != mesh.face_count();
+      // stencilgen makes surface tables up to this rate (generator/base/limits.hpp).
+      constexpr int kGeneratorLargestRate = 128;
+      const int more = std::min(plan.largest_wanted_rate(), kGeneratorLargestRate);
+      std::fprintf(stderr, "stenciltess: warning: rates up to %d were asked for%s; the tables stop at %d, which is used instead",
+                   plan.largest_wanted_rate(),
+                   split ? " on the prepared faces (a rate on a face that the preparation splits is divided among its parts)" : "",
+                   tables->rates().back());
+      if (tables->rates().back() < more)
+        std::fprintf(stderr, " (more%s: stencilgen --scheme %s --valence <valences> --n %d --out <dir>)\n",
+                     more < plan.largest_wanted_rate() ? ", up to stencilgen's largest rate" : "", tables->scheme().c_str(), more);
+      else
+        std::fprintf(stderr, " (stencilgen makes surface tables up to rate %d)\n", kGeneratorLargestRate);
+    }
     const auto [lo, hi] = std::minmax_element(plan.prepared_rates().begin(), plan.prepared_rates().end());
     std::printf("%zu faces (%zu after %s to isolate extraordinary vertices), rates %d..%d\n", mesh.face_count(),
                 topology->prepared_face_count(), topology->preparation().c_str(), *lo, *hi);
@@ -148,9 +161,17 @@ int main(int argc, char** argv) {
     for (std::size_t k = 0; k < files.size(); ++k) names.push_back(stencil_tools::frame_name(out, k));
     stencil_tools::check_outputs_are_not_inputs(names, inputs, {read.folder});
     for (std::size_t k = 0; k < files.size(); ++k) {
-      const Mesh frame = read_obj(files[k]);
+      Mesh frame = read_obj(files[k]);
       if (!topology->same_connectivity(frame.vertex_count(), frame.face_sizes, frame.face_vertices))
         throw std::runtime_error(files[k] + ": frame " + std::to_string(k) + " has another connectivity than " + mesh_path);
+      // The plan and the topology are the mesh's: a frame's own tags would
+      // be ignored, so they must be the mesh's (or absent).
+      const bool bare = stencil_tools::untagged(frame.tags);
+      boundary.apply(frame);  // --boundary overrides a frame's tag as the mesh's
+      if (!bare && !stencil_tools::same_tags(frame.tags, mesh.tags))
+        throw std::runtime_error(files[k] + ": frame " + std::to_string(k) + " has other tag lines (creases, corners, holes or "
+                                 "subdivision options) than " + mesh_path + "; a frame moves the vertices only: give it the "
+                                 "mesh's tags or none");
     }
     // Every frame is staged beside its output and moved into place once all
     // are written: a failure leaves the outputs as they were.

@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cstring>
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -18,6 +19,7 @@
 #include <iostream>
 #include <new>
 #include <set>
+#include <tuple>
 
 namespace stencil_tools {
 
@@ -62,6 +64,34 @@ int run_tool(CLI::App& app, int argc, char** argv, const std::function<int()>& b
   return 1;
 }
 
+bool same_tags(const stencil_runtime::MeshTags& a, const stencil_runtime::MeshTags& b) {
+  auto creases = [](const stencil_runtime::MeshTags& t) {
+    std::vector<std::tuple<int, int, double>> out;
+    for (const auto& c : t.creases)
+      if (c.sharpness > 0) out.emplace_back(std::min(c.a, c.b), std::max(c.a, c.b), c.sharpness);
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  auto corners = [](const stencil_runtime::MeshTags& t) {
+    std::vector<std::pair<int, double>> out;
+    for (const auto& c : t.corners)
+      if (c.sharpness > 0) out.emplace_back(c.vertex, c.sharpness);
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  auto holes = [](const stencil_runtime::MeshTags& t) {
+    std::vector<int> out;
+    for (const auto& h : t.holes) out.push_back(h.face);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  };
+  return creases(a) == creases(b) && corners(a) == corners(b) && holes(a) == holes(b) && a.boundary == b.boundary &&
+         a.chaikin_creases == b.chaikin_creases && a.smooth_triangles == b.smooth_triangles;
+}
+
+bool untagged(const stencil_runtime::MeshTags& tags) { return same_tags(tags, stencil_runtime::MeshTags{}); }
+
 std::string read_text_file(const std::string& path, std::size_t max_bytes) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
@@ -89,8 +119,10 @@ ParameterText parse_parameter(const std::string& text) {
     return p;
   }
   p.exact = false;
+  // One leading '+', as the rationals take it (from_chars does not).
+  const bool plus = text.size() > 1 && text[0] == '+' && (std::isdigit(static_cast<unsigned char>(text[1])) || text[1] == '.');
   const char* end = text.data() + text.size();
-  const auto [stop, err] = std::from_chars(text.data(), end, p.value);
+  const auto [stop, err] = std::from_chars(text.data() + (plus ? 1 : 0), end, p.value);
   if (err != std::errc() || stop != end || !std::isfinite(p.value))
     throw std::runtime_error("parameter " + stencil_runtime::quoted_excerpt(text) + " is neither an exact rational such as 1/3 nor a finite decimal such as 0.3");
   return p;
@@ -211,9 +243,8 @@ TableInput table_input(const std::string& spec) {
 
 void check_output_can_be_written(const std::string& output) {
   if (output.empty()) return;
-  const fs::path path(output);
+  const fs::path path(stencil_runtime::output_file(output));  // a directory, device or FIFO refused
   std::error_code ec;
-  if (fs::is_directory(path, ec)) throw std::runtime_error(output + ": is a directory, not a file to write");
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
   if (!fs::exists(folder, ec)) throw std::runtime_error(output + ": cannot be written: its folder " + folder.string() + " does not exist");
   if (!fs::is_directory(folder, ec)) throw std::runtime_error(output + ": cannot be written: " + folder.string() + " is not a folder");

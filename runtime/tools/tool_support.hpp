@@ -18,6 +18,13 @@ namespace stencil_tools {
 // the help and exits 0; a command-line error is one line and exit code 1.
 int run_tool(CLI::App& app, int argc, char** argv, const std::function<int()>& body);
 
+// Whether two meshes' tags give the same surface rules: the same creases (an
+// edge in either direction) and corners with the same sharpness, the same
+// holes and options, in any order and from any lines.
+bool same_tags(const stencil_runtime::MeshTags& a, const stencil_runtime::MeshTags& b);
+// Whether a mesh has no tags: no creases, corners or holes and the default options.
+bool untagged(const stencil_runtime::MeshTags& tags);
+
 // A regular text file of at most `max_bytes`, whole; errors name the path.
 std::string read_text_file(const std::string& path, std::size_t max_bytes = std::size_t{64} << 20);
 
