@@ -170,6 +170,10 @@ int ply_type_bytes(const std::string& type) {
   return 0;
 }
 
+bool ply_float_type(const std::string& type) {
+  return type == "float" || type == "float32" || type == "double" || type == "float64";
+}
+
 // Where the later elements of a binary (little-endian) file end, walking
 // their lists' counts from `offset`; an error where the file ends first.
 std::size_t later_elements_end(const std::string& path, const std::string& data, std::size_t offset,
@@ -212,7 +216,7 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
   bool in_vertex = false, seen_vertex = false;
   struct Property {
     std::string name;
-    int bytes = 0;  // 4 float, 8 double
+    int bytes = 0;  // 4 float, 8 double; negative: an integer of that many bytes, skipped
   };
   std::vector<Property> properties;
   std::vector<LaterElement> later;  // faces, say: not read, but the file must hold what they declare
@@ -258,7 +262,7 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
         std::string count_type;
         words >> count_type >> item;
         q.count_bytes = ply_type_bytes(count_type);
-        if (q.count_bytes <= 0 || count_type.find("float") != std::string::npos || count_type == "double")
+        if (q.count_bytes <= 0 || ply_float_type(count_type))
           throw std::runtime_error(where + ": a list's count type " + stencil_runtime::quoted_excerpt(count_type) +
                                    " is not an integer type");
       } else {
@@ -273,15 +277,10 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
       for (const Property& q : properties)
         if (q.name == name)
           throw std::runtime_error(where + ": vertex property " + stencil_runtime::quoted_excerpt(name) + " is declared twice");
-      int bytes = 0;
-      if (type == "float" || type == "float32") bytes = 4;
-      else if (type == "double" || type == "float64") bytes = 8;
-      else if (type == "list") throw std::runtime_error(where + ": list properties of vertices are not supported");
-      else if (type == "uchar" || type == "char" || type == "uint8" || type == "int8") bytes = 1;
-      else if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") bytes = 2;
-      else if (type == "int" || type == "uint" || type == "int32" || type == "uint32") bytes = -4;  // integer, skipped
-      else throw std::runtime_error(where + ": unknown property type " + stencil_runtime::quoted_excerpt(type));
-      properties.push_back({name, bytes});
+      if (type == "list") throw std::runtime_error(where + ": list properties of vertices are not supported");
+      const int bytes = ply_type_bytes(type);
+      if (bytes == 0) throw std::runtime_error(where + ": unknown property type " + stencil_runtime::quoted_excerpt(type));
+      properties.push_back({name, ply_float_type(type) ? bytes : -bytes});  // an integer: skipped
     }
   }
   if (format.empty()) throw std::runtime_error(path + ": no 'format' line in the PLY header");
