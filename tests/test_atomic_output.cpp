@@ -67,6 +67,30 @@ TEST_CASE("an output folder is written whole, and replaces a previous one whole"
   fs::remove_all(dir);
 }
 
+TEST_CASE("an output folder that is a symbolic link is replaced through it: the link stays", "[output]") {
+  const fs::path dir = scratch_dir("output-link");
+  write_previous(dir / "real" / "tables");
+  fs::create_symlink("real/tables", dir / "out");  // relative, as `ln -s` makes them
+  fs::create_symlink("out", dir / "out2");         // and a chain of two
+  new_run(dir / "out2").commit();
+  CHECK(fs::is_symlink(dir / "out"));
+  CHECK(fs::is_symlink(dir / "out2"));
+  CHECK(snapshot(dir / "real" / "tables") == kNew);  // old-only.json does not survive there either
+  CHECK(names_in(dir) == std::vector<std::string>{"out", "out2", "real"});
+  CHECK(names_in(dir / "real") == std::vector<std::string>{"tables"});  // no staging or old folder beside it
+  // A link to a folder that does not exist yet: the folder is made where the link points.
+  fs::create_symlink("real/later", dir / "dangling");
+  new_run(dir / "dangling").commit();
+  CHECK(fs::is_symlink(dir / "dangling"));
+  CHECK(snapshot(dir / "real" / "later") == kNew);
+  // A loop of links is refused, and nothing is written.
+  fs::create_symlink("loop-b", dir / "loop-a");
+  fs::create_symlink("loop-a", dir / "loop-b");
+  CHECK_THROWS_WITH(new_run(dir / "loop-a").commit(), Catch::Contains("loop of symbolic links"));
+  CHECK(names_in(dir) == std::vector<std::string>{"dangling", "loop-a", "loop-b", "out", "out2", "real"});
+  fs::remove_all(dir);
+}
+
 TEST_CASE("a failure at any step before the new folder is in place leaves the previous folder exactly as it was",
           "[output]") {
   const fs::path dir = scratch_dir("output-fail");

@@ -22,6 +22,21 @@ fs::path normalised(const fs::path& path) {
   return p;
 }
 
+// What `path` names once a chain of symbolic links is followed (`path` itself
+// when it is no link): the output replaces that and the links stay, as the
+// runtime's output_file does (the layers share no code). Throws sg::Error for
+// a loop of links or one that cannot be read.
+fs::path followed_links(const fs::path& path) {
+  fs::path target = normalised(path);
+  std::error_code ec;
+  for (int links = 0; fs::is_symlink(fs::symlink_status(target, ec)); ++links) {
+    const fs::path to = fs::read_symlink(target, ec);
+    if (links == 40 || ec) throw Error("cannot write " + path.string() + ": a loop of symbolic links or an unreadable one");
+    target = normalised(to.is_absolute() ? to : target.parent_path() / to);
+  }
+  return target;
+}
+
 // A sibling of `path` that only this process uses: ".NAME.ROLE-PID".
 fs::path sibling(const fs::path& parent, const fs::path& path, const std::string& role) {
   return parent / ("." + path.filename().string() + "." + role + "-" + std::to_string(::getpid()));
@@ -122,7 +137,7 @@ class Undo {
 };
 
 void OutputTransaction::commit() {
-  const fs::path target = normalised(target_);
+  const fs::path target = followed_links(target_);  // a link to a folder stays; the folder is replaced
   const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
   if (fs::exists(target, ec) && !fs::is_directory(target, ec))
@@ -174,18 +189,10 @@ void OutputTransaction::commit() {
 }
 
 void write_file_atomically(const fs::path& path, const std::string& bytes) {
-  // A symbolic link is followed, so that it stays and what it names is
-  // replaced; a device or FIFO would be deleted by the rename: refused. (The
-  // runtime's output_file does the same; the layers share no code.)
-  fs::path target = normalised(path);
+  // A device or FIFO would be deleted by the rename: refused.
+  const fs::path target = followed_links(path);
   std::error_code ec;
-  fs::file_status status = fs::symlink_status(target, ec);
-  for (int links = 0; fs::is_symlink(status); ++links) {
-    const fs::path to = fs::read_symlink(target, ec);
-    if (links == 40 || ec) throw Error("cannot write " + path.string() + ": a loop of symbolic links or an unreadable one");
-    target = (to.is_absolute() ? to : target.parent_path() / to).lexically_normal();
-    status = fs::symlink_status(target, ec);
-  }
+  const fs::file_status status = fs::symlink_status(target, ec);
   if (fs::exists(status) && !fs::is_regular_file(status))
     throw Error("cannot write " + path.string() + ": not a regular file (a directory, device, FIFO or socket)");
   const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");

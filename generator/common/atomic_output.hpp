@@ -6,7 +6,9 @@
 // any failure restores the old folder, removes the staging folder (and any
 // parent folders the transaction created), and throws; the target then holds
 // exactly what it held before. Files of an earlier run that this run does not
-// write do not survive: the folder is the output of one run.
+// write do not survive: the folder is the output of one run. A target that is
+// a symbolic link (or a chain of them) stays one: the folder it names is
+// replaced, as the runtime's outputs do with a link to a file.
 #include <filesystem>
 #include <map>
 #include <string>
