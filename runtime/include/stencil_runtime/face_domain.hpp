@@ -48,4 +48,7 @@ struct FaceDomain {
   std::string outside_text(std::size_t face, const std::string& at) const;
 };
 
+// "(u, v)" with every digit each has (%.17g), as messages write a real parameter.
+std::string parameter_text(double u, double v);
+
 }  // namespace stencil_runtime

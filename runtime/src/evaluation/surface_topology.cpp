@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <numeric>
 #include <set>
-#include <cstdio>
 #include <string>
 #include <type_traits>
 
@@ -205,12 +204,9 @@ namespace {
 PatchStencil checked_stencil(const SurfaceTopology& topology, std::size_t face, double u, double v) {
   const FaceDomain domain = topology.domain(face);
   if (!domain.contains(u, v)) throw EvaluationError(domain.outside(face, u, v));
-  char text[64];
-  std::snprintf(text, sizeof text, "(%.17g, %.17g)", u, v);
-  const std::string at = text;
   PatchStencil s;
   if (!topology.family().stencil(face, u, v, s))
-    throw EvaluationError("the limit point at " + at + " of face " + std::to_string(face) +
+    throw EvaluationError("the limit point at " + parameter_text(u, v) + " of face " + std::to_string(face) +
                           " has no exact row: the tables do not hold the parameter, nor does the patch's descent reach one "
                           "they hold, and the scheme's regular patches are not polynomial; evaluate it within a tolerance "
                           "(Surface::evaluate) instead");

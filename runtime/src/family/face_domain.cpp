@@ -37,10 +37,14 @@ const char* FaceDomain::describe() const {
   }
 }
 
-std::string FaceDomain::outside(std::size_t face, double u, double v) const {
+std::string parameter_text(double u, double v) {
   char text[64];
   std::snprintf(text, sizeof text, "(%.17g, %.17g)", u, v);
-  return outside_text(face, text);
+  return text;
+}
+
+std::string FaceDomain::outside(std::size_t face, double u, double v) const {
+  return outside_text(face, parameter_text(u, v));
 }
 
 std::string FaceDomain::outside(std::size_t face, const ExactParameter& at) const { return outside_text(face, at.str()); }
