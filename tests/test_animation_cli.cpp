@@ -59,6 +59,8 @@ void check_animation(const std::string& tables, const std::string& mesh_name, co
   INFO(r.output);
   REQUIRE(r.status == 0);
   REQUIRE(r.output.find("frame 3/3") != std::string::npos);  // progress
+  CHECK(r.output.find("3 frames of ") != std::string::npos);
+  CHECK(r.output.find("f00.ply .. ") != std::string::npos);
   for (int k = 0; k < 3; ++k) {
     const fs::path single = dir / ("single_" + std::to_string(k) + ".ply");
     const CliResult s = run_stenciltess("--tables " + tables + " --mesh " + frames[static_cast<std::size_t>(k)].string() + " " + rates +
@@ -79,6 +81,22 @@ TEST_CASE("stenciltess --frames writes every frame as a single run on it would",
   const std::string loop = generated_table("loop", "--valence 3-8 --n 24", "sgt").parent_path().string();
   check_animation(nonpoly, "torus-3-5", "--rate 6");
   check_animation(loop, "tri-mix", "--rate 5");
+}
+
+TEST_CASE("stenciltess --frames with one frame says so in the singular", "[runtime][tools][frames]") {
+  const std::string loop = generated_table("loop", "--valence 3-8 --n 24", "sgt").parent_path().string();
+  const fs::path dir = scratch_dir("animation-one");
+  const fs::path rest = kMeshes / "tri-mix.obj";
+  make_frames(read_obj(rest.string()), dir, 1);
+  const fs::path out = dir / "f00.ply";
+  const CliResult r = run_stenciltess("--tables " + loop + " --mesh " + rest.string() + " --frames '" +
+                                      (dir / "frame_*.obj").string() + "' --rate 2 --out '" + (dir / "f%02d.ply").string() + "'");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  CHECK(r.output.find("1 frame of ") != std::string::npos);
+  CHECK(r.output.find("wrote " + out.string() + "\n") != std::string::npos);
+  CHECK(fs::exists(out));
+  fs::remove_all(dir);
 }
 
 TEST_CASE("stenciltess --frames refuses a frame with other connectivity, and writes nothing", "[runtime][tools][frames][errors]") {

@@ -192,11 +192,12 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "frame %zu/%zu: %s -> %s\n", k + 1, files.size(), files[k].c_str(), names[k].c_str());
     }
     written.commit();
-    std::printf("%zu frames of %zu limit points, %zu quads + %zu triangles each; %.4f s per frame (%.1f M triangles/s), "
+    std::printf("%zu %s of %zu limit points, %zu quads + %zu triangles each; %.4f s per frame (%.1f M triangles/s), "
                 "setup %.4f s\n",
-                files.size(), soup.positions.size(), soup.quads.size(), soup.triangles.size(), per_frame / files.size(),
+                files.size(), files.size() == 1 ? "frame" : "frames", soup.positions.size(), soup.quads.size(), soup.triangles.size(), per_frame / files.size(),
                 soup.triangle_count() * files.size() / per_frame / 1e6, setup);
-    std::printf("wrote %s .. %s\n", names.front().c_str(), names.back().c_str());
+    if (names.size() == 1) std::printf("wrote %s\n", names.front().c_str());
+    else std::printf("wrote %s .. %s\n", names.front().c_str(), names.back().c_str());
     return 0;
   });
 }
