@@ -2,6 +2,8 @@
 // The runtime's one error base type: every failure the library reports is a
 // stencil_runtime::Error (or one of the kinds below), with a complete message
 // that names the file, face, vertex or value at fault.
+#include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -26,6 +28,24 @@ struct MeshError : Error {
 struct EvaluationError : Error {
   using Error::Error;
 };
+
+// A number as a message writes it: as few digits as give back the same double
+// (1e37, 0.1, -1, 1e-30; not to_string's 10000000000000000000000000000000000000.000000
+// or 0.000000), all 17 where fewer do not; an exponent without '+' or leading zeros.
+inline std::string number_text(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.15g", x);
+  if (std::strtod(text, nullptr) != x) std::snprintf(text, sizeof text, "%.17g", x);
+  std::string out = text;
+  const std::size_t e = out.find('e');
+  if (e != std::string::npos) {
+    std::size_t digits = e + 1;
+    if (out[digits] == '+') out.erase(digits, 1);
+    else if (out[digits] == '-') ++digits;
+    while (digits + 1 < out.size() && out[digits] == '0') out.erase(digits, 1);
+  }
+  return out;
+}
 
 // User text as a message quotes it: 'text' when short, else its start and its
 // length, so that a 100,000-character argument does not make a message as long.

@@ -66,7 +66,7 @@ void check_crease_steps(std::size_t faces, std::size_t first, float sharpest) {
   std::size_t made = first;
   for (int k = 0; k < steps; ++k, made *= 4)
     if (made > limits::kMaxCreaseStepFaces)
-      throw MeshError("a sharpness of " + std::to_string(sharpest) + " takes " + std::to_string(steps) +
+      throw MeshError("a sharpness of " + number_text(sharpest) + " takes " + std::to_string(steps) +
                       " whole-mesh subdivision steps, which would make more than " +
                       std::to_string(limits::kMaxCreaseStepFaces) + " faces from this mesh's " + std::to_string(faces) +
                       " (the limit); lower the sharpness");

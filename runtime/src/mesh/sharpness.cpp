@@ -14,9 +14,9 @@ namespace {
 // A sharpness of 10 or more is infinite (OpenSubdiv's SHARPNESS_INFINITE), kept as 10.
 float checked(double s, const std::string& what, bool infinite_allowed) {
   if (!std::isfinite(s) || s < 0)
-    throw MeshError(what + " has sharpness " + std::to_string(s) + "; a sharpness is a finite number >= 0");
+    throw MeshError(what + " has sharpness " + number_text(s) + "; a sharpness is a finite number >= 0");
   if (s >= kInfiniteSharpness && !infinite_allowed)
-    throw MeshError(what + " has sharpness " + std::to_string(s) +
+    throw MeshError(what + " has sharpness " + number_text(s) +
                     ", which OpenSubdiv treats as infinitely sharp (>= 10); infinitely sharp creases and corners are made "
                     "for quad schemes only so far: give it a finite sharpness below 10");
   return std::min(static_cast<float>(s), kInfiniteSharpness);

@@ -324,7 +324,7 @@ void QuadTables::validate(const std::string& origin) {
       double sum = 0, size = 0;
       for (int h = 0; h < v.points; ++h) sum += v.weights[s + static_cast<std::size_t>(h)], size += std::fabs(v.weights[s + static_cast<std::size_t>(h)]);
       if (!(std::fabs(sum - 1) <= 1e-5 * std::max(1.0, size)))
-        fail(where + ": stencil " + std::to_string(s / static_cast<std::size_t>(v.points)) + " sums to " + std::to_string(sum) + ", not 1");
+        fail(where + ": stencil " + std::to_string(s / static_cast<std::size_t>(v.points)) + " sums to " + number_text(sum) + ", not 1");
     }
     const std::size_t stencils = v.weights.size() / static_cast<std::size_t>(v.points);
     if (v.nodes.size() != rates_.size() || v.centres.size() != rates_.size()) fail(where + ": stencil index missing for some rate");

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "family/crease_step.hpp"
+#include "stencil_runtime/face_domain.hpp"
 #include "family/sharp_cut.hpp"
 #include "family/parameter_ops.hpp"
 #include "family/stencil_sum.hpp"
@@ -216,8 +217,7 @@ std::pair<int, std::array<P, 2>> ternary_child(const P& u, const P& v) {
     }
     return {best, at};
   } else if constexpr (std::is_same_v<P, Dual>) {
-    throw EvaluationError("parameter (" + std::to_string(u.value) + ", " + std::to_string(v.value) +
-                          ") lies outside the triangle");
+    throw EvaluationError("parameter " + parameter_text(u.value, v.value) + " lies outside the triangle");
   } else if constexpr (std::is_same_v<P, ExactDual>) {
     throw EvaluationError("parameter (" + u.value.str() + ", " + v.value.str() + ") lies outside the triangle");
   } else {
