@@ -35,6 +35,9 @@ struct FaceDomain {
   bool contains(const ExactParameter& p) const;
   // QuadSubfaces: the sub-face holding (u, v) (Bfr's rule: points on a tile's
   // border go to the tile whose lower-left is nearer) and its own coordinates.
+  // For (u, v) outside the domain, the nearest tile's (coordinates outside
+  // [0, 1]); NaN counts as 0 there. The exact one throws ParameterOverflow
+  // where the sub-face's coordinates do not fit in 64-bit fractions.
   int subface(double u, double v, double& su, double& sv) const;
   int subface(const ExactParameter& p, ExactParameter& local) const;
   // A description for error messages, e.g. "[0,1]^2" or "u, v >= 0, u + v <= 1".
@@ -46,6 +49,8 @@ struct FaceDomain {
 
  private:
   std::string outside_text(std::size_t face, const std::string& at) const;
+  // The tile (sub-face column and row) of floor(u + 1/4), floor(v + 1/4).
+  void tiles(std::int64_t u_floor, std::int64_t v_floor, std::int64_t& ut, std::int64_t& vt) const;
 };
 
 // "(u, v)" with every digit each has (%.17g), as messages write a real parameter.

@@ -37,8 +37,11 @@ struct RealSample {
 class SurfaceTopology {
  public:
   // Checks the faces (sizes 3..limits::kMaxFaceSize, indices below
-  // vertex_count, a closed manifold, consistently oriented, every vertex used),
-  // the valences against the tables, then prepares: the scheme's polygon step
+  // vertex_count, no vertex twice in a face) and the valences against the
+  // tables, then prepares. Boundaries are allowed for every scheme but
+  // sqrt(3); vertices in no face are left out; non-manifold vertices and edges
+  // are cut into manifold pieces with infinitely sharp corners and edges, as
+  // OpenSubdiv does (docs/runtime.md). The preparation: the scheme's polygon step
   // when a quad scheme's mesh has other polygons, and whole-mesh refinement
   // steps until every face's patch is in the tables' form (at most
   // limits::kMaxRefinementSteps). Throws MeshError naming the face, edge or
@@ -57,9 +60,12 @@ class SurfaceTopology {
   // until every sharpness has decayed (ceil of the largest), the crease rule
   // being the scheme's own curve (a quad scheme's regular curve; a Loop
   // scheme's crease_curve); the surface is then smooth and evaluated exactly
-  // from the tables. Throws MeshError for an edge or vertex the mesh lacks, a
-  // negative or infinite (>= 10) sharpness, too many steps
-  // (limits::kMaxCreaseStepFaces), or tables without a crease rule (sqrt(3)).
+  // from the tables. A sharpness of 10 or more is infinitely sharp, as in
+  // OpenSubdiv: the patches of the mesh cut along such creases (crease,
+  // corner, dart and cone sectors from the tables). Throws MeshError for an
+  // edge or vertex the mesh lacks, a sharpness that is negative or not
+  // finite, too many steps (limits::kMaxCreaseStepFaces), or tables without a
+  // crease rule (sqrt(3)). Two entries for one edge or vertex: the last wins.
   // `features.smooth_triangles` (OpenSubdiv's TRI_SUB_SMOOTH) changes the
   // polygon step's edge points next to triangles; it needs Catmull-Clark's
   // polygon edge rule (MeshError otherwise) and has no effect on Loop.
@@ -67,12 +73,12 @@ class SurfaceTopology {
                                                        std::vector<int> face_sizes, std::vector<int> face_vertices,
                                                        const std::vector<int>& holes = {}, const MeshFeatures& features = {});
   // The same from a mesh read from a file, with its tags: holes, creases,
-  // corners, the crease method and smooth triangles as above. What the
-  // runtime cannot honour yet is refused with a MeshError naming the file and
-  // line of the tag (the surface would be silently wrong): an infinitely sharp
-  // crease or corner (>= 10), and `smoothtriangles` on a quad scheme without
-  // Catmull-Clark's polygon edge rule. Boundary interpolation has no effect on
-  // a closed mesh.
+  // corners, the boundary interpolation, the crease method and smooth
+  // triangles as above. What the runtime cannot honour is refused with a
+  // MeshError naming the file and line of the tag (the surface would be
+  // silently wrong): creases and corners on sqrt(3), and `smoothtriangles` on
+  // a quad scheme without Catmull-Clark's polygon edge rule. Boundary
+  // interpolation has no effect on a closed mesh.
   static std::shared_ptr<const SurfaceTopology> create(std::shared_ptr<const Tables> tables, const Mesh& mesh);
 
   const Tables& tables() const { return *tables_; }

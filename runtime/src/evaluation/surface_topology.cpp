@@ -48,6 +48,10 @@ std::shared_ptr<const SurfaceTopology> SurfaceTopology::create(std::shared_ptr<c
     if (face_sizes[f] < 3 || face_sizes[f] > limits::kMaxFaceSize)
       throw MeshError("face " + std::to_string(f) + " has " + std::to_string(face_sizes[f]) + " vertices (faces have 3.." +
                       std::to_string(limits::kMaxFaceSize) + ")" + kNumbering);
+  if (features.boundary != BoundaryInterpolation::None && features.boundary != BoundaryInterpolation::EdgeOnly &&
+      features.boundary != BoundaryInterpolation::EdgeAndCorner)
+    throw MeshError("unknown boundary interpolation " + std::to_string(static_cast<int>(features.boundary)) +
+                    " (none, edge-only or edge-and-corner)");
   std::vector<char> hole_flags;
   if (!holes.empty()) {
     hole_flags.assign(face_sizes.size(), 0);
@@ -188,7 +192,13 @@ PatchStencil checked_stencil(const SurfaceTopology& topology, std::size_t face, 
   if (!domain.contains(at))
     throw EvaluationError(domain.outside(face, at));
   PatchStencil s;
-  if (!topology.family().stencil(face, at, s)) throw not_held(topology, face, at);
+  try {
+    if (!topology.family().stencil(face, at, s)) throw not_held(topology, face, at);
+  } catch (const ParameterOverflow&) {
+    throw EvaluationError("the parameter " + at.str() + " of face " + std::to_string(face) +
+                          " needs fractions beyond 64 bits on the way to a patch the tables hold, so it has no exact "
+                          "row: evaluate it as a decimal within a tolerance");
+  }
   return s;
 }
 
@@ -207,9 +217,10 @@ PatchStencil checked_stencil(const SurfaceTopology& topology, std::size_t face, 
   PatchStencil s;
   if (!topology.family().stencil(face, u, v, s))
     throw EvaluationError("the limit point at " + parameter_text(u, v) + " of face " + std::to_string(face) +
-                          " has no exact row: the tables do not hold the parameter, nor does the patch's descent reach one "
-                          "they hold, and the scheme's regular patches are not polynomial; evaluate it within a tolerance "
-                          "(Surface::evaluate) instead");
+                          " has no exact row: the tables do not hold the parameter, and the patch's descent reaches "
+                          "neither a grid they hold nor a polynomial regular patch (a scheme whose regular patches are "
+                          "not polynomial, or a parameter finer than the descent follows); evaluate it within a "
+                          "tolerance (Surface::evaluate) instead");
   return s;
 }
 

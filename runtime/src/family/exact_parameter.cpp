@@ -27,10 +27,16 @@ std::int64_t checked_add(std::int64_t a, std::int64_t b) {
 
 Fraction Fraction::make(std::int64_t num, std::int64_t den) {
   if (den == 0) throw EvaluationError("a parameter with a zero denominator");
-  if (num == INT64_MIN || den == INT64_MIN) overflow("negation");
-  if (den < 0) num = -num, den = -den;
-  const std::int64_t g = std::gcd(num, den);
-  return {num / g, den / g};
+  // Reduced in 128 bits: -2^63 has no 64-bit negation, yet -2^63/1 and
+  // 2/-2^63 (= -1/2^62) are fractions the type holds.
+  __extension__ typedef __int128 Wide;
+  Wide n = num, d = den;
+  if (d < 0) n = -n, d = -d;
+  const auto magnitude = static_cast<std::uint64_t>(n < 0 ? -n : n);  // at most 2^63
+  const Wide g = static_cast<Wide>(std::gcd(magnitude, static_cast<std::uint64_t>(d)));
+  n /= g, d /= g;
+  if (n < INT64_MIN || n > INT64_MAX || d > INT64_MAX) overflow("a denominator of 2^63");
+  return {static_cast<std::int64_t>(n), static_cast<std::int64_t>(d)};
 }
 
 std::string Fraction::str() const { return den == 1 ? std::to_string(num) : std::to_string(num) + "/" + std::to_string(den); }
@@ -46,7 +52,11 @@ Fraction parse_fraction(std::string_view text) {
   if (!whole(text.substr(0, slash), num) || (slash != std::string_view::npos && !whole(text.substr(slash + 1), den)))
     throw EvaluationError(quoted_excerpt(text) + " is not an exact rational p/q with 64-bit integers p and q");
   if (den == 0) throw EvaluationError(quoted_excerpt(text) + " has a zero denominator");
-  return Fraction::make(num, den);
+  try {
+    return Fraction::make(num, den);
+  } catch (const ParameterOverflow&) {  // 1/-2^63: its denominator 2^63 does not fit
+    throw EvaluationError(quoted_excerpt(text) + " is not an exact rational p/q with 64-bit integers p and q once reduced");
+  }
 }
 
 Fraction add(const Fraction& a, const Fraction& b) {

@@ -66,42 +66,67 @@ bool FaceDomain::contains(double u, double v) const {
   }
 }
 
+namespace {
+
+// Whether a parameter lies in the domain is decided in 128 bits: products of
+// two 64-bit values fit, so no parameter the type holds throws here (the
+// evaluation after it may still need to leave exact arithmetic).
+__extension__ typedef __int128 Wide;  // GCC and Clang: no warning under -Wpedantic
+
+// floor(x + 1/4) = floor((4 num + den) / (4 den)).
+std::int64_t floor_quarter(const Fraction& x) {
+  const Wide n = 4 * static_cast<Wide>(x.num) + x.den, d = 4 * static_cast<Wide>(x.den);
+  Wide q = n / d;
+  if (n < 0 && q * d != n) --q;
+  return static_cast<std::int64_t>(std::clamp<Wide>(q, INT64_MIN, INT64_MAX));
+}
+
+// Whether t <= x <= t + 1/2 (the tile [t, t + 1/2] along one axis).
+bool in_tile(const Fraction& x, std::int64_t t) {
+  const Wide n = x.num, d = x.den;
+  return n >= t * d && 2 * n <= (2 * static_cast<Wide>(t) + 1) * d;
+}
+
+}  // namespace
+
 bool FaceDomain::contains(const ExactParameter& p) const {
   const Fraction zero{0, 1}, one{1, 1};
   if (compare(p.u, zero) < 0 || compare(p.v, zero) < 0) return false;
   switch (kind) {
     case Kind::Quad: return compare(p.u, one) <= 0 && compare(p.v, one) <= 0;
-    case Kind::Triangle: return compare(add(p.u, p.v), one) <= 0;
+    case Kind::Triangle:  // u + v <= 1
+      return static_cast<Wide>(p.u.num) * p.v.den + static_cast<Wide>(p.v.num) * p.u.den <=
+             static_cast<Wide>(p.u.den) * p.v.den;
     default: {
-      ExactParameter local;
-      subface(p, local);
-      return compare(local.u, zero) >= 0 && compare(local.v, zero) >= 0 && compare(local.u, one) <= 0 &&
-             compare(local.v, one) <= 0;
+      std::int64_t ut = 0, vt = 0;
+      tiles(floor_quarter(p.u), floor_quarter(p.v), ut, vt);
+      return in_tile(p.u, ut) && in_tile(p.v, vt);
     }
   }
 }
 
-int FaceDomain::subface(double u, double v, double& su, double& sv) const {
+void FaceDomain::tiles(std::int64_t u_floor, std::int64_t v_floor, std::int64_t& ut, std::int64_t& vt) const {
   // Bfr's rule: a point within 1/4 beyond a tile still belongs to it; clamp to the tiles that exist.
-  // Clamped in double first: u and v may be anything (checked by the caller after).
-  const int ut = static_cast<int>(std::clamp(std::floor(u + 0.25), 0.0, static_cast<double>(u_tiles - 1)));
-  int vt = static_cast<int>(std::clamp(std::floor(v + 0.25), 0.0, static_cast<double>(corners)));
+  ut = std::clamp<std::int64_t>(u_floor, 0, u_tiles - 1);
+  vt = std::clamp<std::int64_t>(v_floor, 0, corners);
   if (vt * u_tiles + ut >= corners) vt = corners / u_tiles - 1 + (ut < corners % u_tiles);
-  su = 2 * (u - ut);
-  sv = 2 * (v - vt);
-  return vt * u_tiles + ut;
+}
+
+int FaceDomain::subface(double u, double v, double& su, double& sv) const {
+  // Clamped in double first: u and v may be anything (checked by the caller
+  // after); NaN, which no clamp changes, counts as 0 rather than reaching an
+  // undefined conversion to int.
+  auto floor_quarter = [](double x) { return x == x ? std::clamp(std::floor(x + 0.25), -1.0, 1e9) : 0.0; };
+  std::int64_t ut = 0, vt = 0;
+  tiles(static_cast<std::int64_t>(floor_quarter(u)), static_cast<std::int64_t>(floor_quarter(v)), ut, vt);
+  su = 2 * (u - static_cast<double>(ut));
+  sv = 2 * (v - static_cast<double>(vt));
+  return static_cast<int>(vt * u_tiles + ut);
 }
 
 int FaceDomain::subface(const ExactParameter& p, ExactParameter& local) const {
-  auto floor_quarter = [](const Fraction& x) {  // floor(x + 1/4)
-    const Fraction y = add(x, Fraction{1, 4});
-    std::int64_t q = y.num / y.den;
-    if (y.num < 0 && q * y.den != y.num) --q;
-    return q;
-  };
-  std::int64_t ut = std::clamp<std::int64_t>(floor_quarter(p.u), 0, u_tiles - 1);
-  std::int64_t vt = std::clamp<std::int64_t>(floor_quarter(p.v), 0, corners);
-  if (vt * u_tiles + ut >= corners) vt = corners / u_tiles - 1 + (ut < corners % u_tiles);
+  std::int64_t ut = 0, vt = 0;
+  tiles(floor_quarter(p.u), floor_quarter(p.v), ut, vt);
   local.u = multiply(subtract(p.u, Fraction{ut, 1}), 2);
   local.v = multiply(subtract(p.v, Fraction{vt, 1}), 2);
   return static_cast<int>(vt * u_tiles + ut);
