@@ -65,6 +65,9 @@ class ClosestPointQuery {
   // spatial index is refitted, nothing else rebuilt.
   void update(const Surface& surface);
 
+  // Throws EvaluationError for a query point with a coordinate that is not
+  // finite or beyond +-limits::kMaxCoordinate (the control points' limit, so
+  // that squared distances stay far from overflow).
   ClosestPoint find(const Point& q) const;
   // In parallel, in input order; an EvaluationError names the query (its index and point).
   std::vector<ClosestPoint> find(const std::vector<Point>& queries) const;

@@ -321,8 +321,13 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
 }
 
 ClosestPoint ClosestPointQuery::Impl::find(const Point& q) const {
-  for (double c : q)
+  for (double c : q) {
     if (!std::isfinite(c)) throw EvaluationError("closest points: a query point has a coordinate that is not finite");
+    // Farther out, squared distances overflow and the point would come back as not found.
+    if (std::fabs(c) > limits::kMaxCoordinate)
+      throw EvaluationError("closest points: a query point has the coordinate " + number_text(c) + ", beyond +-" +
+                            number_text(limits::kMaxCoordinate) + " (the limit for control points too)");
+  }
   FaceSearch search(*family, prepared, enclosures, convex, roots, tolerance);
   FaceHit best;
   best.distance = options.max_distance;
@@ -388,9 +393,11 @@ ClosestPoint ClosestPointQuery::Impl::find(const Point& q) const {
 
 ClosestPointQuery::ClosestPointQuery(const Surface& surface, const ClosestPointOptions& options) : impl_(new Impl) {
   if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
-    throw EvaluationError("closest points: the tolerance must be a finite number >= 0");
-  if (!(options.max_distance >= 0)) throw EvaluationError("closest points: the maximum distance must be >= 0");
-  if (options.threads < 0 || options.threads > 256) throw EvaluationError("closest points: threads must be 0..256");
+    throw EvaluationError("closest points: the tolerance must be a finite number >= 0 (got " + number_text(options.tolerance) + ")");
+  if (!(options.max_distance >= 0))
+    throw EvaluationError("closest points: the maximum distance must be >= 0 (got " + number_text(options.max_distance) + ")");
+  if (options.threads < 0 || options.threads > 256)
+    throw EvaluationError("closest points: threads must be 0..256 (got " + std::to_string(options.threads) + ")");
   impl_->topology = surface.shared_topology();
   impl_->family = &impl_->topology->family();
   impl_->options = options;
