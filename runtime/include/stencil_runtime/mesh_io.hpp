@@ -30,7 +30,9 @@ std::string lowercase_extension(const std::string& path);
 // OBJ (text) or binary little-endian PLY, chosen by the extension (.obj/.ply,
 // any case), with per-vertex normals when the soup has them. A soup holds
 // floats: one whose coordinates are all below 1.2e-38 in magnitude (the
-// smallest normal float) has lost digits, and is refused. Writes a
+// smallest normal float) has lost digits, and is refused, as are points or
+// normals that are not finite and polygons naming missing points (MeshError,
+// before anything is written). Writes a
 // temporary file beside `path` and renames it, so a failure leaves nothing
 // behind.
 void write_polygons(const PolygonSoup& soup, const std::string& path);
@@ -39,7 +41,12 @@ void write_polygons(const PolygonSoup& soup, const std::string& path);
 // lines, 1-based, then its OpenSubdiv tag lines: creases, corners, holes, the
 // boundary interpolation, the crease method, smooth triangles), in the mesh's
 // vertex and face order, so that read_obj gives back the same surface; written
-// like write_polygons, so a failure leaves nothing behind.
+// like write_polygons, so a failure leaves nothing behind. What read_obj would
+// refuse is refused first (MeshError naming it): no faces, a face size outside
+// 3..limits::kMaxFaceSize, sizes that do not add up to the index count, an
+// index naming no vertex, a coordinate that is not finite or beyond
+// limits::kMaxCoordinate, a tag naming no vertex, edge or face, or a sharpness
+// that is not a number >= 0.
 void write_obj(const Mesh& mesh, const std::string& path);
 
 }  // namespace stencil_runtime

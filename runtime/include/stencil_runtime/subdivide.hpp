@@ -11,7 +11,8 @@
 
 namespace stencil_runtime {
 
-// Throws MeshError naming the face, edge or vertex for a mesh the scheme cannot refine.
+// Throws MeshError naming the face, edge or vertex for a mesh the scheme cannot
+// refine, or a coordinate that is not finite or beyond limits::kMaxCoordinate.
 Mesh subdivide(const Tables& tables, const Mesh& mesh);
 
 }  // namespace stencil_runtime

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "mesh/coordinates.hpp"
 #include "quad/quad_creases.hpp"
 #include "quad/quad_refinement.hpp"
 #include "triangle/triangle_steps.hpp"
@@ -9,6 +10,8 @@
 namespace stencil_runtime {
 
 Mesh subdivide(const Tables& tables, const Mesh& mesh) {
+  if (const std::string fault = coordinate_fault(mesh.positions.data(), mesh.positions.size()); !fault.empty())
+    throw MeshError("cannot subdivide the mesh: " + fault);
   const Connectivity c{mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices};
   Connectivity next;
   std::vector<RefinementStep> steps;

@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "coordinates.hpp"
 #include "file_output.hpp"
 #include "line_tokens.hpp"
 #include "obj_tags.hpp"
@@ -196,8 +197,12 @@ void write_polygons(const PolygonSoup& soup, const std::string& path) {
     // fewer below: a shape all of whose coordinates are smaller has lost its
     // digits (or become a point) in the soup's floats.
     float largest = 0;
-    for (const auto& p : soup.positions)
-      for (const float x : p) largest = std::max(largest, std::fabs(x));
+    for (std::size_t k = 0; k < soup.positions.size(); ++k)
+      for (const float x : soup.positions[k]) {
+        if (!std::isfinite(x))
+          throw MeshError(path + ": point " + std::to_string(k) + " of the tessellation has the coordinate " + number_text(x));
+        largest = std::max(largest, std::fabs(x));
+      }
     if (largest < std::numeric_limits<float>::min()) {
       char text[32];
       std::snprintf(text, sizeof text, "%.3g", static_cast<double>(largest));
@@ -208,14 +213,64 @@ void write_polygons(const PolygonSoup& soup, const std::string& path) {
   if (!soup.normals.empty() && soup.normals.size() != soup.positions.size())
     throw LoadError(path + ": the tessellation has " + std::to_string(soup.normals.size()) + " normals for " +
                     std::to_string(soup.positions.size()) + " points");
+  for (std::size_t k = 0; k < soup.normals.size(); ++k)
+    for (const float x : soup.normals[k])
+      if (!std::isfinite(x))
+        throw MeshError(path + ": normal " + std::to_string(k) + " of the tessellation has the coordinate " + number_text(x));
+  // Every polygon names points that exist (a soup made in code may not).
+  const std::size_t points = soup.positions.size();
+  auto check_polygon = [&](const auto& polygon, const char* kind, std::size_t k) {
+    for (const int i : polygon)
+      if (i < 0 || static_cast<std::size_t>(i) >= points)
+        throw MeshError(path + ": " + kind + " " + std::to_string(k) + " of the tessellation refers to point " +
+                        std::to_string(i) + ", but it has " + std::to_string(points) + " (numbered from 0)");
+  };
+  for (std::size_t k = 0; k < soup.quads.size(); ++k) check_polygon(soup.quads[k], "quad", k);
+  for (std::size_t k = 0; k < soup.triangles.size(); ++k) check_polygon(soup.triangles[k], "triangle", k);
   write_file_atomically(path, [&](std::FILE* f) {
     if (ext == ".obj") write_obj(soup, f);
     else write_ply(soup, f);
   });
 }
 
+namespace {
+
+// What read_obj would refuse, refused before anything is written (write_obj
+// promises a file that reads back as the same surface, and must not read past
+// a face list that its sizes overrun).
+void check_writable(const Mesh& mesh, const std::string& path) {
+  auto fail = [&](const std::string& what) { throw MeshError(path + ": the mesh cannot be written: " + what); };
+  if (mesh.face_sizes.empty()) fail("it has no faces");
+  if (mesh.positions.size() > limits::kMaxMeshElements || mesh.face_sizes.size() > limits::kMaxMeshElements)
+    fail("it has more than 2^30 vertices or faces");
+  if (const std::string fault = coordinate_fault(mesh.positions.data(), mesh.positions.size()); !fault.empty()) fail(fault);
+  std::size_t offset = 0;
+  for (std::size_t f = 0; f < mesh.face_sizes.size(); ++f) {
+    const int size = mesh.face_sizes[f];
+    if (size < 3 || size > limits::kMaxFaceSize)
+      fail("face " + std::to_string(f) + " has " + std::to_string(size) + " vertices (faces have 3.." +
+           std::to_string(limits::kMaxFaceSize) + ")");
+    if (static_cast<std::size_t>(size) > mesh.face_vertices.size() - offset)
+      fail("the face sizes add up to more than the " + std::to_string(mesh.face_vertices.size()) + " face-vertex indices");
+    for (int c = 0; c < size; ++c) {
+      const int v = mesh.face_vertices[offset + static_cast<std::size_t>(c)];
+      if (v < 0 || static_cast<std::size_t>(v) >= mesh.positions.size())
+        fail("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + ", but the mesh has " +
+             std::to_string(mesh.positions.size()) + " (numbered from 0)");
+    }
+    offset += static_cast<std::size_t>(size);
+  }
+  if (offset != mesh.face_vertices.size())
+    fail("the face sizes add up to " + std::to_string(offset) + " face-vertex indices, but " +
+         std::to_string(mesh.face_vertices.size()) + " are given");
+  detail::check_obj_tags(mesh, [&](long, const std::string& what) { fail(what); });
+}
+
+}  // namespace
+
 void write_obj(const Mesh& mesh, const std::string& path) {
   if (lowercase_extension(path) != ".obj") throw LoadError(path + ": a control mesh is written as .obj");
+  check_writable(mesh, path);
   write_file_atomically(path, [&](std::FILE* f) {
     for (const Point& p : mesh.positions) std::fprintf(f, "v %.17g %.17g %.17g\n", p[0], p[1], p[2]);
     std::size_t offset = 0;

@@ -83,7 +83,7 @@ int index_argument(long long v, const std::string& tag, const TagFail& fail) {
 }
 
 double sharpness_argument(double s, const std::string& tag, const TagFail& fail) {
-  if (s < 0) fail("tag `" + tag + "`: sharpness " + std::to_string(s) + " is negative");
+  if (s < 0) fail("tag `" + tag + "`: sharpness " + number_text(s) + " is negative");
   return s;
 }
 
@@ -143,7 +143,7 @@ void check_obj_tags(const Mesh& mesh, const std::function<void(long, const std::
   const MeshTags& tags = mesh.tags;
   const auto vertices = static_cast<int>(mesh.vertex_count());
   auto vertex_ok = [&](int v, long line, const std::string& what) {
-    if (v >= vertices)
+    if (v < 0 || v >= vertices)
       fail_at(line, what + " refers to vertex " + std::to_string(v) + ", but the mesh has " + std::to_string(vertices) +
                         " (tags number vertices from 0)");
   };
@@ -159,7 +159,11 @@ void check_obj_tags(const Mesh& mesh, const std::function<void(long, const std::
       offset += static_cast<std::size_t>(size);
     }
   }
+  auto sharpness_ok = [&](double s, long line, const std::string& what) {
+    if (!(s >= 0)) fail_at(line, what + ": sharpness " + number_text(s) + " is not a number >= 0");
+  };
   for (const auto& c : tags.creases) {
+    sharpness_ok(c.sharpness, c.line, "tag `crease`");
     vertex_ok(c.a, c.line, "tag `crease`");
     vertex_ok(c.b, c.line, "tag `crease`");
     const auto a = static_cast<std::uint32_t>(c.a), b = static_cast<std::uint32_t>(c.b);
@@ -167,9 +171,12 @@ void check_obj_tags(const Mesh& mesh, const std::function<void(long, const std::
       fail_at(c.line, "tag `crease`: vertices " + std::to_string(c.a) + " and " + std::to_string(c.b) +
                           " are not joined by an edge of the mesh (tags number vertices from 0)");
   }
-  for (const auto& c : tags.corners) vertex_ok(c.vertex, c.line, "tag `corner`");
+  for (const auto& c : tags.corners) {
+    sharpness_ok(c.sharpness, c.line, "tag `corner`");
+    vertex_ok(c.vertex, c.line, "tag `corner`");
+  }
   for (const auto& h : tags.holes)
-    if (h.face >= static_cast<int>(mesh.face_count()))
+    if (h.face < 0 || static_cast<std::size_t>(h.face) >= mesh.face_count())
       fail_at(h.line, "tag `hole` refers to face " + std::to_string(h.face) + ", but the mesh has " +
                           std::to_string(mesh.face_count()) + " (tags number faces from 0)");
 }
