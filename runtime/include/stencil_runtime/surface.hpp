@@ -28,13 +28,20 @@ class Surface {
  public:
   explicit Surface(std::shared_ptr<const SurfaceTopology> topology);
   Surface(std::shared_ptr<const SurfaceTopology> topology, const std::vector<Point>& control);
+  // Copies share the topology. A surface moved from keeps its topology and has
+  // no positions (every request on it then says so) until set_positions.
+  Surface(const Surface&) = default;
+  Surface& operator=(const Surface&) = default;
+  Surface(Surface&& other) noexcept;
+  Surface& operator=(Surface&& other) noexcept;
 
   const SurfaceTopology& topology() const { return *topology_; }
   const std::shared_ptr<const SurfaceTopology>& shared_topology() const { return topology_; }
 
   // New control positions, one per control vertex: applies the refinement
-  // matrix R once. Throws EvaluationError for a wrong count or a coordinate
-  // that is not finite or exceeds limits::kMaxCoordinate (naming the vertex).
+  // matrix R once. Throws EvaluationError for a wrong count, a null `control`
+  // or a coordinate that is not finite or exceeds limits::kMaxCoordinate
+  // (naming the vertex); the positions before stay then.
   void set_positions(const std::vector<Point>& control);
   void set_positions(const Point* control, std::size_t count);
   bool has_positions() const { return has_positions_; }

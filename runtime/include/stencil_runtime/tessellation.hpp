@@ -39,7 +39,9 @@ class TessellationPlan {
   TessellationPlan(TessellationPlan&&) noexcept;
   TessellationPlan& operator=(TessellationPlan&&) noexcept;
 
-  const SurfaceTopology& topology() const { return *topology_; }
+  // A plan moved from holds no plan: every call on it throws EvaluationError
+  // (assigning a plan to it makes it usable again).
+  const SurfaceTopology& topology() const;
   // Per prepared face, as used (stored rates).
   const std::vector<int>& prepared_rates() const;
   // The largest prepared rate before rounding to a stored one (above the
@@ -55,7 +57,7 @@ class TessellationPlan {
   PolygonSoup make_soup() const;
   // The positions of one frame into `positions` (point_count() entries, e.g.
   // make_soup()'s). Throws EvaluationError when the surface has no positions
-  // or another topology.
+  // or another topology, or `positions` is null.
   void evaluate(const Surface& surface, std::array<float, 3>* positions) const;
   // The unit normals at the same points (du x dv, outward for counter-clockwise
   // faces; docs/runtime.md "Derivatives and normals"), e.g. into make_soup()'s
@@ -67,6 +69,7 @@ class TessellationPlan {
 
  private:
   struct Impl;
+  const Impl& planned() const;  // *impl_, or EvaluationError for a plan moved from
   std::shared_ptr<const SurfaceTopology> topology_;
   std::unique_ptr<Impl> impl_;
 };

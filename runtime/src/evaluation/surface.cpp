@@ -4,10 +4,12 @@
 #include <cmath>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "exact_stencil.hpp"
 #include "family/family.hpp"
 #include "family/stencil_sum.hpp"
+#include "mesh/coordinates.hpp"
 #include "stencil_runtime/limits.hpp"
 
 namespace stencil_runtime {
@@ -21,17 +23,31 @@ Surface::Surface(std::shared_ptr<const SurfaceTopology> topology, const std::vec
   set_positions(control);
 }
 
+// The topology is shared, not moved: a surface moved from stays usable, without positions.
+Surface::Surface(Surface&& other) noexcept
+    : topology_(other.topology_), prepared_(std::move(other.prepared_)), levels_(std::move(other.levels_)),
+      has_positions_(std::exchange(other.has_positions_, false)), rounding_(other.rounding_) {}
+
+Surface& Surface::operator=(Surface&& other) noexcept {
+  if (this != &other) {
+    topology_ = other.topology_;
+    prepared_ = std::move(other.prepared_);
+    levels_ = std::move(other.levels_);
+    has_positions_ = std::exchange(other.has_positions_, false);
+    rounding_ = other.rounding_;
+    other.prepared_.clear();
+  }
+  return *this;
+}
+
 void Surface::set_positions(const std::vector<Point>& control) { set_positions(control.data(), control.size()); }
 
 void Surface::set_positions(const Point* control, std::size_t count) {
+  if (!control) throw EvaluationError("set_positions: the control positions are a null pointer");
   if (count != topology_->vertex_count())
     throw EvaluationError(std::to_string(count) + " control positions for a mesh of " +
                           std::to_string(topology_->vertex_count()) + " vertices");
-  for (std::size_t v = 0; v < count; ++v)
-    for (double x : control[v])
-      if (!std::isfinite(x) || std::fabs(x) > limits::kMaxCoordinate)
-        throw EvaluationError("vertex " + std::to_string(v) + " (numbered from 0) has the coordinate " + std::to_string(x) +
-                              "; coordinates must be finite and at most 1e37 in magnitude");
+  if (const std::string fault = coordinate_fault(control, count); !fault.empty()) throw EvaluationError(fault);
   topology_->family().refinement().apply(control, levels_, prepared_);
   rounding_ = 0;
   if (topology_->tables().single_precision())
@@ -65,7 +81,7 @@ namespace {
 void check_request(const Surface& s, double tolerance) {
   if (!s.has_positions()) throw EvaluationError("the surface has no control positions yet (set_positions)");
   if (!(tolerance >= 0) || !std::isfinite(tolerance))
-    throw EvaluationError("the tolerance must be a finite number >= 0, got " + std::to_string(tolerance));
+    throw EvaluationError("the tolerance must be a finite number >= 0, got " + number_text(tolerance));
 }
 
 // `rounding`: what single-precision tables' weights add to the bound (0 for doubles).

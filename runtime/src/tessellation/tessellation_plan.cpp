@@ -44,16 +44,27 @@ TessellationPlan::~TessellationPlan() = default;
 TessellationPlan::TessellationPlan(TessellationPlan&&) noexcept = default;
 TessellationPlan& TessellationPlan::operator=(TessellationPlan&&) noexcept = default;
 
-const std::vector<int>& TessellationPlan::prepared_rates() const { return impl_->layout.rates; }
-int TessellationPlan::largest_wanted_rate() const { return impl_->largest_wanted; }
-std::size_t TessellationPlan::point_count() const { return impl_->layout.point_offsets.back() + impl_->layout.rim.size(); }
-const std::vector<std::array<int, 4>>& TessellationPlan::quads() const { return impl_->layout.quads; }
-const std::vector<std::array<int, 3>>& TessellationPlan::triangles() const { return impl_->layout.triangles; }
+const TessellationPlan::Impl& TessellationPlan::planned() const {
+  if (!impl_) throw EvaluationError("the tessellation plan was moved from: it holds no plan");
+  return *impl_;
+}
+
+const SurfaceTopology& TessellationPlan::topology() const {
+  planned();
+  return *topology_;
+}
+const std::vector<int>& TessellationPlan::prepared_rates() const { return planned().layout.rates; }
+int TessellationPlan::largest_wanted_rate() const { return planned().largest_wanted; }
+std::size_t TessellationPlan::point_count() const { return planned().layout.point_offsets.back() + impl_->layout.rim.size(); }
+const std::vector<std::array<int, 4>>& TessellationPlan::quads() const { return planned().layout.quads; }
+const std::vector<std::array<int, 3>>& TessellationPlan::triangles() const { return planned().layout.triangles; }
 
 namespace {
 
-// The prepared positions of a surface of this plan's topology, checked.
-const Point* prepared_of(const Surface& surface, const SurfaceTopology* planned) {
+// The prepared positions of a surface of this plan's topology, checked, and
+// the output array (`what`: "positions" or "normals") not null.
+const Point* prepared_of(const Surface& surface, const SurfaceTopology* planned, const void* out, const char* what) {
+  if (!out) throw EvaluationError(std::string("the tessellation's ") + what + " are to go to a null pointer");
   if (&surface.topology() != planned)
     throw EvaluationError("the surface has another topology than the one this tessellation was planned for");
   if (!surface.has_positions()) throw EvaluationError("the surface has no control positions yet (set_positions)");
@@ -103,9 +114,9 @@ void rim_normals(const Family& family, const TessellationLayout& layout, const d
 }  // namespace
 
 void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* positions) const {
-  const Point* prepared = prepared_of(surface, topology_.get());
+  const TessellationLayout& layout = planned().layout;
+  const Point* prepared = prepared_of(surface, topology_.get(), positions, "positions");
   const Family& family = topology_->family();
-  const TessellationLayout& layout = impl_->layout;
   (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
     family.points(layout, begin, end, prepared, positions);
   });
@@ -113,9 +124,9 @@ void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* po
 }
 
 void TessellationPlan::evaluate_normals(const Surface& surface, std::array<float, 3>* normals) const {
-  const Point* prepared = prepared_of(surface, topology_.get());
+  const TessellationLayout& layout = planned().layout;
+  const Point* prepared = prepared_of(surface, topology_.get(), normals, "normals");
   const Family& family = topology_->family();
-  const TessellationLayout& layout = impl_->layout;
   (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
     family.normals(layout, begin, end, prepared, normals);
   });
@@ -125,9 +136,9 @@ void TessellationPlan::evaluate_normals(const Surface& surface, std::array<float
 void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* positions,
                                 std::array<float, 3>* normals) const {
   if (!normals) return evaluate(surface, positions);
-  const Point* prepared = prepared_of(surface, topology_.get());
+  const TessellationLayout& layout = planned().layout;
+  const Point* prepared = prepared_of(surface, topology_.get(), positions, "positions");
   const Family& family = topology_->family();
-  const TessellationLayout& layout = impl_->layout;
   (*impl_->run)(layout.rates.size(), [&](std::size_t begin, std::size_t end) {
     family.points_and_normals(layout, begin, end, prepared, positions, normals);
   });
@@ -137,7 +148,7 @@ void TessellationPlan::evaluate(const Surface& surface, std::array<float, 3>* po
 
 PolygonSoup TessellationPlan::make_soup() const {
   PolygonSoup soup;
-  soup.quads = impl_->layout.quads;
+  soup.quads = planned().layout.quads;
   soup.triangles = impl_->layout.triangles;
   soup.positions.resize(point_count());
   return soup;
