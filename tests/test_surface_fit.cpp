@@ -332,6 +332,55 @@ TEST_CASE("Fitting refuses bad inputs with clear errors", "[fitting]") {
   CHECK_THROWS_WITH(parse_fit_method("pdx"), Catch::Contains("'pdx'"));
   // Too few points for the control points, and no smoothing: a singular system, said so.
   CHECK_THROWS_WITH(fit_at_samples(*topology, {{0, 0.5, 0.5}}, {{0, 0, 0}}, 0), Catch::Contains("singular"));
+  // Smoothing so large that its term alone decides (it used to end in "singular ... add smoothing"),
+  // and a decay that would make it grow, are refused as such, naming the value.
+  options.smoothing = 1e300;
+  CHECK_THROWS_WITH(fit_surface(topology, sphere.positions, points, options), Catch::Contains("from 0 to 1000 (got 1e300"));
+  CHECK_THROWS_WITH(fit_at_samples(*topology, {{0, 0.5, 0.5}}, {{0, 0, 0}}, 1e300), Catch::Contains("from 0 to 1000"));
+  options.smoothing = 1e-3;
+  options.smoothing_decay = 2;
+  CHECK_THROWS_WITH(fit_surface(topology, sphere.positions, points, options), Catch::Contains("factors from 0 to 1 (got 2)"));
+  options.smoothing_decay = 0.5;
+  options.method = static_cast<FitMethod>(9);  // used to fit as tdm
+  CHECK_THROWS_WITH(fit_surface(topology, sphere.positions, points, options), Catch::Contains("unknown fit method 9"));
+  options.method = FitMethod::SquaredDistance;
+  // What the layers below refuse reaches the caller as the fit's error (one type per layer), saying what it was.
+  try {
+    fit_surface(topology, std::vector<Point>(sphere.positions.size(), Point{0, 0, 0}), points, options);
+    FAIL("a control mesh collapsed to a point was fitted");
+  } catch (const FitError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("the initial control mesh"));
+  }
+  try {
+    fit_at_samples(*topology, {{topology->face_count(), 0.5, 0.5}}, {{0, 0, 0}}, 1);
+    FAIL("a sample on a face that does not exist was fitted");
+  } catch (const FitError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("a sample: face " + std::to_string(topology->face_count())));
+  }
+}
+
+TEST_CASE("A fit step that would throw control points beyond the coordinate limit is damped, not an error",
+          "[fitting]") {
+  // Points near the largest coordinates: an undamped first step overshoots
+  // past 1e37 (it used to end the fit with set_positions' error about a
+  // coordinate the caller never gave).
+  const auto tables = Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string());
+  Mesh sphere = quad_sphere(2);
+  const auto topology = test_runtime::topology_of(tables, sphere);
+  const double scale = 4e36;
+  for (Point& p : sphere.positions)
+    for (double& x : p) x *= scale;
+  std::vector<Point> points = ellipsoid_points(300, 0, 1);
+  for (Point& p : points)
+    for (double& x : p) x *= 2.4 * scale;
+  FitOptions options;
+  options.method = FitMethod::PointDistance;
+  options.smoothing = 0;
+  options.iterations = 5;
+  const FitResult fit = fit_surface(topology, sphere.positions, points, options);
+  CHECK(fit.history.back().rms <= fit.history.front().rms);
+  for (const Point& p : fit.control)
+    for (double x : p) CHECK(std::fabs(x) <= 1e37);
 }
 
 namespace {
@@ -520,6 +569,14 @@ TEST_CASE("Red-green refinement: closed, oriented, the same polyhedron, no T-ver
   CHECK_THROWS_WITH(refine_red_green(read_obj((kMeshes / "cube.obj").string()), std::vector<bool>(6, true), 8),
                     Catch::Contains("splits triangles"));
   CHECK_THROWS_WITH(refine_red_green(ico, {true}, 8), Catch::Contains("1 marks"));
+  // Indices and the valence cap are checked before use (an index past the vertices was written through).
+  Mesh broken = ico;
+  broken.face_vertices[7] = static_cast<int>(ico.vertex_count());
+  CHECK_THROWS_WITH(refine_red_green(broken, std::vector<bool>(ico.face_count(), true), 8),
+                    Catch::Contains("face 2 refers to vertex 12, but the mesh has 12"));
+  broken = ico, broken.face_vertices.pop_back();
+  CHECK_THROWS_WITH(refine_red_green(broken, std::vector<bool>(ico.face_count(), true), 8), Catch::Contains("59 face-vertex indices"));
+  CHECK_THROWS_WITH(refine_red_green(ico, std::vector<bool>(ico.face_count(), true), 0), Catch::Contains("3..64 (got 0)"));
 }
 
 TEST_CASE("Adaptive fitting refines where the error is large, within the budget, and beats the unrefined fit",

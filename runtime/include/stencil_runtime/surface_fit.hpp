@@ -51,7 +51,9 @@ struct FitOptions {
   int iterations = 20;  // at most
   // lambda of the first iteration (seed 003's schedule: 1e-3, reduced as the
   // fit proceeds); each iteration multiplies it by smoothing_decay, down to
-  // smoothing * smoothing_floor. 0: no smoothing term.
+  // smoothing * smoothing_floor. 0: no smoothing term. smoothing is at most
+  // 1000 (above, the smoothing term alone would decide the fit), the decay
+  // and the floor are factors in 0..1.
   double smoothing = 1e-3;
   double smoothing_decay = 0.5;
   double smoothing_floor = 0.01;
@@ -78,8 +80,12 @@ struct FitResult {
 
 // The fit from `initial` control positions on `topology` (any scheme: a
 // triangle scheme needs a triangle control mesh). Throws FitError
-// for no points, a point or option that is not finite, or a control count
-// other than the topology's.
+// for no points, a point or initial position that is not finite or beyond
+// limits::kMaxCoordinate, an option outside its range (FitOptions), a control
+// count other than the topology's, or a control mesh the closest-point query
+// refuses (e.g. collapsed to a point). A step that would throw control points
+// beyond the coordinate limit is rejected and damped, like one that raises
+// the objective.
 FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std::vector<Point>& initial,
                       const std::vector<Point>& points, const FitOptions& options);
 
@@ -90,8 +96,9 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
 // where a green bisection would raise a vertex's valence above max_valence
 // the triangle splits red instead.
 // New vertices sit at their edges' midpoints and follow the old ones; the
-// orientation is kept. Throws FitError for a face that is not a triangle or a
-// mark count other than the face count.
+// orientation is kept. Throws FitError for a face that is not a triangle, an
+// index naming no vertex, a mark count other than the face count, or a
+// max_valence outside 3..limits::kMaxValence.
 Mesh refine_red_green(const Mesh& mesh, const std::vector<bool>& marked, int max_valence);
 
 // Adaptive fitting (seeds 002, 003): fit_surface on `mesh` (a triangle mesh),
@@ -118,6 +125,9 @@ AdaptiveFit fit_adaptively(const std::shared_ptr<const Tables>& tables, const Me
 // the control positions minimising (1/m) sum |S(sample_k) - points_k|^2 +
 // (smoothing / n) sum |P_i - mean of neighbours|^2. With smoothing 0 and
 // enough samples this recovers control points whose surface the samples lie on.
+// Throws FitError for no samples, a count other than the points', a point
+// that is not finite or beyond limits::kMaxCoordinate, a sample off the
+// surface (naming it), or smoothing outside 0..1000.
 std::vector<Point> fit_at_samples(const SurfaceTopology& topology, const std::vector<RealSample>& samples,
                                   const std::vector<Point>& points, double smoothing);
 

@@ -4,6 +4,8 @@
 #include <string>
 #include <utility>
 
+#include "stencil_runtime/limits.hpp"
+
 namespace stencil_runtime {
 
 namespace {
@@ -21,6 +23,16 @@ Mesh refine_red_green(const Mesh& mesh, const std::vector<bool>& marked, int max
     if (mesh.face_sizes[f] != 3)
       throw FitError("red-green refinement splits triangles: face " + std::to_string(f) + " has " +
                      std::to_string(mesh.face_sizes[f]) + " corners");
+  if (mesh.face_vertices.size() != 3 * faces)
+    throw FitError(std::to_string(mesh.face_vertices.size()) + " face-vertex indices for " + std::to_string(faces) +
+                   " triangles");
+  for (std::size_t h = 0; h < mesh.face_vertices.size(); ++h)
+    if (mesh.face_vertices[h] < 0 || static_cast<std::size_t>(mesh.face_vertices[h]) >= mesh.vertex_count())
+      throw FitError("face " + std::to_string(h / 3) + " refers to vertex " + std::to_string(mesh.face_vertices[h]) +
+                     ", but the mesh has " + std::to_string(mesh.vertex_count()) + " (numbered from 0)");
+  if (max_valence < 3 || max_valence > limits::kMaxValence)
+    throw FitError("the largest valence must be 3.." + std::to_string(limits::kMaxValence) + " (got " +
+                   std::to_string(max_valence) + ")");
   const auto corner = [&](std::size_t f, int c) { return mesh.face_vertices[3 * f + static_cast<std::size_t>(c)]; };
   std::vector<int> valence(mesh.vertex_count(), 0);
   for (const int v : mesh.face_vertices) ++valence[static_cast<std::size_t>(v)];

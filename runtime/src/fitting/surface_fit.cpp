@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "fitting/control_laplacian.hpp"
 #include "fitting/error_model.hpp"
 #include "fitting/foot_frame.hpp"
 #include "fitting/normal_equations.hpp"
+#include "mesh/coordinates.hpp"
 #include "stencil_runtime/closest_point.hpp"
 #include "stencil_runtime/limits.hpp"
 #include "stencil_runtime/surface.hpp"
@@ -43,8 +45,9 @@ void check_points(const std::vector<Point>& points, const char* what) {
   for (std::size_t i = 0; i < points.size(); ++i)
     for (const double x : points[i])
       if (!std::isfinite(x) || std::abs(x) > limits::kMaxCoordinate)
-        throw FitError(std::string(what) + " " + std::to_string(i) + " has a coordinate that is not finite or exceeds " +
-                       std::to_string(limits::kMaxCoordinate));
+        throw FitError(std::string(what) + " " + std::to_string(i) + " (numbered from 0) has the coordinate " +
+                       number_text(x) + "; coordinates must be finite and at most " + number_text(limits::kMaxCoordinate) +
+                       " in magnitude");
 }
 
 double diagonal_of(const std::vector<Point>& points) {
@@ -96,6 +99,14 @@ Feet feet_of(const ClosestPointQuery& query, const std::vector<Point>& points) {
   return out;
 }
 
+// Far above the points' weight, the smoothing term alone (whose null space
+// holds every translation) would decide the fit, and its system is singular.
+void check_smoothing(double smoothing) {
+  if (!(smoothing >= 0) || !(smoothing <= 1000))
+    throw FitError("the smoothing weight must be a number from 0 to 1000 (got " + number_text(smoothing) +
+                   "; a weight relative to the points': above it the smoothing term alone would decide the fit)");
+}
+
 // A control vertex in no face has no part in the surface: no fit can place it
 // (the runtime evaluates such meshes, ignoring it, as OpenSubdiv does).
 void check_every_vertex_used(const SurfaceTopology& topology) {
@@ -114,10 +125,15 @@ std::vector<Point> fit_at_samples(const SurfaceTopology& topology, const std::ve
   if (samples.empty()) throw FitError("no samples to fit");
   if (samples.size() != points.size())
     throw FitError(std::to_string(samples.size()) + " samples for " + std::to_string(points.size()) + " points");
-  if (!(smoothing >= 0) || !std::isfinite(smoothing)) throw FitError("the smoothing weight must be finite and >= 0");
+  check_smoothing(smoothing);
   check_points(points, "point");
   check_every_vertex_used(topology);
-  const StencilRows rows = topology.stencils(samples);
+  StencilRows rows;
+  try {
+    rows = topology.stencils(samples);
+  } catch (const EvaluationError& e) {  // a sample off the surface: the fit's input, said as the fit's error
+    throw FitError(std::string("a sample: ") + e.what());
+  }
   const auto laplacian =
       fitting::control_laplacian(topology.vertex_count(), topology.face_sizes(), topology.face_vertices());
   NormalEquations equations(rows, {}, 1.0 / static_cast<double>(points.size()), points, laplacian,
@@ -136,11 +152,21 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
   check_points(points, "point");
   check_points(initial, "control vertex");
   check_every_vertex_used(*topology);
-  if (options.iterations < 0 || options.iterations > 100000) throw FitError("iterations must be 0..100000");
-  for (const double x : {options.smoothing, options.smoothing_decay, options.smoothing_floor, options.max_error})
-    if (!(x >= 0) || !std::isfinite(x)) throw FitError("smoothing, its decay and floor, and max_error must be finite and >= 0");
-  if (!(options.tolerance > 0) || !std::isfinite(options.tolerance)) throw FitError("the tolerance must be positive");
-  if (options.threads < 0 || options.threads > 256) throw FitError("threads must be 0 (all cores) to 256");
+  if (options.method != FitMethod::PointDistance && options.method != FitMethod::TangentDistance &&
+      options.method != FitMethod::SquaredDistance)
+    throw FitError("unknown fit method " + std::to_string(static_cast<int>(options.method)) + " (FitMethod has pdm, tdm, sdm)");
+  if (options.iterations < 0 || options.iterations > 100000)
+    throw FitError("iterations must be 0..100000 (got " + std::to_string(options.iterations) + ")");
+  check_smoothing(options.smoothing);
+  for (const double x : {options.smoothing_decay, options.smoothing_floor})
+    if (!(x >= 0) || !(x <= 1))
+      throw FitError("the smoothing's decay and floor are factors from 0 to 1 (got " + number_text(x) + ")");
+  if (!(options.max_error >= 0) || !std::isfinite(options.max_error))
+    throw FitError("max_error must be finite and >= 0 (got " + number_text(options.max_error) + ")");
+  if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
+    throw FitError("the tolerance must be positive and finite (got " + number_text(options.tolerance) + ")");
+  if (options.threads < 0 || options.threads > 256)
+    throw FitError("threads must be 0 (all cores) to 256 (got " + std::to_string(options.threads) + ")");
 
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -151,11 +177,17 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
   const auto laplacian =
       fitting::control_laplacian(topology->vertex_count(), topology->face_sizes(), topology->face_vertices());
 
-  Surface surface(topology, initial);
+  Surface surface(topology, initial);  // the positions are checked above
   ClosestPointOptions query_options;
   query_options.tolerance = options.tolerance * result.diagonal;
   query_options.threads = options.threads;
-  ClosestPointQuery query(surface, query_options);
+  std::optional<ClosestPointQuery> searched;
+  try {
+    searched.emplace(surface, query_options);
+  } catch (const EvaluationError& e) {  // e.g. a control mesh collapsed to a point
+    throw FitError(std::string("the initial control mesh: ") + e.what());
+  }
+  ClosestPointQuery& query = *searched;
   // Catmull-Clark's and Loop's regular patches are polynomial: exact second
   // derivatives and exact rows everywhere.
   const bool exact_second = fitting::has_second_derivatives(surface);
@@ -218,14 +250,18 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
     bool accepted = false;
     for (; rejected < 12; ++rejected) {
       std::vector<Point> trial = equations.solve(mu / n, control, factors);
-      surface.set_positions(trial);
-      query.update(surface);
-      Feet next = feet_of(query, points);
-      if (next.mean_square + lambda / n * smoothing_energy(laplacian, trial) <= objective) {
-        control = std::move(trial);
-        current = std::move(next);
-        accepted = true;
-        break;
+      // A step that throws control points beyond the coordinate limit (or to
+      // NaN) is rejected like one that raises the objective: damped further.
+      if (coordinate_fault(trial.data(), trial.size()).empty()) {
+        surface.set_positions(trial);
+        query.update(surface);
+        Feet next = feet_of(query, points);
+        if (next.mean_square + lambda / n * smoothing_energy(laplacian, trial) <= objective) {
+          control = std::move(trial);
+          current = std::move(next);
+          accepted = true;
+          break;
+        }
       }
       mu = mu > 0 ? 8 * mu : 1e-6;
     }
