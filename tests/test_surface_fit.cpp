@@ -344,6 +344,11 @@ TEST_CASE("Fitting refuses bad inputs with clear errors", "[fitting]") {
   options.method = static_cast<FitMethod>(9);  // used to fit as tdm
   CHECK_THROWS_WITH(fit_surface(topology, sphere.positions, points, options), Catch::Contains("unknown fit method 9"));
   options.method = FitMethod::SquaredDistance;
+  {
+    FitOptions adaptive = options;
+    adaptive.max_error = 0.01;
+    CHECK_THROWS_WITH(fit_adaptively(nullptr, sphere, points, adaptive, 1000), Catch::Contains("needs tables"));
+  }
   // What the layers below refuse reaches the caller as the fit's error (one type per layer), saying what it was.
   try {
     fit_surface(topology, std::vector<Point>(sphere.positions.size(), Point{0, 0, 0}), points, options);

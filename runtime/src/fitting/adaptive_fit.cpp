@@ -9,6 +9,7 @@ namespace stencil_runtime {
 AdaptiveFit fit_adaptively(const std::shared_ptr<const Tables>& tables, const Mesh& mesh,
                            const std::vector<Point>& points, const FitOptions& options,
                            std::size_t max_control_points) {
+  if (!tables) throw FitError("adaptive refinement needs tables (a null pointer was given)");
   if (!(options.max_error > 0)) throw FitError("adaptive refinement needs a max error above 0 (the split threshold)");
   if (max_control_points < mesh.vertex_count())
     throw FitError("the control-point budget " + std::to_string(max_control_points) + " is below the control mesh's " +
