@@ -4,6 +4,7 @@
 // denominator, a decimal is finite. (The range [0, 1] is the face domain's to
 // check, not the parser's.)
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 
 #include "fuzz_support.hpp"
@@ -23,7 +24,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!std::isfinite(p.value)) fuzz::finding("parse_parameter(\"" + text + "\") gave a value that is not finite");
     if (!p.exact) return;
     const stencil_runtime::Fraction& f = p.fraction;
-    if (f.den <= 0 || std::gcd(f.num, f.den) != 1)
+    // The numerator may be -2^63, whose negation std::gcd would need: compare magnitudes as unsigned.
+    const std::uint64_t magnitude = f.num < 0 ? 0 - static_cast<std::uint64_t>(f.num) : static_cast<std::uint64_t>(f.num);
+    if (f.den <= 0 || std::gcd(magnitude, static_cast<std::uint64_t>(f.den)) != 1)
       fuzz::finding("parse_parameter(\"" + text + "\") gave " + std::to_string(f.num) + "/" + std::to_string(f.den) +
                     ", not a reduced fraction with a positive denominator");
   });
