@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <set>
 #include <tuple>
@@ -49,6 +50,26 @@ void read_children(detail::BinaryReader& r, std::size_t left, int dilation, std:
     }
     c.rows.offsets.push_back(entries);
     out.push_back(std::move(c));
+  }
+}
+
+// Stencil pairs (du, dv) of `points` entries each, without the entries where
+// both are zero: per stencil s, entries [start[s], start[s + 1]) of column and
+// of uv's pairs.
+void drop_common_zeros(const std::vector<double>& du, const std::vector<double>& dv, std::size_t points,
+                       std::vector<std::uint32_t>& start, std::vector<std::uint32_t>& column, std::vector<double>& uv) {
+  const std::size_t stencils = points == 0 ? 0 : du.size() / points;
+  start.assign(1, 0);
+  column.clear(), uv.clear();
+  for (std::size_t s = 0; s < stencils; ++s) {
+    for (std::size_t h = 0; h < points; ++h) {
+      const double a = du[s * points + h], b = dv[s * points + h];
+      if (a == 0 && b == 0) continue;
+      column.push_back(static_cast<std::uint32_t>(h));
+      uv.push_back(a), uv.push_back(b);
+    }
+    if (column.size() > UINT32_MAX) throw LoadError("regular derivative stencils beyond 2^32 entries");
+    start.push_back(static_cast<std::uint32_t>(column.size()));
   }
 }
 
@@ -341,6 +362,11 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
   const Valence* regular = t.find(6);
   if (!regular) r.fail("holds no valence 6 (the regular patch)");
   if (regular->neighbour != neighbour_regular) r.fail("inconsistent regular vertex rule");
+  {
+    Region& region = t.valences_[static_cast<std::size_t>(regular - t.valences_.data())].regions[0];
+    if (!region.du.empty())
+      drop_common_zeros(region.du, region.dv, region.layout.size(), region.sparse_start, region.sparse_column, region.sparse_uv);
+  }
   for (std::size_t k = 0; k < t.rates_.size(); ++k) {
     const auto n = static_cast<std::size_t>(t.rates_[k]);
     if (t.slot_of_rate_.size() <= n) t.slot_of_rate_.resize(n + 1, -1);
@@ -498,16 +524,18 @@ TriangleTables::Grid TriangleTables::grid(int valence, int n, int region) const 
   g.index_ = v.index[static_cast<std::size_t>(slot)].data();
   g.n_ = n;
   if (!v.du.empty()) g.du_ = v.du.data(), g.dv_ = v.dv.data();
+  if (!v.sparse_start.empty())
+    g.sparse_start_ = v.sparse_start.data(), g.sparse_column_ = v.sparse_column.data(), g.sparse_uv_ = v.sparse_uv.data();
   return g;
 }
 
-std::size_t TriangleTables::Grid::offset(GridPoint kind, long i, long j) const {
+std::size_t TriangleTables::Grid::stencil(GridPoint kind, long i, long j) const {
   // Row j of each kind holds (n + 1 - kind) - j points; rows are j-major.
   const long k = static_cast<long>(kind), side = n_ + 1 - k;  // points in row 0
   if (i < 0 || j < 0 || i + j >= side) throw EvaluationError("grid index outside the patch triangle");
   const std::size_t before = kind == GridPoint::Node ? 0 : kind == GridPoint::Up ? nodes_of(n_) : nodes_of(n_) + ups_of(n_);
   const std::size_t row = static_cast<std::size_t>(j * side - j * (j - 1) / 2);
-  return static_cast<std::size_t>(index_[before + row + static_cast<std::size_t>(i)]) * points_;
+  return static_cast<std::size_t>(index_[before + row + static_cast<std::size_t>(i)]);
 }
 
 const double* TriangleTables::Grid::weights(GridPoint kind, long i, long j) const { return weights_ + offset(kind, i, j); }
@@ -516,6 +544,15 @@ bool TriangleTables::Grid::derivative_weights(GridPoint kind, long i, long j, co
   if (!du_) return false;
   const std::size_t at = offset(kind, i, j);
   du = du_ + at, dv = dv_ + at;
+  return true;
+}
+
+bool TriangleTables::Grid::sparse_derivatives(GridPoint kind, long i, long j, SparseDerivatives& out) const {
+  if (!sparse_start_) return false;
+  const std::size_t s = stencil(kind, i, j), begin = sparse_start_[s];
+  out.column = sparse_column_ + begin;
+  out.uv = sparse_uv_ + 2 * begin;
+  out.count = sparse_start_[s + 1] - begin;
   return true;
 }
 

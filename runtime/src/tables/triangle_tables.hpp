@@ -148,13 +148,27 @@ class TriangleTables {
     // the regular patch: stored (sqrt(3), version 6) or made at load from the
     // regular polynomial (Loop); false for the other patches and older files.
     bool derivative_weights(GridPoint kind, long i, long j, const double*& du, const double*& dv) const;
+    // The same stencils' entries that are not both zero (sqrt(3)'s regular
+    // basis reaches 2.5 rings, so about a third of a point's 27 are): point
+    // column[k] has the weights uv[2k] (du) and uv[2k + 1] (dv), k < count.
+    // What the tessellation's normals sum; false where derivative_weights is.
+    struct SparseDerivatives {
+      const std::uint32_t* column = nullptr;
+      const double* uv = nullptr;
+      std::size_t count = 0;
+    };
+    bool sparse_derivatives(GridPoint kind, long i, long j, SparseDerivatives& out) const;
 
    private:
     friend class TriangleTables;
-    std::size_t offset(GridPoint kind, long i, long j) const;
+    std::size_t stencil(GridPoint kind, long i, long j) const;  // its index among the region's stencils
+    std::size_t offset(GridPoint kind, long i, long j) const { return stencil(kind, i, j) * points_; }
     const double* weights_ = nullptr;
     const double* du_ = nullptr;
     const double* dv_ = nullptr;
+    const std::uint32_t* sparse_start_ = nullptr;
+    const std::uint32_t* sparse_column_ = nullptr;
+    const double* sparse_uv_ = nullptr;
     std::size_t points_ = 0;
     const std::uint32_t* index_ = nullptr;
     long n_ = 1;
@@ -167,6 +181,11 @@ class TriangleTables {
     std::vector<ChartPoint> layout;
     std::vector<double> weights;                // stencil_count * layout.size()
     std::vector<double> du, dv;                 // the same for the derivatives (the regular patch), or empty
+    // du and dv without their common zeros (Grid::sparse_derivatives): per
+    // stencil s, entries [sparse_start[s], sparse_start[s + 1]).
+    std::vector<std::uint32_t> sparse_start;
+    std::vector<std::uint32_t> sparse_column;
+    std::vector<double> sparse_uv;
     std::vector<std::vector<std::uint32_t>> index;  // per rate slot: nodes, ups, downs
     std::vector<TriangleChild> children;
   };

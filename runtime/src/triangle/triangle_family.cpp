@@ -322,6 +322,7 @@ TriangleFamily::TriangleFamily(std::shared_ptr<const Tables> tables, Prepared pr
       topology_(prepared.mesh, prepared.boundary),
       patches_(std::move(prepared.patches)) {
   if (tables_.has_descent()) descent_.emplace(tables_);
+  if (tables_.polynomial_degree() > 0) derivative_rows_.emplace(tables_.polynomial_degree(), tables_.polynomial(), tables_.layout(6).size());
   refinement_ = std::move(prepared.refinement);
   hierarchy_ = std::move(prepared.hierarchy);
   prepared_ = std::move(prepared.mesh);

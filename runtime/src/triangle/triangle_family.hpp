@@ -18,6 +18,7 @@
 #include "stencil_runtime/tables.hpp"
 #include "tables/triangle_tables.hpp"
 #include "chart_patch.hpp"
+#include "face_derivative_rows.hpp"
 #include "triangle_descent.hpp"
 
 namespace stencil_runtime {
@@ -135,6 +136,7 @@ class TriangleFamily final : public Family {
   TriangleTopology topology_;
   std::vector<TrianglePatch> patches_;
   std::optional<TrianglePatchDescent> descent_;  // when the tables hold the patch subdivision
+  std::optional<FaceDerivativeRows> derivative_rows_;  // where the regular basis is polynomial (Loop): tessellation normals
   mutable std::once_flag affine_once_;
   mutable std::unique_ptr<const AffineParameters> affine_;  // of the regular kind, where the scheme reproduces affine functions
   mutable std::once_flag polynomial_once_;

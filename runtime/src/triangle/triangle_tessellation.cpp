@@ -13,6 +13,12 @@ namespace stencil_runtime {
 
 namespace {
 
+// From this rate up, a polynomial regular patch's normals are evaluated row by
+// row (face_derivative_rows.hpp): its per-face and per-row set-up costs about
+// as much as the derivative stencils' sums at rate 5 (Loop: 720 + 120 n
+// multiply-adds against 72 n^2, less the rows' 18 n^2).
+constexpr long kRowNormalRate = 6;
+
 // The row of centres along a face's edge k (corner k -> k+1) at rate n, in the
 // edge's direction: U(t), t = 0..n-1, the up centres of the small triangles
 // on the edge, and D(t), t = 0..n-2, the down centre between U(t) and U(t+1)
@@ -107,7 +113,7 @@ template <bool kPositions, bool kNormals>
 void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
                              std::array<float, 3>* positions, std::array<float, 3>* normals) const {
   const TrianglePatchDescent* descent = kNormals ? &checked_descent() : nullptr;
-  thread_local std::vector<Point> local, consumed;
+  thread_local std::vector<Point> local, consumed, row_ds, row_dt;
   for (std::size_t f = begin; f != end; ++f) {
     if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
     const TrianglePatch& p = patches_[f];
@@ -124,31 +130,57 @@ void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin
       const Point u = unit_cross(du, dv);
       *normal++ = {static_cast<float>(u[0]), static_cast<float>(u[1]), static_cast<float>(u[2])};
     };
+    auto put_position = [&](const double* w) {
+      double x = 0, y = 0, z = 0;
+      for (std::size_t h = 0; h < m; ++h) x += w[h] * local[h][0], y += w[h] * local[h][1], z += w[h] * local[h][2];
+      *position++ = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+    };
+    auto position_weights = [&](long a, long b) {
+      long pa = 0, pb = 0;
+      p.to_patch(a, b, 3 * n, pa, pb);
+      return grid.weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3);
+    };
+    if (kNormals && derivative_rows_ && p.valence == 6 && p.region == 0 && n >= kRowNormalRate) {
+      // A polynomial regular patch (Loop): normals row by row (face_derivative_rows.hpp).
+      FaceDerivativeRows::Face face(*derivative_rows_, p.rotation, local.data());
+      const double scale = 1.0 / (3.0 * static_cast<double>(n));
+      auto row = [&](long a0, long b, long count) {  // samples (a0 + 3i, b), i < count, in thirds of 1/n
+        if (kPositions)
+          for (long i = 0, a = a0; i < count; ++i, a += 3) put_position(position_weights(a, b));
+        // The derivatives of the whole row, then their normals: short loops whose
+        // samples are independent, so that the processor overlaps their chains
+        // of dependent operations (Horner steps, the square root).
+        face.start_row(static_cast<double>(b) * scale);
+        row_ds.resize(static_cast<std::size_t>(count)), row_dt.resize(static_cast<std::size_t>(count));
+        for (long i = 0, a = a0; i < count; ++i, a += 3)
+          face.at(static_cast<double>(a) * scale, row_ds[static_cast<std::size_t>(i)], row_dt[static_cast<std::size_t>(i)]);
+        for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) put_normal(row_ds[i], row_dt[i]);
+      };
+      for (long j = 0; j < n; ++j) row(1, 3 * j + 1, n - j);
+      for (long j = 0; j + 1 < n; ++j) row(2, 3 * j + 2, n - 1 - j);
+      continue;
+    }
     auto put = [&](long a, long b) {
       long pa = 0, pb = 0;
       p.to_patch(a, b, 3 * n, pa, pb);
       const auto at = static_cast<TriangleTables::GridPoint>(pa % 3);
       const double* w = kPositions ? grid.weights(at, pa / 3, pb / 3) : nullptr;
-      const double *wu = nullptr, *wv = nullptr;
-      if (kNormals && grid.derivative_weights(at, pa / 3, pb / 3, wu, wv)) {
+      TriangleTables::Grid::SparseDerivatives d;
+      if (kNormals && grid.sparse_derivatives(at, pa / 3, pb / 3, d)) {
         // Regular faces: the tables' derivative stencils at the point itself,
-        // every sum in one pass over the points.
-        double x = 0, y = 0, z = 0, ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
-        for (std::size_t h = 0; h < m; ++h) {
-          const Point& q = local[h];
-          if (kPositions) x += w[h] * q[0], y += w[h] * q[1], z += w[h] * q[2];
-          ux += wu[h] * q[0], uy += wu[h] * q[1], uz += wu[h] * q[2];
-          vx += wv[h] * q[0], vy += wv[h] * q[1], vz += wv[h] * q[2];
+        // their nonzero entries only (sqrt(3): about two thirds).
+        if (kPositions) put_position(w);
+        double ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
+        for (std::size_t k = 0; k < d.count; ++k) {
+          const Point& q = local[d.column[k]];
+          const double wu = d.uv[2 * k], wv = d.uv[2 * k + 1];
+          ux += wu * q[0], uy += wu * q[1], uz += wu * q[2];
+          vx += wv * q[0], vy += wv * q[1], vz += wv * q[2];
         }
-        if (kPositions) *position++ = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
         put_normal({ux, uy, uz}, {vx, vy, vz});
         return;
       }
-      if (kPositions) {
-        double x = 0, y = 0, z = 0;
-        for (std::size_t h = 0; h < m; ++h) x += w[h] * local[h][0], y += w[h] * local[h][1], z += w[h] * local[h][2];
-        *position++ = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
-      }
+      if (kPositions) put_position(w);
       if (kNormals) {
         // Exact parameters: sqrt(3)'s derivative stencils are found at the grid
         // point the descent reaches; Loop's polynomial takes them as doubles.
