@@ -319,7 +319,12 @@ TEST_CASE("Fitting refuses bad inputs with clear errors", "[fitting]") {
   CHECK_THROWS_WITH(fit_surface(topology, sphere.positions, {}, options), "no points to fit");
   std::vector<Point> bad = points;
   bad[17][1] = std::nan("");
-  CHECK_THROWS_WITH(fit_surface(topology, sphere.positions, bad, options), Catch::Contains("point 17"));
+  CHECK_THROWS_WITH(fit_surface(topology, sphere.positions, bad, options),
+                    Catch::Contains("point 17 (numbered from 0) has the coordinate nan"));
+  std::vector<Point> far = sphere.positions;
+  far[3][2] = 2e37;
+  CHECK_THROWS_WITH(fit_surface(topology, far, points, options),
+                    Catch::Contains("control vertex 3 (numbered from 0) has the coordinate 2e37; coordinates must be finite"));
   CHECK_THROWS_WITH(fit_surface(topology, {sphere.positions.begin(), sphere.positions.end() - 1}, points, options),
                     Catch::Contains("control positions for a control mesh of"));
   CHECK_THROWS_WITH(fit_surface(topology, sphere.positions, std::vector<Point>(5, Point{1, 2, 3}), options),

@@ -15,7 +15,6 @@
 #include "fitting/normal_equations.hpp"
 #include "mesh/coordinates.hpp"
 #include "stencil_runtime/closest_point.hpp"
-#include "stencil_runtime/limits.hpp"
 #include "stencil_runtime/surface.hpp"
 
 namespace stencil_runtime {
@@ -42,12 +41,7 @@ FitMethod parse_fit_method(const std::string& name) {
 namespace {
 
 void check_points(const std::vector<Point>& points, const char* what) {
-  for (std::size_t i = 0; i < points.size(); ++i)
-    for (const double x : points[i])
-      if (!std::isfinite(x) || std::abs(x) > limits::kMaxCoordinate)
-        throw FitError(std::string(what) + " " + std::to_string(i) + " (numbered from 0) has the coordinate " +
-                       number_text(x) + "; coordinates must be finite and at most " + number_text(limits::kMaxCoordinate) +
-                       " in magnitude");
+  if (const std::string fault = coordinate_fault(points.data(), points.size(), what); !fault.empty()) throw FitError(fault);
 }
 
 double diagonal_of(const std::vector<Point>& points) {

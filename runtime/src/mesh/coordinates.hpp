@@ -1,8 +1,8 @@
 #pragma once
 // The one rule for control-point coordinates: finite and at most
 // limits::kMaxCoordinate in magnitude (tessellations are written as floats).
-// Surface::set_positions, subdivide and write_obj apply it, each with its own
-// error type.
+// Surface::set_positions, subdivide, write_obj and the fit apply it, each with
+// its own error type.
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -14,12 +14,13 @@
 namespace stencil_runtime {
 
 // "" when every coordinate of points[0 .. count) keeps the rule, else what the
-// first that does not is: "vertex 3 (numbered from 0) has the coordinate nan; ...".
-inline std::string coordinate_fault(const Point* points, std::size_t count) {
+// first that does not is: "vertex 3 (numbered from 0) has the coordinate nan; ...",
+// the point named by `noun` ("point 3" for the fit's data).
+inline std::string coordinate_fault(const Point* points, std::size_t count, const char* noun = "vertex") {
   for (std::size_t v = 0; v < count; ++v)
     for (const double x : points[v])
       if (!std::isfinite(x) || std::fabs(x) > limits::kMaxCoordinate)
-        return "vertex " + std::to_string(v) + " (numbered from 0) has the coordinate " + number_text(x) +
+        return std::string(noun) + " " + std::to_string(v) + " (numbered from 0) has the coordinate " + number_text(x) +
                "; coordinates must be finite and at most " + number_text(limits::kMaxCoordinate) + " in magnitude";
   return {};
 }
