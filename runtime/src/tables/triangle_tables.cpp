@@ -285,7 +285,8 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
     const Valence* regular = t.find(6);
     if (!regular) r.fail("holds no valence 6 (the regular patch)");
     const auto degree = r.get<std::uint32_t>();
-    if (degree > 8) r.fail("the regular polynomial's degree " + std::to_string(degree) + " is above 8");
+    if (degree > MonomialJet::kMaxDegree)
+      r.fail("the regular polynomial's degree " + std::to_string(degree) + " is above " + std::to_string(MonomialJet::kMaxDegree));
     t.degree_ = static_cast<int>(degree);
     const std::size_t terms = static_cast<std::size_t>((t.degree_ + 1) * (t.degree_ + 2) / 2);
     const std::size_t count = t.degree_ == 0 ? 0 : terms * regular->regions[0].layout.size();

@@ -16,18 +16,19 @@
 #include <vector>
 
 #include "stencil_runtime/mesh.hpp"
+#include "tables/monomial_jet.hpp"
 
 namespace stencil_runtime {
 
 class FaceDerivativeRows {
  public:
-  static constexpr int kMaxDegree = 8;  // of the patch's polynomial (the table loader's limit)
+  static constexpr int kMaxDegree = MonomialJet::kMaxDegree;  // of the patch's polynomial (the table loader's limit)
 
   // `degree` >= 1 and `coefficients` as TriangleTables::polynomial() (per
   // control point h of the regular layout, the coefficients of x^e y^f, f =
   // 0..degree, e = 0..degree-f), for `points` control points. Throws
-  // for a degree outside 1..kMaxDegree or a size that
-  // does not match (LoadError; the table loader has checked both).
+  // LoadError for a degree outside 1..kMaxDegree or a size that does not
+  // match (the table loader has checked both).
   FaceDerivativeRows(int degree, const std::vector<double>& coefficients, std::size_t points);
 
   std::size_t points() const { return points_; }

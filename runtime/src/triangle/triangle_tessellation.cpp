@@ -140,11 +140,17 @@ void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin
       p.to_patch(a, b, 3 * n, pa, pb);
       return grid.weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3);
     };
+    // The face's n^2 centres in their order (up_centre_index, down_centre_index):
+    // row(a0, b, count) for the samples (a0 + 3i, b), i < count, in thirds of 1/n.
+    auto each_row = [&](auto&& row) {
+      for (long j = 0; j < n; ++j) row(1L, 3 * j + 1, n - j);
+      for (long j = 0; j + 1 < n; ++j) row(2L, 3 * j + 2, n - 1 - j);
+    };
     if (kNormals && derivative_rows_ && p.valence == 6 && p.region == 0 && n >= kRowNormalRate) {
       // A polynomial regular patch (Loop): normals row by row (face_derivative_rows.hpp).
       FaceDerivativeRows::Face face(*derivative_rows_, p.rotation, local.data());
       const double scale = 1.0 / (3.0 * static_cast<double>(n));
-      auto row = [&](long a0, long b, long count) {  // samples (a0 + 3i, b), i < count, in thirds of 1/n
+      each_row([&](long a0, long b, long count) {
         if (kPositions)
           for (long i = 0, a = a0; i < count; ++i, a += 3) put_position(position_weights(a, b));
         // The derivatives of the whole row, then their normals: short loops whose
@@ -155,9 +161,7 @@ void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin
         for (long i = 0, a = a0; i < count; ++i, a += 3)
           face.at(static_cast<double>(a) * scale, row_ds[static_cast<std::size_t>(i)], row_dt[static_cast<std::size_t>(i)]);
         for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) put_normal(row_ds[i], row_dt[i]);
-      };
-      for (long j = 0; j < n; ++j) row(1, 3 * j + 1, n - j);
-      for (long j = 0; j + 1 < n; ++j) row(2, 3 * j + 2, n - 1 - j);
+      });
       continue;
     }
     auto put = [&](long a, long b) {
@@ -191,10 +195,9 @@ void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin
         put_normal(d.du, d.dv);
       }
     };
-    for (long j = 0; j < n; ++j)
-      for (long i = 0; i + j <= n - 1; ++i) put(3 * i + 1, 3 * j + 1);
-    for (long j = 0; j + 1 < n; ++j)
-      for (long i = 0; i + j <= n - 2; ++i) put(3 * i + 2, 3 * j + 2);
+    each_row([&](long a0, long b, long count) {
+      for (long i = 0, a = a0; i < count; ++i, a += 3) put(a, b);
+    });
   }
 }
 
