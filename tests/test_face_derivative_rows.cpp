@@ -116,7 +116,7 @@ TEST_CASE("Loop tessellation normals at rates that go row by row equal Surface::
   }
 }
 
-TEST_CASE("sqrt(3)'s sparse derivative stencils hold every nonzero weight of the dense ones, and only those",
+TEST_CASE("sqrt(3)'s sparse jets hold every nonzero value and derivative weight of the dense stencils, and only those",
           "[runtime][derivatives][sqrt3]") {
   const auto tables = Tables::load(generated_table("sqrt3", "--valence 3-8 --n 1-9", "sgt").string());
   const TriangleTables& t = tables->triangle();
@@ -129,17 +129,19 @@ TEST_CASE("sqrt(3)'s sparse derivative stencils hold every nonzero weight of the
         for (long i = 0; i + j + kind <= n; ++i) {
           const auto at = static_cast<TriangleTables::GridPoint>(kind);
           const double *du = nullptr, *dv = nullptr;
-          TriangleTables::Grid::SparseDerivatives s;
+          TriangleTables::Grid::SparseJet s;
           REQUIRE(grid.derivative_weights(at, i, j, du, dv));
-          REQUIRE(grid.sparse_derivatives(at, i, j, s));
-          std::vector<double> u(m, 0.0), v(m, 0.0);
+          REQUIRE(grid.sparse_jet(at, i, j, s));
+          const double* w = grid.weights(at, i, j);
+          std::vector<double> value(m, 0.0), u(m, 0.0), v(m, 0.0);
           for (std::size_t k = 0; k < s.count; ++k) {
             REQUIRE(s.column[k] < m);
-            REQUIRE((k == 0 || s.column[k] > s.column[k - 1]));
-            REQUIRE((s.uv[2 * k] != 0 || s.uv[2 * k + 1] != 0));
-            u[s.column[k]] = s.uv[2 * k], v[s.column[k]] = s.uv[2 * k + 1];
+            REQUIRE((k == 0 || s.column[k] > s.column[k - 1]));  // ascending: the value's sum keeps the dense order
+            const double* c = s.wuv + 3 * k;
+            REQUIRE((c[0] != 0 || c[1] != 0 || c[2] != 0));
+            value[s.column[k]] = c[0], u[s.column[k]] = c[1], v[s.column[k]] = c[2];
           }
-          for (std::size_t h = 0; h < m; ++h) REQUIRE((u[h] == du[h] && v[h] == dv[h]));
+          for (std::size_t h = 0; h < m; ++h) REQUIRE((value[h] == w[h] && u[h] == du[h] && v[h] == dv[h]));
           dropped += m - s.count;
         }
   }

@@ -53,20 +53,21 @@ void read_children(detail::BinaryReader& r, std::size_t left, int dilation, std:
   }
 }
 
-// Stencil pairs (du, dv) of `points` entries each, without the entries where
-// both are zero: per stencil s, entries [start[s], start[s + 1]) of column and
-// of uv's pairs.
-void drop_common_zeros(const std::vector<double>& du, const std::vector<double>& dv, std::size_t points,
-                       std::vector<std::uint32_t>& start, std::vector<std::uint32_t>& column, std::vector<double>& uv) {
+// Stencil triples (value, du, dv) of `points` entries each, without the
+// entries where all three are zero: per stencil s, entries [start[s],
+// start[s + 1]) of column and of wuv's triples.
+void drop_common_zeros(const std::vector<double>& w, const std::vector<double>& du, const std::vector<double>& dv,
+                       std::size_t points, std::vector<std::uint32_t>& start, std::vector<std::uint32_t>& column,
+                       std::vector<double>& wuv) {
   const std::size_t stencils = points == 0 ? 0 : du.size() / points;
   start.assign(1, 0);
-  column.clear(), uv.clear();
+  column.clear(), wuv.clear();
   for (std::size_t s = 0; s < stencils; ++s) {
     for (std::size_t h = 0; h < points; ++h) {
-      const double a = du[s * points + h], b = dv[s * points + h];
-      if (a == 0 && b == 0) continue;
+      const std::size_t at = s * points + h;
+      if (w[at] == 0 && du[at] == 0 && dv[at] == 0) continue;
       column.push_back(static_cast<std::uint32_t>(h));
-      uv.push_back(a), uv.push_back(b);
+      wuv.push_back(w[at]), wuv.push_back(du[at]), wuv.push_back(dv[at]);
     }
     if (column.size() > UINT32_MAX) throw LoadError("regular derivative stencils beyond 2^32 entries");
     start.push_back(static_cast<std::uint32_t>(column.size()));
@@ -366,7 +367,8 @@ TriangleTables TriangleTables::load(const std::string& path, std::uint64_t expec
   {
     Region& region = t.valences_[static_cast<std::size_t>(regular - t.valences_.data())].regions[0];
     if (!region.du.empty())
-      drop_common_zeros(region.du, region.dv, region.layout.size(), region.sparse_start, region.sparse_column, region.sparse_uv);
+      drop_common_zeros(region.weights, region.du, region.dv, region.layout.size(), region.sparse_start, region.sparse_column,
+                        region.sparse_wuv);
   }
   for (std::size_t k = 0; k < t.rates_.size(); ++k) {
     const auto n = static_cast<std::size_t>(t.rates_[k]);
@@ -526,7 +528,7 @@ TriangleTables::Grid TriangleTables::grid(int valence, int n, int region) const 
   g.n_ = n;
   if (!v.du.empty()) g.du_ = v.du.data(), g.dv_ = v.dv.data();
   if (!v.sparse_start.empty())
-    g.sparse_start_ = v.sparse_start.data(), g.sparse_column_ = v.sparse_column.data(), g.sparse_uv_ = v.sparse_uv.data();
+    g.sparse_start_ = v.sparse_start.data(), g.sparse_column_ = v.sparse_column.data(), g.sparse_wuv_ = v.sparse_wuv.data();
   return g;
 }
 
@@ -548,11 +550,11 @@ bool TriangleTables::Grid::derivative_weights(GridPoint kind, long i, long j, co
   return true;
 }
 
-bool TriangleTables::Grid::sparse_derivatives(GridPoint kind, long i, long j, SparseDerivatives& out) const {
+bool TriangleTables::Grid::sparse_jet(GridPoint kind, long i, long j, SparseJet& out) const {
   if (!sparse_start_) return false;
   const std::size_t s = stencil(kind, i, j), begin = sparse_start_[s];
   out.column = sparse_column_ + begin;
-  out.uv = sparse_uv_ + 2 * begin;
+  out.wuv = sparse_wuv_ + 3 * begin;
   out.count = sparse_start_[s + 1] - begin;
   return true;
 }

@@ -148,16 +148,21 @@ class TriangleTables {
     // the regular patch: stored (sqrt(3), version 6) or made at load from the
     // regular polynomial (Loop); false for the other patches and older files.
     bool derivative_weights(GridPoint kind, long i, long j, const double*& du, const double*& dv) const;
-    // The same stencils' entries that are not both zero (sqrt(3)'s regular
-    // basis reaches 2.5 rings, so about a third of a point's 27 are): point
-    // column[k] has the weights uv[2k] (du) and uv[2k + 1] (dv), k < count.
-    // What the tessellation's normals sum; false where derivative_weights is.
-    struct SparseDerivatives {
+    // The value, du and dv stencils at the same point together, without the
+    // entries where all three are zero (sqrt(3)'s regular basis reaches 2.5
+    // rings, so about a third of a point's 27 are): point column[k] has the
+    // weights wuv[3k] (value), wuv[3k + 1] (du) and wuv[3k + 2] (dv), k < count.
+    // One pass over the points gives a sample's position and derivatives; the
+    // value's sum is bit-identical to the dense one's (its skipped weights are
+    // zeros). What the tessellation's normals sum; false where
+    // derivative_weights is.
+    struct SparseJet {
       const std::uint32_t* column = nullptr;
-      const double* uv = nullptr;
+      const double* wuv = nullptr;
       std::size_t count = 0;
     };
-    bool sparse_derivatives(GridPoint kind, long i, long j, SparseDerivatives& out) const;
+    bool sparse_jet(GridPoint kind, long i, long j, SparseJet& out) const;
+    bool has_sparse_jets() const { return sparse_start_ != nullptr; }
 
    private:
     friend class TriangleTables;
@@ -168,7 +173,7 @@ class TriangleTables {
     const double* dv_ = nullptr;
     const std::uint32_t* sparse_start_ = nullptr;
     const std::uint32_t* sparse_column_ = nullptr;
-    const double* sparse_uv_ = nullptr;
+    const double* sparse_wuv_ = nullptr;
     std::size_t points_ = 0;
     const std::uint32_t* index_ = nullptr;
     long n_ = 1;
@@ -181,11 +186,11 @@ class TriangleTables {
     std::vector<ChartPoint> layout;
     std::vector<double> weights;                // stencil_count * layout.size()
     std::vector<double> du, dv;                 // the same for the derivatives (the regular patch), or empty
-    // du and dv without their common zeros (Grid::sparse_derivatives): per
+    // weights, du and dv without their common zeros (Grid::sparse_jet): per
     // stencil s, entries [sparse_start[s], sparse_start[s + 1]).
     std::vector<std::uint32_t> sparse_start;
     std::vector<std::uint32_t> sparse_column;
-    std::vector<double> sparse_uv;
+    std::vector<double> sparse_wuv;
     std::vector<std::vector<std::uint32_t>> index;  // per rate slot: nodes, ups, downs
     std::vector<TriangleChild> children;
   };

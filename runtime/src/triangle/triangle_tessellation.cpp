@@ -164,26 +164,38 @@ void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin
       });
       continue;
     }
+    if (kNormals && grid.has_sparse_jets()) {
+      // The other regular faces (sqrt(3); Loop below kRowNormalRate): the
+      // tables' value and derivative stencils at each point, their nonzero
+      // entries only (sqrt(3): about two thirds), in one pass over the points;
+      // a row's derivatives first, then their normals, as above.
+      each_row([&](long a0, long b, long count) {
+        row_ds.resize(static_cast<std::size_t>(count)), row_dt.resize(static_cast<std::size_t>(count));
+        for (long i = 0, a = a0; i < count; ++i, a += 3) {
+          long pa = 0, pb = 0;
+          p.to_patch(a, b, 3 * n, pa, pb);
+          TriangleTables::Grid::SparseJet jet;
+          grid.sparse_jet(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3, jet);
+          double x = 0, y = 0, z = 0, ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
+          for (std::size_t k = 0; k < jet.count; ++k) {
+            const Point& q = local[jet.column[k]];
+            const double* c = jet.wuv + 3 * k;
+            if (kPositions) x += c[0] * q[0], y += c[0] * q[1], z += c[0] * q[2];
+            ux += c[1] * q[0], uy += c[1] * q[1], uz += c[1] * q[2];
+            vx += c[2] * q[0], vy += c[2] * q[1], vz += c[2] * q[2];
+          }
+          if (kPositions) *position++ = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+          row_ds[static_cast<std::size_t>(i)] = {ux, uy, uz}, row_dt[static_cast<std::size_t>(i)] = {vx, vy, vz};
+        }
+        for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) put_normal(row_ds[i], row_dt[i]);
+      });
+      continue;
+    }
     auto put = [&](long a, long b) {
       long pa = 0, pb = 0;
       p.to_patch(a, b, 3 * n, pa, pb);
       const auto at = static_cast<TriangleTables::GridPoint>(pa % 3);
       const double* w = kPositions ? grid.weights(at, pa / 3, pb / 3) : nullptr;
-      TriangleTables::Grid::SparseDerivatives d;
-      if (kNormals && grid.sparse_derivatives(at, pa / 3, pb / 3, d)) {
-        // Regular faces: the tables' derivative stencils at the point itself,
-        // their nonzero entries only (sqrt(3): about two thirds).
-        if (kPositions) put_position(w);
-        double ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
-        for (std::size_t k = 0; k < d.count; ++k) {
-          const Point& q = local[d.column[k]];
-          const double wu = d.uv[2 * k], wv = d.uv[2 * k + 1];
-          ux += wu * q[0], uy += wu * q[1], uz += wu * q[2];
-          vx += wv * q[0], vy += wv * q[1], vz += wv * q[2];
-        }
-        put_normal({ux, uy, uz}, {vx, vy, vz});
-        return;
-      }
       if (kPositions) put_position(w);
       if (kNormals) {
         // Exact parameters: sqrt(3)'s derivative stencils are found at the grid
