@@ -10,6 +10,7 @@
 #include "quad_creases.hpp"
 #include "family/sharp_cut.hpp"
 #include "quad_refinement.hpp"
+#include "regular_face_samples.hpp"
 
 namespace stencil_runtime {
 
@@ -824,47 +825,16 @@ void QuadFamily::normals(const TessellationLayout& layout, std::size_t begin, st
   // Each cell centre's derivatives in the patch's own coordinates: the
   // patch's rotation has determinant +1, so du x dv there points the same way
   // as on the face.
-  thread_local std::vector<Point> local, rows, slopes;
+  thread_local std::vector<Point> local;
+  thread_local RegularFaceScratch regular;
   for (std::size_t f = begin; f != end; ++f) {
     if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
     const QuadPatch& p = patches_[f];
     const int n = layout.rates[f];
     std::array<float, 3>* out = out_all + layout.point_offsets[f];
     if (p.valence == 4 && !centre_derivative_weights_.empty()) {
-      // Tensor product, as regular_centres(): rows R[q][i] = sum_c w_i[c] P(c, q)
-      // and their slopes D[q][i] = sum_c w'_i[c] P(c, q); then at (i, j)
-      // d/dx = sum_q w_j[q] D[q][i], d/dy = sum_q w'_j[q] R[q][i].
-      const double* w = centre_weights_[static_cast<std::size_t>(n)].data();
-      const double* dw = centre_derivative_weights_[static_cast<std::size_t>(n)].data();
-      rows.resize(4 * static_cast<std::size_t>(n));
-      slopes.resize(4 * static_cast<std::size_t>(n));
-      for (int q = 0; q < 4; ++q)
-        for (int i = 0; i < n; ++i) {
-          Point r{0, 0, 0}, d{0, 0, 0};
-          for (int c = 0; c < 4; ++c) {
-            const Point& P = pos[p.points[static_cast<std::size_t>(q * 4 + c)]];
-            for (std::size_t k = 0; k < 3; ++k) r[k] += w[4 * i + c] * P[k], d[k] += dw[4 * i + c] * P[k];
-          }
-          rows[static_cast<std::size_t>(q * n + i)] = r;
-          slopes[static_cast<std::size_t>(q * n + i)] = d;
-        }
-      const Point* r0 = rows.data();
-      const Point *r1 = r0 + n, *r2 = r1 + n, *r3 = r2 + n;
-      const Point* s0 = slopes.data();
-      const Point *s1 = s0 + n, *s2 = s1 + n, *s3 = s2 + n;
-      for (int j = 0; j < n; ++j) {
-        const double* wy = w + 4 * j;
-        const double* dwy = dw + 4 * j;
-        for (int i = 0; i < n; ++i) {
-          Point du, dv;
-          for (std::size_t k = 0; k < 3; ++k) {
-            du[k] = wy[0] * s0[i][k] + wy[1] * s1[i][k] + wy[2] * s2[i][k] + wy[3] * s3[i][k];
-            dv[k] = dwy[0] * r0[i][k] + dwy[1] * r1[i][k] + dwy[2] * r2[i][k] + dwy[3] * r3[i][k];
-          }
-          const Point u = unit_cross(du, dv);
-          out[j * n + i] = {static_cast<float>(u[0]), static_cast<float>(u[1]), static_cast<float>(u[2])};
-        }
-      }
+      regular_face_samples(p, centre_weights_[static_cast<std::size_t>(n)].data(),
+                           centre_derivative_weights_[static_cast<std::size_t>(n)].data(), n, pos, nullptr, out, regular);
       continue;
     }
     const std::size_t m = p.points.size();
@@ -882,6 +852,28 @@ void QuadFamily::normals(const TessellationLayout& layout, std::size_t begin, st
         const Point normal = d.normal();
         out[j * n + i] = {static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2])};
       }
+  }
+}
+
+void QuadFamily::points_and_normals(const TessellationLayout& layout, std::size_t begin, std::size_t end,
+                                    const Point* pos, std::array<float, 3>* positions,
+                                    std::array<float, 3>* normals) const {
+  // Regular faces: positions and normals from the same rows, in one pass
+  // (regular_face_samples); the positions equal points()'s bit for bit.
+  thread_local RegularFaceScratch regular;
+  for (std::size_t f = begin; f != end; ++f) {
+    if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
+    const QuadPatch& p = patches_[f];
+    const int n = layout.rates[f];
+    if (p.valence == 4 && !centre_derivative_weights_.empty()) {
+      const std::size_t at = layout.point_offsets[f];
+      regular_face_samples(p, centre_weights_[static_cast<std::size_t>(n)].data(),
+                           centre_derivative_weights_[static_cast<std::size_t>(n)].data(), n, pos, positions + at,
+                           normals + at, regular);
+      continue;
+    }
+    points(layout, f, f + 1, pos, positions);
+    this->normals(layout, f, f + 1, pos, normals);
   }
 }
 

@@ -58,6 +58,8 @@ class QuadFamily final : public Family {
               std::array<float, 3>* out) const override;
   void normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
                std::array<float, 3>* out) const override;
+  void points_and_normals(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* prepared,
+                          std::array<float, 3>* positions, std::array<float, 3>* normals) const override;
 
   // Below the public interface (tests, benchmarks):
   const QuadTables& tables() const { return tables_; }
