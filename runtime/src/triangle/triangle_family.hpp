@@ -6,8 +6,10 @@
 // chart walks; exact evaluation from the tables and the tessellation kernels
 // (triangle_tessellation.cpp).
 #include <array>
+#include <map>
 #include <memory>
 #include <mutex>
+#include <tuple>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -141,6 +143,13 @@ class TriangleFamily final : public Family {
   mutable std::unique_ptr<const AffineParameters> affine_;  // of the regular kind, where the scheme reproduces affine functions
   mutable std::once_flag polynomial_once_;
   mutable std::unique_ptr<const PolynomialPatch> polynomial_;  // of the regular kind, where its basis is polynomial (Loop)
+  // The derivative stencils at the n^2 tessellation centres of a patch kind
+  // (valence, region) over its m points, made by the descent on first use and
+  // kept: centre c (up_centre_index, down_centre_index, in the patch's own
+  // coordinates) has m weights of d/du at 2mc, then m of d/dv.
+  mutable std::mutex centre_derivatives_mutex_;
+  mutable std::map<std::tuple<int, int, int>, std::shared_ptr<const std::vector<double>>> centre_derivatives_;
+  std::shared_ptr<const std::vector<double>> centre_derivatives(int valence, int region, int n, std::size_t m) const;
 };
 
 // Index of up centre (i, j) and down centre (i, j) among a face's n^2 tessellation

@@ -112,8 +112,7 @@ void TriangleFamily::points_and_normals(const TessellationLayout& layout, std::s
 template <bool kPositions, bool kNormals>
 void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin, std::size_t end, const Point* pos,
                              std::array<float, 3>* positions, std::array<float, 3>* normals) const {
-  const TrianglePatchDescent* descent = kNormals ? &checked_descent() : nullptr;
-  thread_local std::vector<Point> local, consumed, row_ds, row_dt;
+  thread_local std::vector<Point> local, row_ds, row_dt;
   for (std::size_t f = begin; f != end; ++f) {
     if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
     const TrianglePatch& p = patches_[f];
@@ -191,26 +190,70 @@ void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin
       });
       continue;
     }
+    // The other patches: positions from the tables' stencils; normals from
+    // the kind's derivative stencils at the centres (centre_derivatives).
+    const std::shared_ptr<const std::vector<double>> derivatives =
+        kNormals ? centre_derivatives(p.valence, p.region, static_cast<int>(n), m) : nullptr;
     auto put = [&](long a, long b) {
       long pa = 0, pb = 0;
       p.to_patch(a, b, 3 * n, pa, pb);
-      const auto at = static_cast<TriangleTables::GridPoint>(pa % 3);
-      const double* w = kPositions ? grid.weights(at, pa / 3, pb / 3) : nullptr;
-      if (kPositions) put_position(w);
-      if (kNormals) {
-        // Exact parameters: sqrt(3)'s derivative stencils are found at the grid
-        // point the descent reaches; Loop's polynomial takes them as doubles.
-        // The descent consumes its points: a copy, so that `local` stays whole.
-        consumed = local;
-        const Derivatives d = descent->derivatives(p.valence, p.region, consumed, ExactDual{Fraction::make(pa, 3 * n), 1, 0},
-                                                   ExactDual{Fraction::make(pb, 3 * n), 0, 1});
-        put_normal(d.du, d.dv);
+      const double* w = kPositions ? grid.weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3) : nullptr;
+      if (!kNormals) {
+        put_position(w);
+        return;
       }
+      // Position and derivatives in one pass over the points: nine
+      // independent sums keep the processor's pipelines full where the
+      // position's three alone wait on their own additions.
+      const int i = static_cast<int>(pa / 3), j = static_cast<int>(pb / 3), rate = static_cast<int>(n);
+      const int centre = pa % 3 == 1 ? up_centre_index(i, j, rate) : down_centre_index(i, j, rate);
+      const double* d = derivatives->data() + static_cast<std::size_t>(centre) * 2 * m;
+      double x = 0, y = 0, z = 0, ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
+      for (std::size_t h = 0; h < m; ++h) {
+        const Point& q = local[h];
+        if (kPositions) x += w[h] * q[0], y += w[h] * q[1], z += w[h] * q[2];
+        ux += d[h] * q[0], uy += d[h] * q[1], uz += d[h] * q[2];
+        vx += d[m + h] * q[0], vy += d[m + h] * q[1], vz += d[m + h] * q[2];
+      }
+      if (kPositions) *position++ = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+      put_normal({ux, uy, uz}, {vx, vy, vz});
     };
     each_row([&](long a0, long b, long count) {
       for (long i = 0, a = a0; i < count; ++i, a += 3) put(a, b);
     });
   }
+}
+
+std::shared_ptr<const std::vector<double>> TriangleFamily::centre_derivatives(int valence, int region, int n,
+                                                                             std::size_t m) const {
+  const std::tuple<int, int, int> key{valence, region, n};
+  {
+    std::lock_guard lock(centre_derivatives_mutex_);
+    const auto it = centre_derivatives_.find(key);
+    if (it != centre_derivatives_.end()) return it->second;
+  }
+  // The derivatives are linear in the points: the descent on unit vectors,
+  // three points (one per coordinate) at a time.
+  const TrianglePatchDescent& descent = checked_descent();
+  const auto rate = static_cast<std::size_t>(n);
+  auto weights = std::make_shared<std::vector<double>>(rate * rate * 2 * m);
+  std::vector<Point> unit;
+  auto fill = [&](int centre, long pa, long pb) {
+    double* w = weights->data() + static_cast<std::size_t>(centre) * 2 * m;
+    for (std::size_t first = 0; first < m; first += 3) {
+      unit.assign(m, Point{0, 0, 0});
+      for (std::size_t k = 0; k < 3 && first + k < m; ++k) unit[first + k][k] = 1;
+      const Derivatives d = descent.derivatives(valence, region, unit, ExactDual{Fraction::make(pa, 3L * n), 1, 0},
+                                                ExactDual{Fraction::make(pb, 3L * n), 0, 1});
+      for (std::size_t k = 0; k < 3 && first + k < m; ++k) w[first + k] = d.du[k], w[m + first + k] = d.dv[k];
+    }
+  };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i + j <= n - 1; ++i) fill(up_centre_index(i, j, n), 3L * i + 1, 3L * j + 1);
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + j <= n - 2; ++i) fill(down_centre_index(i, j, n), 3L * i + 2, 3L * j + 2);
+  std::lock_guard lock(centre_derivatives_mutex_);
+  return centre_derivatives_.emplace(key, std::move(weights)).first->second;
 }
 
 namespace {
