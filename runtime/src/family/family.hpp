@@ -271,6 +271,20 @@ bool weights_by_linearity(std::size_t count, const Evaluate& evaluate, std::vect
   return true;
 }
 
+// The same for the first derivatives: `differentiate(points)` consumes the
+// points and returns their Derivatives; out gets the count weights of du, then
+// the count weights of dv.
+template <class Differentiate>
+void derivative_weights_by_linearity(std::size_t count, const Differentiate& differentiate, double* out) {
+  std::vector<Point> unit;
+  for (std::size_t first = 0; first < count; first += 3) {
+    unit.assign(count, Point{0, 0, 0});
+    for (std::size_t k = 0; k < 3 && first + k < count; ++k) unit[first + k][k] = 1;
+    const Derivatives d = differentiate(unit);
+    for (std::size_t k = 0; k < 3 && first + k < count; ++k) out[first + k] = d.du[k], out[count + first + k] = d.dv[k];
+  }
+}
+
 // The stencil of prepared face `face` whose patch has the control points
 // `points`, by linearity from `evaluate` (above); false when it is not exact.
 template <class Evaluate>

@@ -801,21 +801,18 @@ std::shared_ptr<const std::vector<double>> QuadFamily::centre_derivatives(int va
     if (it != centre_derivatives_.end()) return it->second;
   }
   // Layout: centre (i, j) at (j n + i) * 2m: m weights of d/dx, then m of d/dy.
-  // The derivatives are linear in the points: unit vectors, three points at a time.
+  // The derivatives are linear in the points (derivative_weights_by_linearity).
   const QuadPatchDescent& descent = checked_descent();
   const std::size_t m = static_cast<std::size_t>(QuadTables::points(valence));
   auto weights = std::make_shared<std::vector<double>>(static_cast<std::size_t>(n) * static_cast<std::size_t>(n) * 2 * m);
-  std::vector<Point> unit;
   for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      double* w = weights->data() + (static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)) * 2 * m;
-      for (std::size_t first = 0; first < m; first += 3) {
-        unit.assign(m, Point{0, 0, 0});
-        for (std::size_t k = 0; k < 3 && first + k < m; ++k) unit[first + k][k] = 1;
-        const Derivatives d = descent.derivatives(valence, unit, Fraction::make(2L * i + 1, 2L * n), Fraction::make(2L * j + 1, 2L * n));
-        for (std::size_t k = 0; k < 3 && first + k < m; ++k) w[first + k] = d.du[k], w[m + first + k] = d.dv[k];
-      }
-    }
+    for (int i = 0; i < n; ++i)
+      derivative_weights_by_linearity(
+          m,
+          [&](std::vector<Point>& unit) {
+            return descent.derivatives(valence, unit, Fraction::make(2L * i + 1, 2L * n), Fraction::make(2L * j + 1, 2L * n));
+          },
+          weights->data() + (static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)) * 2 * m);
   std::lock_guard lock(centre_derivatives_mutex_);
   return centre_derivatives_.emplace(std::pair{valence, n}, std::move(weights)).first->second;
 }

@@ -232,21 +232,18 @@ std::shared_ptr<const std::vector<double>> TriangleFamily::centre_derivatives(in
     const auto it = centre_derivatives_.find(key);
     if (it != centre_derivatives_.end()) return it->second;
   }
-  // The derivatives are linear in the points: the descent on unit vectors,
-  // three points (one per coordinate) at a time.
+  // The derivatives are linear in the points (derivative_weights_by_linearity).
   const TrianglePatchDescent& descent = checked_descent();
   const auto rate = static_cast<std::size_t>(n);
   auto weights = std::make_shared<std::vector<double>>(rate * rate * 2 * m);
-  std::vector<Point> unit;
   auto fill = [&](int centre, long pa, long pb) {
-    double* w = weights->data() + static_cast<std::size_t>(centre) * 2 * m;
-    for (std::size_t first = 0; first < m; first += 3) {
-      unit.assign(m, Point{0, 0, 0});
-      for (std::size_t k = 0; k < 3 && first + k < m; ++k) unit[first + k][k] = 1;
-      const Derivatives d = descent.derivatives(valence, region, unit, ExactDual{Fraction::make(pa, 3L * n), 1, 0},
-                                                ExactDual{Fraction::make(pb, 3L * n), 0, 1});
-      for (std::size_t k = 0; k < 3 && first + k < m; ++k) w[first + k] = d.du[k], w[m + first + k] = d.dv[k];
-    }
+    derivative_weights_by_linearity(
+        m,
+        [&](std::vector<Point>& unit) {
+          return descent.derivatives(valence, region, unit, ExactDual{Fraction::make(pa, 3L * n), 1, 0},
+                                     ExactDual{Fraction::make(pb, 3L * n), 0, 1});
+        },
+        weights->data() + static_cast<std::size_t>(centre) * 2 * m);
   };
   for (int j = 0; j < n; ++j)
     for (int i = 0; i + j <= n - 1; ++i) fill(up_centre_index(i, j, n), 3L * i + 1, 3L * j + 1);
