@@ -63,13 +63,15 @@ SparseEntries vertex_mask(CreaseRule rule, const RefinementStep& step, std::uint
 
 void check_crease_steps(std::size_t faces, std::size_t first, float sharpest) {
   const auto steps = static_cast<int>(std::ceil(sharpest));
-  std::size_t made = first;
-  for (int k = 0; k < steps; ++k, made *= 4)
-    if (made > limits::kMaxCreaseStepFaces)
-      throw MeshError("a sharpness of " + number_text(sharpest) + " takes " + std::to_string(steps) +
-                      " whole-mesh subdivision steps, which would make more than " +
-                      std::to_string(limits::kMaxCreaseStepFaces) + " faces from this mesh's " + std::to_string(faces) +
-                      " (the limit); lower the sharpness");
+  // The steps this mesh can take within the limit: step k + 1 makes first * 4^k faces.
+  int allowed = 0;
+  for (std::size_t made = first; made <= limits::kMaxCreaseStepFaces && allowed < steps; made *= 4) ++allowed;
+  if (allowed < steps)
+    throw MeshError("a sharpness of " + number_text(sharpest) + " takes " + std::to_string(steps) +
+                    " whole-mesh subdivision steps, which would make more than " +
+                    std::to_string(limits::kMaxCreaseStepFaces) + " faces from this mesh's " + std::to_string(faces) +
+                    " (the limit); lower the sharpness to at most " + std::to_string(allowed) +
+                    " for this mesh (the steps refine the whole mesh, not only round the sharp features)");
 }
 
 LevelSharpness sharpen_step(const Connectivity& parent, const LevelSharpness& sharpness, const CurveCreaseRule& curve,
