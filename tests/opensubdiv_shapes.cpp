@@ -1,0 +1,285 @@
+// check_opensubdiv_shapes: the runtime against OpenSubdiv on OpenSubdiv's own
+// regression shapes (regression/shapes/catmark_*.h and loop_*.h of its source,
+// extracted to OBJ files by scripts/opensubdiv-shapes.sh; they are not
+// bundled). For every shape: either the runtime refuses it (the message is
+// printed), or every node of every face at rate 4 (each sub-face of an N-gon
+// likewise) and the unit normal there are compared with Bfr.
+//
+// Where Bfr disagrees by more than 1e-10 of the bounding box's diagonal, Bfr
+// may be the approximate one: it evaluates irregular features (infinitely
+// sharp ones, extraordinary corners with sharp neighbours) on a patch tree
+// refined to a finite "approximation level". Such a sample counts as agreeing
+// when Bfr's distance to our value shrinks at levels 6, 8, 10 (its
+// approximation converges to ours), or, at a face corner of a mesh without
+// infinitely sharp tags, when our value equals Far's limit point of that
+// vertex after the semi-sharp features have decayed (uniform refinement,
+// then Far's limit masks: exact once every vertex is smooth or on a boundary;
+// Bfr's vertex limit under Chaikin's creasing method is not). A sample where
+// neither holds is a mismatch: the exit status is 1.
+//
+//   check_opensubdiv_shapes CC.sgs LOOP.sgt SHAPE.obj ...
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "bfr_reference.hpp"
+#include "stencil_runtime/stencil_runtime.hpp"
+
+namespace {
+
+using namespace stencil_runtime;
+namespace osd = OpenSubdiv;
+
+using Vec = std::array<double, 3>;
+
+double max_abs_diff(const Vec& a, const Vec& b) {
+  double d = 0;
+  for (int k = 0; k < 3; ++k) d = std::max(d, std::fabs(a[k] - b[k]));
+  return d;
+}
+
+double norm(const Vec& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+
+// Bfr's unit normal from its derivatives; false where they are (nearly)
+// parallel or vanish, so that the normal has no digits to compare.
+bool unit_cross(const Vec& du, const Vec& dv, Vec& n) {
+  n = {du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2], du[0] * dv[1] - du[1] * dv[0]};
+  const double length = norm(n);
+  if (!(length > 1e-9 * norm(du) * norm(dv)) || !(length > 0)) return false;
+  for (double& c : n) c /= length;
+  return true;
+}
+
+struct Sample {
+  std::size_t face;
+  double u, v;
+  int corner_vertex;  // the mesh vertex at this parameter, or -1
+};
+
+// Rate-4 nodes of every face with a surface, in Bfr's parameterization.
+std::vector<Sample> samples_of(const Mesh& mesh, const SurfaceTopology& topology) {
+  std::vector<Sample> out;
+  constexpr int kRate = 4;
+  std::size_t first = 0;
+  for (std::size_t f = 0; f < mesh.face_sizes.size(); first += static_cast<std::size_t>(mesh.face_sizes[f]), ++f) {
+    if (topology.is_hole(f)) continue;
+    const FaceDomain d = topology.domain(f);
+    auto corner = [&](int c) { return mesh.face_vertices[first + static_cast<std::size_t>(c)]; };
+    if (d.kind == FaceDomain::Kind::Quad) {
+      for (int a = 0; a <= kRate; ++a)
+        for (int b = 0; b <= kRate; ++b) {
+          int vertex = -1;
+          if ((a == 0 || a == kRate) && (b == 0 || b == kRate)) vertex = corner(a == 0 ? (b == 0 ? 0 : 3) : (b == 0 ? 1 : 2));
+          out.push_back({f, a / double(kRate), b / double(kRate), vertex});
+        }
+    } else if (d.kind == FaceDomain::Kind::Triangle) {
+      for (int a = 0; a <= kRate; ++a)
+        for (int b = 0; a + b <= kRate; ++b) {
+          int vertex = -1;
+          if (a == 0 && b == 0) vertex = corner(0);
+          if (a == kRate) vertex = corner(1);
+          if (b == kRate) vertex = corner(2);
+          out.push_back({f, a / double(kRate), b / double(kRate), vertex});
+        }
+    } else {
+      for (int s = 0; s < d.corners; ++s)
+        for (int a = 0; a <= kRate; ++a)
+          for (int b = 0; b <= kRate; ++b)
+            out.push_back({f, s % d.u_tiles + a / (2.0 * kRate), s / d.u_tiles + b / (2.0 * kRate), a == 0 && b == 0 ? corner(s) : -1});
+    }
+  }
+  return out;
+}
+
+bfr_reference::Creasing creasing_of(const Mesh& mesh) {
+  bfr_reference::Creasing c;
+  for (const auto& e : mesh.tags.creases) {
+    c.crease_pairs.push_back(e.a);
+    c.crease_pairs.push_back(e.b);
+    c.crease_sharpness.push_back(static_cast<float>(e.sharpness));
+  }
+  for (const auto& e : mesh.tags.corners) {
+    c.corners.push_back(e.vertex);
+    c.corner_sharpness.push_back(static_cast<float>(e.sharpness));
+  }
+  c.chaikin = mesh.tags.chaikin_creases;
+  c.smooth_triangles = mesh.tags.smooth_triangles;
+  c.boundary_corners = mesh.tags.boundary == BoundaryInterpolation::EdgeAndCorner;
+  c.boundary_none = mesh.tags.boundary == BoundaryInterpolation::None;
+  return c;
+}
+
+// Bfr at one approximation level (the reference header fixes level 10).
+class BfrAtLevel {
+ public:
+  BfrAtLevel(const osd::Far::TopologyRefiner& refiner, int level, const std::vector<double>& flat) : flat_(flat) {
+    osd::Bfr::SurfaceFactory::Options options;
+    options.SetApproxLevelSmooth(level).SetApproxLevelSharp(level);
+    factory_ = std::make_unique<osd::Bfr::RefinerSurfaceFactory<>>(refiner, options);
+  }
+  bool has_surface(std::size_t face) const { return factory_->FaceHasLimitSurface(static_cast<int>(face)); }
+  // Point and unit normal (normal_ok false where Bfr's derivatives are parallel).
+  void evaluate(const Sample& s, Vec& point, Vec& normal, bool& normal_ok) const {
+    osd::Bfr::Surface<double> surface;
+    factory_->InitVertexSurface(static_cast<int>(s.face), &surface);
+    std::vector<double> patch(static_cast<std::size_t>(surface.GetNumPatchPoints()) * 3);
+    surface.PreparePatchPoints(flat_.data(), 3, patch.data(), 3);
+    const double uv[2] = {s.u, s.v};
+    Vec du{}, dv{};
+    surface.Evaluate(uv, patch.data(), 3, point.data(), du.data(), dv.data());
+    normal_ok = unit_cross(du, dv, normal);
+  }
+
+ private:
+  const std::vector<double>& flat_;
+  std::unique_ptr<osd::Bfr::RefinerSurfaceFactory<>> factory_;
+};
+
+struct ShapeResult {
+  std::size_t samples = 0, bfr_approximate = 0, far_limit = 0, mismatches = 0, no_normal = 0;
+  double position = 0, normal = 0;  // largest difference to Bfr (level 10), positions over the diagonal
+  std::string worst;
+};
+
+ShapeResult check_shape(const Mesh& mesh, const std::shared_ptr<const Tables>& tables, bool loop) {
+  const auto topology = SurfaceTopology::create(tables, mesh);
+  const Surface surface(topology, mesh.positions);
+  const bfr_reference::Creasing creasing = creasing_of(mesh);
+  std::vector<int> holes;
+  for (const auto& h : mesh.tags.holes) holes.push_back(h.face);
+  const auto scheme = loop ? osd::Sdc::SCHEME_LOOP : osd::Sdc::SCHEME_CATMARK;
+  auto refiner = bfr_reference::make_refiner(static_cast<int>(mesh.positions.size()), mesh.face_sizes, mesh.face_vertices,
+                                             scheme, holes, creasing);
+  if (!refiner) throw std::runtime_error("OpenSubdiv refused the mesh");
+  std::vector<double> flat;
+  for (const Point& p : mesh.positions) flat.insert(flat.end(), p.begin(), p.end());
+  const BfrAtLevel bfr10(*refiner, 10, flat), bfr8(*refiner, 8, flat), bfr6(*refiner, 6, flat);
+
+  Vec lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Point& p : mesh.positions)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  const double tolerance = 1e-10;
+
+  // Far's limit points at the original vertices, once the semi-sharp features
+  // have decayed (no infinitely sharp tag: Far's limit masks at darts and
+  // irregular sharp corners are approximations).
+  bool infinite = false;
+  float sharpest = 0;
+  for (const auto& e : mesh.tags.creases) infinite |= e.sharpness >= 10, sharpest = std::max(sharpest, float(e.sharpness));
+  for (const auto& e : mesh.tags.corners) infinite |= e.sharpness >= 10, sharpest = std::max(sharpest, float(e.sharpness));
+  std::vector<Vec> far_limit;
+  if (!infinite && holes.empty()) {
+    std::vector<Vec> positions(mesh.positions.begin(), mesh.positions.end());
+    const int levels = std::max(1, static_cast<int>(std::ceil(sharpest)));
+    far_limit = bfr_reference::far_points(positions, mesh.face_sizes, mesh.face_vertices, scheme, creasing, levels, true);
+  }
+
+  ShapeResult r;
+  char where[160];
+  for (const Sample& s : samples_of(mesh, *topology)) {
+    ++r.samples;
+    // Faces without a surface (holes, and with boundary interpolation `none`
+    // the faces at boundary vertices) must be the same.
+    Point ours{};
+    bool ours_has_surface = true;
+    try {
+      ours = surface.evaluate(s.face, s.u, s.v, 0.0).point;
+    } catch (const EvaluationError&) {
+      ours_has_surface = false;
+    }
+    if (ours_has_surface != bfr10.has_surface(s.face)) {
+      ++r.mismatches;
+      if (r.worst.empty()) r.worst = "face " + std::to_string(s.face) + (ours_has_surface ? ": a surface where Bfr has none" : ": no surface where Bfr has one");
+      continue;
+    }
+    if (!ours_has_surface) continue;
+    bool ours_normal_ok = true;
+    const Vec ours_normal = [&]() -> Vec {
+      try {
+        return surface.normal(s.face, s.u, s.v);
+      } catch (const EvaluationError&) {
+        ours_normal_ok = false;  // no tangent plane there (docs/runtime.md, "Boundaries")
+        return {0, 0, 0};
+      }
+    }();
+    Vec p10{}, n10{};
+    bool n10_ok = false;
+    bfr10.evaluate(s, p10, n10, n10_ok);
+    const double dp = max_abs_diff(ours, p10) / diagonal;
+    const bool compare_normals = ours_normal_ok && n10_ok;
+    if (n10_ok && !ours_normal_ok) ++r.no_normal;
+    const double dn = compare_normals ? max_abs_diff(ours_normal, n10) : 0;
+    if (dp > r.position) r.position = dp;
+    if (dn > r.normal) r.normal = dn;
+    if (dp <= tolerance && dn <= 1e-8) continue;
+    // Bfr's approximation converging to ours?
+    Vec p8{}, n8{}, p6{}, n6{};
+    bool n8_ok = false, n6_ok = false;
+    bfr8.evaluate(s, p8, n8, n8_ok);
+    bfr6.evaluate(s, p6, n6, n6_ok);
+    auto converges = [](double d6, double d8, double d10, double floor) {
+      return d10 <= floor || (d10 < 0.8 * d8 && d8 < 0.8 * d6);
+    };
+    const bool position_converges = converges(max_abs_diff(ours, p6) / diagonal, max_abs_diff(ours, p8) / diagonal, dp, tolerance);
+    const bool normal_converges =
+        !compare_normals || !n8_ok || !n6_ok || converges(max_abs_diff(ours_normal, n6), max_abs_diff(ours_normal, n8), dn, 1e-8);
+    if (position_converges && normal_converges) {
+      ++r.bfr_approximate;
+      continue;
+    }
+    if (s.corner_vertex >= 0 && !far_limit.empty() &&
+        max_abs_diff(ours, far_limit[static_cast<std::size_t>(s.corner_vertex)]) / diagonal <= tolerance) {
+      ++r.far_limit;
+      continue;
+    }
+    ++r.mismatches;
+    std::snprintf(where, sizeof where, "face %zu (%g, %g): position %.2e, normal %.2e", s.face, s.u, s.v, dp, dn);
+    if (r.worst.empty()) r.worst = where;
+  }
+  return r;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    if (argc < 4) {
+      std::fprintf(stderr, "usage: check_opensubdiv_shapes CATMULL_CLARK.sgs LOOP.sgt SHAPE.obj ...\n");
+      return 2;
+    }
+    const auto quad_tables = Tables::load(argv[1]);
+    const auto loop_tables = Tables::load(argv[2]);
+    int evaluated = 0, refused = 0, failed = 0;
+    std::printf("| shape | faces | samples | largest position difference to Bfr / diagonal | largest normal difference | Bfr approximate (converging to ours) | Far's vertex limit instead | no normal here (Bfr has one) | mismatches |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|\n");
+    for (int i = 3; i < argc; ++i) {
+      const std::string path = argv[i];
+      const std::string name = path.substr(path.find_last_of('/') + 1);
+      const bool loop = name.rfind("loop", 0) == 0;
+      if (!loop && name.rfind("catmark", 0) != 0) continue;  // bilinear shapes: no such scheme here
+      try {
+        const Mesh mesh = read_obj(path);
+        const ShapeResult r = check_shape(mesh, loop ? loop_tables : quad_tables, loop);
+        ++evaluated;
+        if (r.mismatches) ++failed;
+        std::printf("| %s | %zu | %zu | %.1e | %.1e | %zu | %zu | %zu | %zu%s%s |\n", name.c_str(), mesh.face_sizes.size(), r.samples,
+                    r.position, r.normal, r.bfr_approximate, r.far_limit, r.no_normal, r.mismatches, r.worst.empty() ? "" : ": ",
+                    r.worst.c_str());
+      } catch (const Error& e) {
+        ++refused;
+        std::printf("| %s | | | refused: %s | | | | | |\n", name.c_str(), e.what());
+      }
+      std::fflush(stdout);
+    }
+    std::printf("\n%d shapes evaluated (%d with mismatches), %d refused\n", evaluated, failed, refused);
+    return failed ? 1 : 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "check_opensubdiv_shapes: %s\n", e.what());
+    return 1;
+  }
+}
