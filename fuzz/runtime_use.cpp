@@ -63,6 +63,9 @@ void use_surface(const std::shared_ptr<const rt::Tables>& tables, const rt::Mesh
     const auto topology = rt::SurfaceTopology::create(tables, mesh);
     const rt::Surface surface(topology, mesh.positions);
     rt::tessellate(surface, rates, {1});
+    // And with normals: the one-pass kernels (quad/regular_face_samples, the
+    // triangle families' sparse jets and cached centre stencils) under the sanitizers too.
+    rt::tessellate(surface, rates, {1}, true);
     const std::size_t faces = std::min<std::size_t>(topology->face_count(), 8);
     for (int n : tables->rates()) {
       const std::int64_t points[][2] = {{0, 0}, {n, 0}, {0, n}, {n / 3, n / 3}};

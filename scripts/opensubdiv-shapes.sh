@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # OpenSubdiv's own regression shapes (catmark_* and loop_*, 118 meshes with
 # boundaries, creases, corners, holes, Chaikin creasing, non-manifold vertices,
-# valence-2 vertices and poles) through the runtime, against Bfr:
+# valence-2 vertices and poles) through the runtime, against Bfr, and the
+# Catmull-Clark ones under nonpoly too, checked for continuity across edges:
 #
 #   scripts/opensubdiv-shapes.sh OPENSUBDIV_SOURCE [VALENCES]
 #
@@ -40,4 +41,6 @@ echo "opensubdiv-shapes.sh: $count shapes; tables for valences $valences, rates 
 
 build/bin/stencilgen --scheme catmull-clark --valence "$valences" --n 4 --out "$scratch/tables" --quiet >&2
 build/bin/stencilgen --scheme loop --valence "$valences" --n 4 --out "$scratch/tables" --quiet >&2
-build/bin/check_opensubdiv_shapes "$scratch/tables/catmull-clark/catmull-clark.sgs" "$scratch/tables/loop/loop.sgt" "$scratch"/*.obj
+build/bin/stencilgen --scheme nonpoly --valence "$valences" --n 4 --out "$scratch/tables" --quiet >&2
+build/bin/check_opensubdiv_shapes "$scratch/tables/catmull-clark/catmull-clark.sgs" "$scratch/tables/loop/loop.sgt" \
+  --nonpoly "$scratch/tables/nonpoly/nonpoly.sgs" "$scratch"/*.obj

@@ -17,12 +17,20 @@
 // Bfr's vertex limit under Chaikin's creasing method is not). A sample where
 // neither holds is a mismatch: the exit status is 1.
 //
-//   check_opensubdiv_shapes CC.sgs LOOP.sgt SHAPE.obj ...
+// With --nonpoly, the Catmull-Clark shapes are also evaluated under nonpoly,
+// which OpenSubdiv cannot evaluate: there the oracle is continuity. At nine
+// points along every edge between two quads (a mesh edge in exactly two
+// faces, the second face's parameters found from its own corners) both faces
+// must give the same point, to 1e-12 of the diagonal, and, inside the edge
+// and off infinitely sharp edges, the same unit normal to 1e-10.
+//
+//   check_opensubdiv_shapes CC.sgs LOOP.sgt [--nonpoly NONPOLY.sgs] SHAPE.obj ...
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -244,21 +252,98 @@ ShapeResult check_shape(const Mesh& mesh, const std::shared_ptr<const Tables>& t
   return r;
 }
 
+struct SeamResult {
+  std::size_t edges = 0, mismatches = 0;
+  double position = 0, normal = 0;  // largest gaps: positions over the diagonal
+  std::string worst;
+};
+
+// Continuity of a quad scheme's surface across the edges between two quads.
+SeamResult check_seams(const Mesh& mesh, const std::shared_ptr<const Tables>& tables) {
+  const auto topology = SurfaceTopology::create(tables, mesh);
+  const Surface surface(topology, mesh.positions);
+  Vec lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Point& p : mesh.positions)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  // Each directed edge a -> b of a quad with a surface: its face and which edge of the face it is.
+  struct Side {
+    std::size_t face;
+    int edge;
+  };
+  std::map<std::pair<int, int>, std::vector<Side>> sides;
+  std::map<std::pair<int, int>, int> faces_at_edge;
+  std::size_t first = 0;
+  for (std::size_t f = 0; f < mesh.face_sizes.size(); first += static_cast<std::size_t>(mesh.face_sizes[f]), ++f) {
+    const int n = mesh.face_sizes[f];
+    for (int k = 0; k < n; ++k) {
+      const int a = mesh.face_vertices[first + static_cast<std::size_t>(k)];
+      const int b = mesh.face_vertices[first + static_cast<std::size_t>((k + 1) % n)];
+      ++faces_at_edge[{std::min(a, b), std::max(a, b)}];
+      if (n == 4 && !topology->is_hole(f)) sides[{a, b}].push_back({f, k});
+    }
+  }
+  std::map<std::pair<int, int>, double> sharpness;
+  for (const auto& e : mesh.tags.creases) sharpness[{std::min(e.a, e.b), std::max(e.a, e.b)}] = e.sharpness;
+  // The point at t along edge k of a quad (corner k to corner k + 1).
+  auto along = [](int k, double t, double& u, double& v) {
+    static const double cu[5] = {0, 1, 1, 0, 0}, cv[5] = {0, 0, 1, 1, 0};
+    u = cu[k] + t * (cu[k + 1] - cu[k]);
+    v = cv[k] + t * (cv[k + 1] - cv[k]);
+  };
+  SeamResult r;
+  char where[160];
+  for (const auto& [ab, here] : sides) {
+    const auto [a, b] = ab;
+    if (a > b || here.size() != 1) continue;
+    const auto there = sides.find({b, a});
+    if (there == sides.end() || there->second.size() != 1 || faces_at_edge[{a, b}] != 2) continue;
+    ++r.edges;
+    const auto tag = sharpness.find({a, b});
+    const bool smooth_across = tag == sharpness.end() || tag->second < 10;
+    for (int q = 0; q <= 8; ++q) {
+      double u1, v1, u2, v2;
+      along(here[0].edge, q / 8.0, u1, v1);
+      along(there->second[0].edge, 1 - q / 8.0, u2, v2);
+      const Point p1 = surface.evaluate(here[0].face, u1, v1, 0.0).point;
+      const Point p2 = surface.evaluate(there->second[0].face, u2, v2, 0.0).point;
+      const double dp = max_abs_diff(p1, p2) / diagonal;
+      double dn = 0;
+      if (smooth_across && q > 0 && q < 8)
+        dn = max_abs_diff(surface.normal(here[0].face, u1, v1), surface.normal(there->second[0].face, u2, v2));
+      r.position = std::max(r.position, dp);
+      r.normal = std::max(r.normal, dn);
+      if (dp > 1e-12 || dn > 1e-10) {
+        ++r.mismatches;
+        std::snprintf(where, sizeof where, "edge %d-%d at %g: position %.2e, normal %.2e", a, b, q / 8.0, dp, dn);
+        if (r.worst.empty()) r.worst = where;
+      }
+    }
+  }
+  return r;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
-    if (argc < 4) {
-      std::fprintf(stderr, "usage: check_opensubdiv_shapes CATMULL_CLARK.sgs LOOP.sgt SHAPE.obj ...\n");
+    std::vector<std::string> args(argv + 1, argv + argc);
+    std::shared_ptr<const Tables> nonpoly_tables;
+    if (args.size() >= 4 && args[2] == "--nonpoly") {
+      nonpoly_tables = Tables::load(args[3]);
+      args.erase(args.begin() + 2, args.begin() + 4);
+    }
+    if (args.size() < 3) {
+      std::fprintf(stderr, "usage: check_opensubdiv_shapes CATMULL_CLARK.sgs LOOP.sgt [--nonpoly NONPOLY.sgs] SHAPE.obj ...\n");
       return 2;
     }
-    const auto quad_tables = Tables::load(argv[1]);
-    const auto loop_tables = Tables::load(argv[2]);
+    const auto quad_tables = Tables::load(args[0]);
+    const auto loop_tables = Tables::load(args[1]);
+    const std::vector<std::string> shapes(args.begin() + 2, args.end());
     int evaluated = 0, refused = 0, failed = 0;
     std::printf("| shape | faces | samples | largest position difference to Bfr / diagonal | largest normal difference | Bfr approximate (converging to ours) | Far's vertex limit instead | no normal here (Bfr has one) | mismatches |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|\n");
-    for (int i = 3; i < argc; ++i) {
-      const std::string path = argv[i];
+    for (const std::string& path : shapes) {
       const std::string name = path.substr(path.find_last_of('/') + 1);
       const bool loop = name.rfind("loop", 0) == 0;
       if (!loop && name.rfind("catmark", 0) != 0) continue;  // bilinear shapes: no such scheme here
@@ -277,7 +362,29 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     }
     std::printf("\n%d shapes evaluated (%d with mismatches), %d refused\n", evaluated, failed, refused);
-    return failed ? 1 : 0;
+    int seam_failed = 0;
+    if (nonpoly_tables) {
+      int seam_evaluated = 0, seam_refused = 0;
+      std::printf("\nnonpoly on the Catmull-Clark shapes, across the edges between two quads:\n\n");
+      std::printf("| shape | edges | largest position gap / diagonal | largest normal gap | mismatches |\n|---|---|---|---|---|\n");
+      for (const std::string& path : shapes) {
+        const std::string name = path.substr(path.find_last_of('/') + 1);
+        if (name.rfind("catmark", 0) != 0) continue;
+        try {
+          const SeamResult r = check_seams(read_obj(path), nonpoly_tables);
+          ++seam_evaluated;
+          if (r.mismatches) ++seam_failed;
+          std::printf("| %s | %zu | %.1e | %.1e | %zu%s%s |\n", name.c_str(), r.edges, r.position, r.normal, r.mismatches,
+                      r.worst.empty() ? "" : ": ", r.worst.c_str());
+        } catch (const Error& e) {
+          ++seam_refused;
+          std::printf("| %s | | refused: %s | | |\n", name.c_str(), e.what());
+        }
+        std::fflush(stdout);
+      }
+      std::printf("\nnonpoly: %d shapes evaluated (%d with gaps), %d refused\n", seam_evaluated, seam_failed, seam_refused);
+    }
+    return failed || seam_failed ? 1 : 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "check_opensubdiv_shapes: %s\n", e.what());
     return 1;
