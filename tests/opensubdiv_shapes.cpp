@@ -24,6 +24,15 @@
 // must give the same point, to 1e-12 of the diagonal, and, inside the edge
 // and off infinitely sharp edges, the same unit normal to 1e-10.
 //
+// Closest points on every shape evaluated (its own scheme): 300 query points
+// uniform in the box of twice the bounding box's volume (seed 000's protocol)
+// and 100 on or near the surface, against brute force: the nearest of the
+// exact limit points at every rate-8 node, then Gauss-Newton from the eight
+// nearest nodes within their (quad or triangle) faces. No reported distance
+// may exceed the brute force's by more than the tolerance (1e-9 of the
+// diagonal), and the reported point must be the surface's point at the
+// reported parameters (1e-12).
+//
 //   check_opensubdiv_shapes CC.sgs LOOP.sgt [--nonpoly NONPOLY.sgs] SHAPE.obj ...
 #include <algorithm>
 #include <array>
@@ -34,7 +43,10 @@
 #include <string>
 #include <vector>
 
+#include <random>
+
 #include "bfr_reference.hpp"
+#include "stencil_runtime/closest_point.hpp"
 #include "stencil_runtime/stencil_runtime.hpp"
 
 namespace {
@@ -323,6 +335,137 @@ SeamResult check_seams(const Mesh& mesh, const std::shared_ptr<const Tables>& ta
   return r;
 }
 
+struct DistanceResult {
+  std::size_t queries = 0, violations = 0;
+  double above_dense = -1e300, off_surface = 0;  // over the diagonal
+  std::string worst;
+};
+
+// Closest points against the nearest of a dense set of exact limit points.
+DistanceResult check_distances(const Mesh& mesh, const std::shared_ptr<const Tables>& tables) {
+  const auto topology = SurfaceTopology::create(tables, mesh);
+  const Surface surface(topology, mesh.positions);
+  Vec lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Point& p : mesh.positions)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  constexpr int kRate = 8;
+  struct Node {
+    Point point;
+    std::size_t face;
+    double u, v;
+    FaceDomain::Kind kind;
+  };
+  std::vector<Node> dense;
+  std::size_t first = 0;
+  for (std::size_t f = 0; f < mesh.face_sizes.size(); first += static_cast<std::size_t>(mesh.face_sizes[f]), ++f) {
+    if (topology->is_hole(f)) continue;
+    const FaceDomain d = topology->domain(f);
+    auto add = [&](double u, double v) {
+      try {
+        dense.push_back({surface.evaluate(f, u, v, 0.0).point, f, u, v, d.kind});
+      } catch (const EvaluationError&) {  // no surface there (boundary interpolation `none`)
+      }
+    };
+    for (int a = 0; a <= kRate; ++a)
+      for (int b = 0; b <= kRate; ++b) {
+        if (d.kind == FaceDomain::Kind::Quad) add(a / double(kRate), b / double(kRate));
+        if (d.kind == FaceDomain::Kind::Triangle && a + b <= kRate) add(a / double(kRate), b / double(kRate));
+        if (d.kind == FaceDomain::Kind::QuadSubfaces && a <= kRate / 2 && b <= kRate / 2)
+          for (int t = 0; t < d.corners; ++t) add(t % d.u_tiles + a / double(kRate), t / d.u_tiles + b / double(kRate));
+      }
+  }
+  DistanceResult r;
+  if (dense.empty()) return r;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-0.5, 0.5);
+  std::normal_distribution<double> offset(0, 1e-3 * diagonal);
+  std::vector<Point> queries;
+  const double grow = std::cbrt(2.0);  // twice the volume
+  for (int k = 0; k < 300; ++k) {
+    Point p;
+    for (int j = 0; j < 3; ++j) p[j] = (lo[j] + hi[j]) / 2 + unit(rng) * (hi[j] - lo[j]) * grow;
+    queries.push_back(p);
+  }
+  for (int k = 0; k < 100; ++k) {
+    Point p = dense[rng() % dense.size()].point;
+    if (k % 4 != 0)  // a quarter on the surface itself
+      for (double& c : p) c += offset(rng);
+    queries.push_back(p);
+  }
+  ClosestPointOptions options;
+  options.threads = 1;
+  const ClosestPointQuery query(surface, options);
+  const std::vector<ClosestPoint> found = query.find(queries);
+  char where[160];
+  for (std::size_t k = 0; k < queries.size(); ++k) {
+    ++r.queries;
+    const Point& q = queries[k];
+    auto distance = [&](const Point& p) { return std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]); };
+    // The eight nearest nodes, then Gauss-Newton from each (the node itself on an N-gon's sub-faces).
+    std::vector<std::pair<double, std::size_t>> order;
+    for (std::size_t i = 0; i < dense.size(); ++i) order.push_back({distance(dense[i].point), i});
+    const std::size_t seeds = std::min<std::size_t>(8, order.size());
+    std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(seeds), order.end());
+    double nearest = order[0].first;
+    for (std::size_t i = 0; i < seeds; ++i) {
+      const Node& n = dense[order[i].second];
+      if (n.kind == FaceDomain::Kind::QuadSubfaces) continue;
+      const bool triangle = n.kind == FaceDomain::Kind::Triangle;
+      auto inside = [&](double& u, double& v) {  // the nearest parameter in the face's domain
+        u = std::clamp(u, 0.0, 1.0), v = std::clamp(v, 0.0, 1.0);
+        if (triangle && u + v > 1) {
+          const double excess = (u + v - 1) / 2;
+          u = std::clamp(u - excess, 0.0, 1.0), v = 1 - u;
+        }
+      };
+      double u = n.u, v = n.v, here = order[i].first;
+      for (int iteration = 0; iteration < 20; ++iteration) {
+        Derivatives d;
+        try {
+          d = surface.derivatives(n.face, u, v);
+        } catch (const EvaluationError&) {  // at an extraordinary vertex: nudge inside
+          u += 1e-7 * (1 / 3.0 - u), v += 1e-7 * (1 / 3.0 - v);
+          continue;
+        }
+        const Vec r{d.point[0] - q[0], d.point[1] - q[1], d.point[2] - q[2]};
+        auto dot = [](const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+        const double a = dot(d.du, d.du), b = dot(d.du, d.dv), c = dot(d.dv, d.dv), gu = dot(d.du, r), gv = dot(d.dv, r);
+        const double det = a * c - b * b;
+        if (!(det > 0)) break;
+        double step = 1;
+        bool better = false;
+        for (int halving = 0; halving < 30 && !better; ++halving, step /= 2) {
+          double nu = u - step * (c * gu - b * gv) / det, nv = v - step * (a * gv - b * gu) / det;
+          inside(nu, nv);
+          try {
+            const double there = distance(surface.evaluate(n.face, nu, nv, 0.0).point);
+            if (there < here) here = there, u = nu, v = nv, better = true;
+          } catch (const EvaluationError&) {
+          }
+        }
+        if (!better) break;
+      }
+      nearest = std::min(nearest, here);
+    }
+    if (!found[k].found) {
+      ++r.violations;
+      if (r.worst.empty()) r.worst = "query " + std::to_string(k) + ": no point found";
+      continue;
+    }
+    const double above = (found[k].distance - nearest) / diagonal;
+    const double off = max_abs_diff(surface.evaluate(found[k].face, found[k].u, found[k].v, 0.0).point, found[k].point) / diagonal;
+    r.above_dense = std::max(r.above_dense, above);
+    r.off_surface = std::max(r.off_surface, off);
+    if (above > 1e-9 || off > 1e-12) {
+      ++r.violations;
+      std::snprintf(where, sizeof where, "query %zu: %.2e above brute force, %.2e off the surface", k, above, off);
+      if (r.worst.empty()) r.worst = where;
+    }
+  }
+  return r;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -384,7 +527,25 @@ int main(int argc, char** argv) {
       }
       std::printf("\nnonpoly: %d shapes evaluated (%d with gaps), %d refused\n", seam_evaluated, seam_failed, seam_refused);
     }
-    return failed || seam_failed ? 1 : 0;
+    int distance_failed = 0, distance_evaluated = 0;
+    std::printf("\nClosest points (each shape under its own scheme) against brute force (rate-8 nodes, then Gauss-Newton):\n\n");
+    std::printf("| shape | queries | largest excess over brute force / diagonal | largest distance of the point from the surface | violations |\n|---|---|---|---|---|\n");
+    for (const std::string& path : shapes) {
+      const std::string name = path.substr(path.find_last_of('/') + 1);
+      const bool loop = name.rfind("loop", 0) == 0;
+      if (!loop && name.rfind("catmark", 0) != 0) continue;
+      try {
+        const DistanceResult r = check_distances(read_obj(path), loop ? loop_tables : quad_tables);
+        ++distance_evaluated;
+        if (r.violations) ++distance_failed;
+        std::printf("| %s | %zu | %.1e | %.1e | %zu%s%s |\n", name.c_str(), r.queries, r.above_dense, r.off_surface, r.violations,
+                    r.worst.empty() ? "" : ": ", r.worst.c_str());
+      } catch (const Error&) {  // refused above, with its reason
+      }
+      std::fflush(stdout);
+    }
+    std::printf("\nclosest points: %d shapes (%d with violations)\n", distance_evaluated, distance_failed);
+    return failed || seam_failed || distance_failed ? 1 : 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "check_opensubdiv_shapes: %s\n", e.what());
     return 1;
