@@ -56,6 +56,19 @@ namespace osd = OpenSubdiv;
 
 using Vec = std::array<double, 3>;
 
+struct Box {
+  Vec lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  double diagonal() const { return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]); }
+};
+
+// The control points' bounding box: differences are measured against its diagonal.
+Box bounding_box(const Mesh& mesh) {
+  Box b;
+  for (const Point& p : mesh.positions)
+    for (int k = 0; k < 3; ++k) b.lo[k] = std::min(b.lo[k], p[k]), b.hi[k] = std::max(b.hi[k], p[k]);
+  return b;
+}
+
 double max_abs_diff(const Vec& a, const Vec& b) {
   double d = 0;
   for (int k = 0; k < 3; ++k) d = std::max(d, std::fabs(a[k] - b[k]));
@@ -179,10 +192,7 @@ ShapeResult check_shape(const Mesh& mesh, const std::shared_ptr<const Tables>& t
   for (const Point& p : mesh.positions) flat.insert(flat.end(), p.begin(), p.end());
   const BfrAtLevel bfr10(*refiner, 10, flat), bfr8(*refiner, 8, flat), bfr6(*refiner, 6, flat);
 
-  Vec lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const Point& p : mesh.positions)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  const double diagonal = bounding_box(mesh).diagonal();
   const double tolerance = 1e-10;
 
   // Far's limit points at the original vertices, once the semi-sharp features
@@ -274,10 +284,7 @@ struct SeamResult {
 SeamResult check_seams(const Mesh& mesh, const std::shared_ptr<const Tables>& tables) {
   const auto topology = SurfaceTopology::create(tables, mesh);
   const Surface surface(topology, mesh.positions);
-  Vec lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const Point& p : mesh.positions)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  const double diagonal = bounding_box(mesh).diagonal();
   // Each directed edge a -> b of a quad with a surface: its face and which edge of the face it is.
   struct Side {
     std::size_t face;
@@ -345,10 +352,8 @@ struct DistanceResult {
 DistanceResult check_distances(const Mesh& mesh, const std::shared_ptr<const Tables>& tables) {
   const auto topology = SurfaceTopology::create(tables, mesh);
   const Surface surface(topology, mesh.positions);
-  Vec lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const Point& p : mesh.positions)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  const Box box = bounding_box(mesh);
+  const double diagonal = box.diagonal();
   constexpr int kRate = 8;
   struct Node {
     Point point;
@@ -384,7 +389,7 @@ DistanceResult check_distances(const Mesh& mesh, const std::shared_ptr<const Tab
   const double grow = std::cbrt(2.0);  // twice the volume
   for (int k = 0; k < 300; ++k) {
     Point p;
-    for (int j = 0; j < 3; ++j) p[j] = (lo[j] + hi[j]) / 2 + unit(rng) * (hi[j] - lo[j]) * grow;
+    for (int j = 0; j < 3; ++j) p[j] = (box.lo[j] + box.hi[j]) / 2 + unit(rng) * (box.hi[j] - box.lo[j]) * grow;
     queries.push_back(p);
   }
   for (int k = 0; k < 100; ++k) {
