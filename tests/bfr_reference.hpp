@@ -107,12 +107,12 @@ class BfrLimit {
  public:
   BfrLimit(const std::vector<std::array<double, 3>>& positions, const std::vector<int>& sizes,
            const std::vector<int>& indices, osd::Sdc::SchemeType scheme = osd::Sdc::SCHEME_CATMARK,
-           const std::vector<int>& holes = {}, const Creasing& creasing = {})
+           const std::vector<int>& holes = {}, const Creasing& creasing = {}, int approx_level = kApproxLevel)
       : sizes_(sizes), indices_(indices),
         refiner_(make_refiner(static_cast<int>(positions.size()), sizes_, indices_, scheme, holes, creasing)) {
     if (!refiner_) throw std::runtime_error("OpenSubdiv refused the mesh");
     osd::Bfr::SurfaceFactory::Options options;
-    options.SetApproxLevelSmooth(kApproxLevel).SetApproxLevelSharp(kApproxLevel);
+    options.SetApproxLevelSmooth(approx_level).SetApproxLevelSharp(approx_level);
     factory_ = std::make_unique<osd::Bfr::RefinerSurfaceFactory<>>(*refiner_, options);
     for (const auto& p : positions) flat_.insert(flat_.end(), p.begin(), p.end());
   }
