@@ -38,6 +38,25 @@ class Budget {
   long left_ = kWeightBudget;
 };
 
+// Semi-sharp features are applied by whole-mesh steps, one per unit of
+// sharpness: a few tagged faces with a corner of sharpness 9 become a million
+// prepared faces, legal and within the runtime's limit but seconds of work
+// under the sanitizers (a libFuzzer timeout, 2026-12-03). Such inputs are left
+// out, as the weight budget leaves out long sweeps.
+constexpr double kCreaseStepFaceBudget = 65536;
+
+// The faces those steps would make: every face-vertex (the first step's
+// quads), times 4 for each further step.
+double crease_step_faces(const rt::Mesh& mesh) {
+  double sharpest = 0;
+  for (const auto& c : mesh.tags.creases)
+    if (c.sharpness < 10) sharpest = std::max(sharpest, c.sharpness);
+  for (const auto& c : mesh.tags.corners)
+    if (c.sharpness < 10) sharpest = std::max(sharpest, c.sharpness);
+  if (!(sharpest > 0)) return 0;  // NaN included: refused before any step
+  return static_cast<double>(mesh.face_vertices.size()) * std::pow(4.0, std::ceil(sharpest) - 1);
+}
+
 const rt::Mesh& bundled_mesh(const char* name) {
   static std::map<std::string, rt::Mesh> meshes;
   auto it = meshes.find(name);
@@ -243,6 +262,7 @@ void use_mesh(const rt::Mesh& input) {
   } catch (const rt::MeshError&) {
   }
   const std::vector<int> view_rates = stencil_tools::rates_for_view(mesh, stencil_tools::Camera{}, 8);
+  if (crease_step_faces(mesh) > kCreaseStepFaceBudget) return;
   Budget budget;
   use_surface(triangles ? triangle_tables : quad_tables, mesh, view_rates, budget);
 }
