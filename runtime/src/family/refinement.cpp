@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include "stencil_runtime/error.hpp"
+
 namespace stencil_runtime {
 
 void merge_entries(SparseEntries& entries) {
@@ -46,8 +48,34 @@ void RefinementStep::apply(const Point* in, Point* out) const {
                     [&](const tbb::blocked_range<std::size_t>& r) { rows_in(r.begin(), r.end()); });
 }
 
+void Refinement::add(RefinementStep step) {
+  // The appended steps read the chain's output by position: it may not change under them.
+  if (!appended_.empty()) throw EvaluationError("internal: a refinement step added after an appended one");
+  steps_.push_back(std::move(step));
+}
+
+void Refinement::prepend(RefinementStep step) {
+  if (!appended_.empty() && step.rows() != control_)
+    throw EvaluationError("internal: a refinement step prepended that changes the vertices the appended steps read");
+  control_ = step.input_vertices;
+  steps_.insert(steps_.begin(), std::move(step));
+}
+
+void Refinement::append(RefinementStep step, std::size_t input_offset) {
+  const std::size_t prepared = prepared_vertices();
+  if (input_offset > prepared || step.input_vertices > prepared - input_offset)
+    throw EvaluationError("internal: an appended refinement step reads beyond the prepared vertices");
+  appended_vertices_ += step.rows();
+  appended_.push_back({std::move(step), input_offset, prepared});
+}
+
 void Refinement::apply(const Point* control, std::vector<std::vector<Point>>& levels, std::vector<Point>& prepared) const {
   prepared.resize(prepared_vertices());
+  apply_chain(control, levels, prepared);
+  for (const Appended& a : appended_) a.step.apply(prepared.data() + a.input_offset, prepared.data() + a.output_offset);
+}
+
+void Refinement::apply_chain(const Point* control, std::vector<std::vector<Point>>& levels, std::vector<Point>& prepared) const {
   if (steps_.empty()) {
     std::copy(control, control + control_, prepared.begin());
     return;
@@ -85,6 +113,22 @@ RefinementStep append_rows(std::size_t vertices, const std::vector<std::vector<s
 
 void Refinement::fold(SparseEntries& row) const {
   SparseEntries next;
+  // The appended blocks, last first (each reads only blocks before it), then the chain.
+  for (std::size_t s = appended_.size(); s-- > 0;) {
+    const Appended& a = appended_[s];
+    next.clear();
+    for (const auto& [r, w] : row) {
+      if (r < a.output_offset) {
+        next.emplace_back(r, w);
+        continue;
+      }
+      const std::size_t k = r - a.output_offset;
+      for (std::size_t e = a.step.offsets[k]; e != a.step.offsets[k + 1]; ++e)
+        next.emplace_back(static_cast<std::uint32_t>(a.input_offset + a.step.columns[e]), w * a.step.weights[e]);
+    }
+    merge_entries(next);
+    row.swap(next);
+  }
   for (std::size_t s = steps_.size(); s-- > 0;) {
     const RefinementStep& step = steps_[s];
     next.clear();

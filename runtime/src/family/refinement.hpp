@@ -38,14 +38,18 @@ RefinementStep append_rows(std::size_t vertices, const std::vector<std::vector<s
 class Refinement {
  public:
   explicit Refinement(std::size_t control_vertices = 0) : control_(control_vertices) {}
-  void add(RefinementStep step) { steps_.push_back(std::move(step)); }
+  void add(RefinementStep step);
   // A step before all the others: the control vertices become its input.
-  void prepend(RefinementStep step) {
-    control_ = step.input_vertices;
-    steps_.insert(steps_.begin(), std::move(step));
-  }
+  void prepend(RefinementStep step);
+  // A step after all the others whose rows read a block of the prepared
+  // vertices so far, [input_offset, input_offset + step.input_vertices), and
+  // are appended to them: the levels refined round semi-sharp features
+  // (quad/semi_sharp_levels.hpp), each made from the level before it. Every
+  // add() comes before the first append().
+  void append(RefinementStep step, std::size_t input_offset);
+
   std::size_t control_vertices() const { return control_; }
-  std::size_t prepared_vertices() const { return steps_.empty() ? control_ : steps_.back().rows(); }
+  std::size_t prepared_vertices() const { return chain_vertices() + appended_vertices_; }
   const std::vector<RefinementStep>& steps() const { return steps_; }
 
   // prepared = S_k ... S_1 * control; `levels` holds the intermediate levels
@@ -56,8 +60,17 @@ class Refinement {
   void fold(SparseEntries& row) const;
 
  private:
+  struct Appended {
+    RefinementStep step;
+    std::size_t input_offset = 0, output_offset = 0;
+  };
+  std::size_t chain_vertices() const { return steps_.empty() ? control_ : steps_.back().rows(); }
+  void apply_chain(const Point* control, std::vector<std::vector<Point>>& levels, std::vector<Point>& prepared) const;
+
   std::size_t control_;
   std::vector<RefinementStep> steps_;
+  std::vector<Appended> appended_;
+  std::size_t appended_vertices_ = 0;
 };
 
 // Sorts entries by column and merges duplicates.

@@ -38,6 +38,16 @@ class LevelSharpness {
   float vertex(int v) const;
   float max() const;  // the largest semi-sharp sharpness left (0 when none)
 
+  // Calls f(a, b, s) for each sharp edge (a < b) and g(v, s) for each sharp vertex.
+  template <class F>
+  void for_each_edge(F&& f) const {
+    for (const auto& [e, s] : edges_) f(e.first, e.second, s);
+  }
+  template <class G>
+  void for_each_vertex(G&& g) const {
+    for (const auto& [v, s] : vertices_) g(v, s);
+  }
+
   void set_edge(int a, int b, float s);  // ignored unless s > 0
   void set_vertex(int v, float s);       // ignored unless s > 0
   LevelSharpness empty_like() const {
