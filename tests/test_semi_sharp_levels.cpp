@@ -6,16 +6,19 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <map>
 #include <random>
 #include <set>
 
 #include "bfr_reference.hpp"
 #include "cli.hpp"
+#include "closest_point_checks.hpp"
 #include "open_meshes.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
 #include "sharp_features.hpp"
 #include "quad/quad_creases.hpp"
+#include "quad/quad_family.hpp"
 #include "quad/semi_sharp_levels.hpp"
 
 using namespace stencil_runtime;
@@ -228,4 +231,202 @@ TEST_CASE("appended refinement steps read the prepared vertices before them, and
     }
     CHECK(distance(p, expect[v]) < 1e-14);
   }
+}
+
+namespace {
+
+// Sets the whole-mesh budget for semi-sharp features while alive (0: always refine round them).
+struct WholeMeshBudget {
+  std::size_t before = whole_mesh_crease_faces();
+  explicit WholeMeshBudget(std::size_t faces) { set_whole_mesh_crease_faces(faces); }
+  ~WholeMeshBudget() { set_whole_mesh_crease_faces(before); }
+};
+
+Surface surface_of(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, const SharpFeatures& f) {
+  return Surface(SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, {}, f.ours),
+                 mesh.positions);
+}
+
+// Largest distance over the size between two surfaces at every node of every face at rates 1..8.
+double node_difference(const Surface& a, const Surface& b, const Mesh& mesh) {
+  double worst = 0;
+  for (std::size_t face = 0; face < mesh.face_count(); ++face)
+    for (long n = 1; n <= 8; ++n)
+      for (long j = 0; j <= n; ++j)
+        for (long i = 0; i <= n; ++i) worst = std::max(worst, distance(a.evaluate(face, grid(i, j, n)), b.evaluate(face, grid(i, j, n))));
+  return worst / extent(mesh);
+}
+
+// Largest distance over the size from our surface at every node of rate `n` of every face to Bfr's.
+double bfr_node_difference(const Surface& ours, const Mesh& mesh, const SharpFeatures& f, long n) {
+  bfr_reference::BfrLimit bfr(mesh.positions, mesh.face_sizes, mesh.face_vertices, bfr_reference::osd::Sdc::SCHEME_CATMARK, {}, f.osd);
+  double worst = 0;
+  for (std::size_t face = 0; face < mesh.face_count(); ++face)
+    for (long j = 0; j <= n; ++j)
+      for (long i = 0; i <= n; ++i)
+        worst = std::max(worst, distance(ours.evaluate(face, grid(i, j, n)),
+                                         bfr.evaluate(static_cast<int>(face), static_cast<double>(i) / n, static_cast<double>(j) / n)));
+  return worst / extent(mesh);
+}
+
+// Whether every edge of the soup is shared by exactly two of its polygons (a closed surface).
+bool closed(const PolygonSoup& soup) {
+  std::map<std::pair<int, int>, int> uses;
+  auto edge = [&](int a, int b) { ++uses[{std::min(a, b), std::max(a, b)}]; };
+  for (const auto& q : soup.quads)
+    for (int k = 0; k < 4; ++k) edge(q[static_cast<std::size_t>(k)], q[static_cast<std::size_t>((k + 1) % 4)]);
+  for (const auto& t : soup.triangles)
+    for (int k = 0; k < 3; ++k) edge(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]);
+  for (const auto& [e, n] : uses)
+    if (n != 2) return false;
+  return !uses.empty();
+}
+
+}  // namespace
+
+TEST_CASE("surfaces refined round their semi-sharp features equal those refined whole, and Bfr's", "[runtime][creases][opensubdiv]") {
+  const auto tables = catmull_clark();
+  std::mt19937 rng(20261203u);
+  struct Case {
+    std::string name;
+    Mesh mesh;
+    SharpFeatures f;
+  };
+  std::vector<Case> cases;
+  {
+    Case c{"cube, an edge of 3.5, a corner of 2.25", load("cube"), {}};
+    c.f.crease(c.mesh.face_vertices[0], c.mesh.face_vertices[1], 3.5f);
+    c.f.corner(c.mesh.face_vertices[6], 2.25f);
+    cases.push_back(c);
+  }
+  {
+    Case c{"chess piece, creases up to 3.75 and an infinitely sharp one", load("chess-piece"), {}};
+    const auto edges = edges_of(c.mesh);
+    for (int k = 0; k < 8; ++k) {
+      const auto& [a, b] = edges[rng() % edges.size()];
+      c.f.crease(a, b, k == 0 ? 10.0f : 0.75f + static_cast<float>(rng() % 4));
+    }
+    c.f.corner(static_cast<int>(rng() % c.mesh.vertex_count()), 2.5f);
+    cases.push_back(c);
+  }
+  {
+    Case c{"open grid 6x5 with creases, edge-and-corner", test_meshes::open_grid(6, 5), {}};
+    for (int i = 0; i < 6; ++i) c.f.crease(2 * 7 + i, 2 * 7 + i + 1, 3.0f);
+    c.f.crease(0, 1, 2.0f);
+    c.f.boundary(BoundaryInterpolation::EdgeAndCorner);
+    cases.push_back(c);
+  }
+  for (const Case& c : cases) {
+    INFO(c.name);
+    const Surface whole = surface_of(tables, c.mesh, c.f);
+    std::string preparation;
+    const Surface local = [&] {
+      const WholeMeshBudget budget(0);
+      return surface_of(tables, c.mesh, c.f);
+    }();
+    INFO("whole: " << whole.topology().preparation() << "; local: " << local.topology().preparation());
+    CHECK(local.topology().preparation().find("refined round the semi-sharp features") != std::string::npos);
+    CHECK(whole.topology().preparation().find("refined round") == std::string::npos);
+    CHECK(node_difference(local, whole, c.mesh) < 1e-13);
+    // Bfr approximates next to the ends of infinitely sharp creases (darts: tests/test_creases.cpp).
+    if (c.name.find("infinitely") == std::string::npos) CHECK(bfr_node_difference(local, c.mesh, c.f, 4) < 1e-10);
+    // Tessellations: closed where the mesh is, and their points on the surface.
+    for (bool normals : {false, true}) {
+      std::vector<int> rates(c.mesh.face_count());
+      for (int& r : rates) r = 1 + static_cast<int>(rng() % 8);
+      const PolygonSoup a = tessellate(local, rates, {1}, normals), b = tessellate(whole, rates, {1}, normals);
+      if (c.name.rfind("open", 0) != 0) CHECK(closed(a));
+      CHECK(a.triangle_count() > 0);
+      CHECK(b.triangle_count() > 0);
+      if (normals) CHECK(a.normals.size() == a.positions.size());
+    }
+    // Every point of a tessellation of ours is the whole-mesh surface's at its parameter (to float rounding):
+    // prepared face f's n^2 cell centres come first, face by face.
+    std::vector<int> rates(c.mesh.face_count());
+    for (int& r : rates) r = 1 + static_cast<int>(rng() % 8);
+    const TessellationPlan plan(local.shared_topology(), rates, {1});
+    PolygonSoup soup = plan.make_soup();
+    plan.evaluate(local, soup.positions.data());
+    const auto& family = dynamic_cast<const QuadFamily&>(local.topology().family());
+    double worst = 0;
+    std::size_t at = 0;
+    for (std::size_t f = 0; f < plan.prepared_rates().size(); ++f) {
+      const long n = plan.prepared_rates()[f];
+      for (long j = 0; j < n; ++j)
+        for (long i = 0; i < n; ++i, ++at) {
+          long x = 0, y = 0;
+          family.patch(f).to_patch(2 * i + 1, 2 * j + 1, 2 * n, x, y);
+          const FaceParameterReal o = family.original(f, static_cast<double>(x) / (2.0 * n), static_cast<double>(y) / (2.0 * n));
+          const Point exact = whole.evaluate(o.face, o.u, o.v, 1e-12).point;
+          const auto& q = soup.positions[at];
+          worst = std::max(worst, distance(exact, {q[0], q[1], q[2]}));
+        }
+    }
+    CHECK(worst / extent(c.mesh) < 1e-6);
+  }
+}
+
+TEST_CASE("sharpness 9 on the chess piece, refused by whole-mesh steps, is refined round the creases and equals Bfr's",
+          "[runtime][creases][opensubdiv]") {
+  const auto tables = catmull_clark();
+  const Mesh mesh = load("chess-piece");
+  SharpFeatures f;
+  const auto edges = edges_of(mesh);
+  for (std::size_t k = 0; k < edges.size(); k += 40) f.crease(edges[k].first, edges[k].second, 9.0f);
+  const Surface surface = surface_of(tables, mesh, f);
+  INFO(surface.topology().preparation());
+  // One isolation step (with the sharp rules), then the other eight round the creases.
+  CHECK(surface.topology().preparation().find("8 levels refined round the semi-sharp features") != std::string::npos);
+  const double bfr = bfr_node_difference(surface, mesh, f, 4);
+  CHECK(bfr < 1e-10);
+  std::vector<int> rates(mesh.face_count(), 4);
+  const PolygonSoup soup = tessellate(surface, rates, {1}, true);
+  CHECK(closed(soup));
+  WARN("sharpness 9 on the chess piece: " << surface.topology().preparation() << "; Bfr at the rate-4 nodes " << bfr
+                                          << " of the size; " << soup.triangle_count() << " triangles");
+}
+
+TEST_CASE("closest points on surfaces refined round their semi-sharp features equal those refined whole, and no sample "
+          "is nearer",
+          "[runtime][creases][distance]") {
+  const auto tables = catmull_clark();
+  std::mt19937 rng(31u);
+  Mesh cube = load("cube");
+  SharpFeatures f;
+  f.crease(cube.face_vertices[0], cube.face_vertices[1], 3.5f);
+  f.corner(cube.face_vertices[6], 2.25f);
+  const Surface whole = surface_of(tables, cube, f);
+  const Surface local = [&] {
+    const WholeMeshBudget budget(0);
+    return surface_of(tables, cube, f);
+  }();
+  REQUIRE(local.topology().preparation().find("refined round") != std::string::npos);
+  const ClosestPointQuery a(local), b(whole);
+  const std::vector<Point> samples = surface_nodes(whole, cube, 16);
+  const double size = extent(cube);
+  double worst = 0;
+  for (int k = 0; k < 300; ++k) {
+    // Uniform in the box and on the surface, where the features are.
+    const Point q = k % 2 ? random_query(samples, 0.5 * size, rng) : samples[rng() % samples.size()];
+    const ClosestPoint x = a.find(q), y = b.find(q);
+    INFO("query " << k);
+    CHECK(closest_point_defect(local, q, x, samples, size, 1e-9 * size) == "");
+    worst = std::max(worst, std::abs(x.distance - y.distance));
+  }
+  CHECK(worst <= 2 * a.tolerance());
+  // The chess piece with sharpness 9, which whole-mesh steps cannot take.
+  const Mesh piece = load("chess-piece");
+  SharpFeatures g;
+  const auto edges = edges_of(piece);
+  for (std::size_t k = 0; k < edges.size(); k += 40) g.crease(edges[k].first, edges[k].second, 9.0f);
+  const Surface sharp = surface_of(tables, piece, g);
+  const ClosestPointQuery c(sharp);
+  const std::vector<Point> dense = surface_nodes(sharp, piece, 8);
+  for (int k = 0; k < 200; ++k) {
+    const Point q = k % 2 ? random_query(dense, 0.5 * extent(piece), rng) : dense[rng() % dense.size()];
+    INFO("chess piece, query " << k);
+    CHECK(closest_point_defect(sharp, q, c.find(q), dense, extent(piece), 1e-9 * extent(piece)) == "");
+  }
+  WARN("closest points refined round the features against whole-mesh steps: largest difference " << worst / size
+                                                                                                  << " of the size");
 }

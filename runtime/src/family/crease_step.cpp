@@ -61,6 +61,15 @@ SparseEntries vertex_mask(CreaseRule rule, const RefinementStep& step, std::uint
 
 }  // namespace
 
+bool crease_steps_fit(std::size_t first, float sharpest, std::size_t budget) {
+  std::size_t made = first;
+  for (int step = 1; step < static_cast<int>(std::ceil(sharpest)); ++step) {
+    if (made > budget) return false;
+    made *= 4;  // <= 4 * budget: no overflow for any budget below SIZE_MAX / 4
+  }
+  return made <= budget;
+}
+
 void check_crease_steps(std::size_t faces, std::size_t first, float sharpest) {
   const auto steps = static_cast<int>(std::ceil(sharpest));
   // The steps this mesh can take within the limit: step k + 1 makes first * 4^k faces.

@@ -29,6 +29,8 @@ struct CurveCreaseRule {
 // would make more than limits::kMaxCreaseStepFaces faces: `first` faces after
 // the first step, each later step multiplying them by 4. Throws MeshError.
 void check_crease_steps(std::size_t faces, std::size_t first, float sharpest);
+// Whether those steps make at most `budget` faces.
+bool crease_steps_fit(std::size_t first, float sharpest, std::size_t budget);
 
 // A mesh with boundaries: its boundary edges are infinitely sharp (and, with
 // `boundary_corners`, its boundary vertices in one face), as in OpenSubdiv; the

@@ -58,6 +58,12 @@ struct Approximation {
 struct SubPatch {
   std::size_t face = 0;  // the prepared face
   int kind = 0;          // the family's patch kind (quads: the valence, 4 for regular; triangles: triangle_family.hpp)
+  // Quads, below a prepared face refined round semi-sharp features: the tree's
+  // node (kind QuadFamily::kRefinedKind) or the leaf whose patch this is part of,
+  // and the prepared positions root() was given, from which an inner node's
+  // descendants take their points (a sub-patch does not outlive its search).
+  std::size_t node = 0;
+  const Point* positions = nullptr;
   std::vector<Point> points;
   SubDomain domain;
 };

@@ -11,6 +11,7 @@
 #include "family/sharp_cut.hpp"
 #include "quad_refinement.hpp"
 #include "regular_face_samples.hpp"
+#include "semi_sharp_levels.hpp"
 
 namespace stencil_runtime {
 
@@ -24,7 +25,10 @@ struct QuadFamily::Prepared {
   Connectivity mesh;  // the prepared mesh
   bool boundary = false;
   bool no_boundary_surface = false;  // `none`: faces at boundary vertices have no surface (holes), hence no patch
-  std::vector<QuadPatch> patches;  // by prepared face
+  std::vector<QuadPatch> patches;  // by node (quad_family.hpp): the prepared faces', then the feature levels'
+  std::vector<std::uint32_t> children, parent;
+  int feature_levels = 0;
+  std::size_t feature_faces = 0;
 };
 
 namespace {
@@ -44,21 +48,52 @@ int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<Sec
 // (sharp_cut.hpp), whose boundaries are the mesh's and its creases, `corner`
 // its vertices' rules, `no_surface` per vertex whether the faces at it have no
 // surface (empty: none).
+// The same for one face (but the slits, checked per vertex).
+bool face_ready(const QuadTopology& topo, std::size_t f, const std::vector<SectorRule>& corner, const std::vector<char>& no_surface) {
+  if (topo.touches_boundary(f)) {
+    if (topo.touches_marked(f, no_surface)) return true;
+    const int c = sector_corner(topo, f, corner);
+    return c >= 0 ? sector_patch_ready(topo, f, c, corner) : boundary_patch_ready(topo, f, corner);
+  }
+  int extraordinary = 0;
+  for (int c = 0; c < 4; ++c) extraordinary += !regular_inside(topo, topo.vertex(f, c), corner);
+  return extraordinary <= 1;
+}
+
 bool isolated(const QuadTopology& topo, const std::vector<SectorRule>& corner, const std::vector<char>& no_surface) {
   for (std::size_t v = 0; v < topo.vertices(); ++v)
     if (slit_end_inside(corner[v], topo.on_boundary(static_cast<int>(v)))) return false;
-  for (std::size_t f = 0; f < topo.faces(); ++f) {
-    if (topo.touches_boundary(f)) {
-      if (topo.touches_marked(f, no_surface)) continue;
-      const int c = sector_corner(topo, f, corner);
-      if (c >= 0 ? !sector_patch_ready(topo, f, c, corner) : !boundary_patch_ready(topo, f, corner)) return false;
-      continue;
-    }
-    int extraordinary = 0;
-    for (int c = 0; c < 4; ++c) extraordinary += !regular_inside(topo, topo.vertex(f, c), corner);
-    if (extraordinary > 1) return false;
-  }
+  for (std::size_t f = 0; f < topo.faces(); ++f)
+    if (!face_ready(topo, f, corner, no_surface)) return false;
   return true;
+}
+
+using PhantomRows = std::vector<std::vector<std::pair<int, double>>>;
+
+// The patch of a face that is ready (face_ready) on the cut topology; a face
+// without surface (`none`) gets a placeholder, never evaluated.
+QuadPatch face_patch(const QuadTopology& topo, std::size_t f, const std::vector<SectorRule>& rule,
+                     const std::vector<char>& no_surface, std::size_t first_phantom, PhantomRows& phantoms) {
+  if (!topo.touches_boundary(f)) return gather_quad_patch(topo, f, rule);
+  QuadPatch p;
+  const int c = sector_corner(topo, f, rule);
+  if (topo.touches_marked(f, no_surface)) p.points.assign(16, 0);
+  else if (c >= 0) p = gather_sector_patch(topo, f, c, rule);
+  else p = gather_boundary_patch(topo, f, first_phantom, phantoms);
+  return p;
+}
+
+// Rows appended after `vertices` prepared vertices: each a weighted sum of them.
+RefinementStep rows_over(std::size_t vertices, const PhantomRows& rows) {
+  RefinementStep step;
+  step.input_vertices = vertices;
+  SparseEntries row;
+  for (const auto& r : rows) {
+    row.clear();
+    for (const auto& [v, w] : r) row.emplace_back(static_cast<std::uint32_t>(v), w);
+    step.add_row(row);
+  }
+  return step;
 }
 
 // The vertices of the input mesh, cut along its infinitely sharp edges: inside
@@ -116,6 +151,18 @@ std::pair<int, std::array<P, 2>> quadrant(const P& u, const P& v) {
   }
 }
 
+// A quadrant child's (u, v) to its parent's: the inverse of quadrant().
+void to_parent(int c, double& u, double& v) {
+  double pu = 0, pv = 0;
+  switch (c) {
+    case 0: pu = u / 2, pv = v / 2; break;
+    case 1: pu = (2 - v) / 2, pv = u / 2; break;
+    case 2: pu = (2 - u) / 2, pv = (2 - v) / 2; break;
+    default: pu = v / 2, pv = (2 - u) / 2; break;
+  }
+  u = pu, v = pv;
+}
+
 // A sub-face of an N-gon's domain and its own coordinates.
 int subface(const FaceDomain& d, const Fraction& u, const Fraction& v, std::array<Fraction, 2>& local) {
   ExactParameter l;
@@ -167,9 +214,14 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   }
   valences.finish();
   CurveCreaseRule crease;
+  // Semi-sharp features by whole-mesh steps where they fit the budget, else
+  // refined round them after the isolation (refine_round_features).
+  bool local = false;
   if (!sharpness.smooth()) {
     crease = quad_crease_rule(t, tables.scheme());
-    check_crease_steps(mesh.face_count(), all_quads ? 4 * mesh.face_count() : mesh.face_vertices.size(), sharpness.max());
+    const std::size_t first = all_quads ? 4 * mesh.face_count() : mesh.face_vertices.size();
+    local = sharpness.has_semi_sharp() && !crease_steps_fit(first, sharpness.max(), whole_mesh_crease_faces());
+    if (!local) check_crease_steps(mesh.face_count(), first, sharpness.max());
   }
   if (all_quads) {
     out.mesh = mesh;
@@ -205,7 +257,8 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   // Semi-sharp features decay by at least 1 a step: whole-mesh steps until none
   // is left, after which every patch is stationary again (infinitely sharp
   // ones are boundaries of the cut mesh: sharp_cut.hpp).
-  while (sharpness.has_semi_sharp()) step_once();
+  if (!local)
+    while (sharpness.has_semi_sharp()) step_once();
   const int before_isolation = out.steps;
   // The whole-mesh step's topology cut along the infinitely sharp edges (the
   // mesh itself where there are none), with its corners and, under `none`,
@@ -235,20 +288,73 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
     for (std::size_t v = out.mesh.vertex_count; v < cut.mesh.vertex_count; ++v) copies.push_back({{cut.origin[v], 1.0}});
     out.refinement.add(append_rows(out.mesh.vertex_count, copies));
   }
-  std::vector<std::vector<std::pair<int, double>>> phantoms;
+  PhantomRows phantoms;
   out.patches.resize(patch_topo.faces());
-  for (std::size_t f = 0; f < patch_topo.faces(); ++f) {
-    if (!patch_topo.touches_boundary(f)) {
-      out.patches[f] = gather_quad_patch(patch_topo, f, cut.rule);
-      continue;
-    }
-    const int c = sector_corner(patch_topo, f, cut.rule);
-    if (patch_topo.touches_marked(f, no_surface)) out.patches[f].points.assign(16, 0);  // a hole: never evaluated
-    else if (c >= 0) out.patches[f] = gather_sector_patch(patch_topo, f, c, cut.rule);
-    else out.patches[f] = gather_boundary_patch(patch_topo, f, cut.mesh.vertex_count, phantoms);
-  }
+  for (std::size_t f = 0; f < patch_topo.faces(); ++f)
+    out.patches[f] = face_patch(patch_topo, f, cut.rule, no_surface, cut.mesh.vertex_count, phantoms);
   if (!phantoms.empty()) out.refinement.add(append_rows(cut.mesh.vertex_count, phantoms));
+  if (local) refine_round_features(out, t, sharpness, crease, edge_and_corner);
   return out;
+}
+
+void QuadFamily::refine_round_features(Prepared& out, const QuadTables& t, const LevelSharpness& sharpness,
+                                       const CurveCreaseRule& crease, bool edge_and_corner) {
+  if (!sharpness.has_semi_sharp()) return;  // the isolation steps took it all
+  // The boundary rules are the crease curve's, on the mesh's boundaries and on the regions' borders alike.
+  SemiSharpRefinement r =
+      refine_round_semi_sharp(out.mesh, sharpness, t, crease, {crease.centre, crease.neighbour, edge_and_corner}, edge_and_corner);
+  const std::size_t prepared_faces = out.mesh.face_count();
+  out.children.assign(prepared_faces, kLeaf);
+  out.parent.assign(prepared_faces, kLeaf);
+  out.feature_levels = static_cast<int>(r.levels.size());
+  out.feature_faces = r.faces() - prepared_faces;
+  std::size_t before_base = 0, before_vertices = 0;  // the level before: its first node and prepared vertex (the prepared mesh's at 0)
+  for (SemiSharpLevel& level : r.levels) {
+    const std::size_t base = out.patches.size(), faces = level.mesh.face_count();
+    if (base + faces >= kLeaf) throw MeshError("the refinement round the semi-sharp features makes more than 2^32 faces");
+    out.patches.resize(base + faces);
+    out.children.resize(base + faces, kLeaf);
+    out.parent.resize(base + faces, kLeaf);
+    for (std::size_t f = 0; f < faces; f += 4) {
+      if (!level.exact[f]) continue;  // a child of the region's margin: no node of the tree
+      const std::size_t parent = before_base + level.parent[f];
+      out.children[parent] = static_cast<std::uint32_t>(base + f);
+      for (std::size_t c = 0; c < 4; ++c) out.parent[base + f + c] = static_cast<std::uint32_t>(parent);
+    }
+    const std::size_t offset = out.refinement.prepared_vertices();
+    out.refinement.append(std::move(level.step), before_vertices);
+    // Patches of the leaves, gathered as on the prepared mesh: on the level cut
+    // along its infinitely sharp edges, with copies and phantoms after its vertices.
+    const PolygonLinks links = link_polygons(level.mesh, true);
+    const SharpCut cut = cut_along_sharp_edges(level.mesh, links, level.sharpness, edge_and_corner);
+    const std::vector<char> no_surface = no_surface_vertices(out.no_boundary_surface, level.mesh, links, level.sharpness, cut);
+    const QuadTopology topo(cut.mesh, true);
+    if (cut.cut) {
+      PhantomRows copies;
+      for (std::size_t v = level.mesh.vertex_count; v < cut.mesh.vertex_count; ++v) copies.push_back({{cut.origin[v], 1.0}});
+      out.refinement.append(rows_over(level.mesh.vertex_count, copies), offset);
+    }
+    PhantomRows phantoms;
+    for (std::size_t f = 0; f < faces; ++f) {
+      // Leaves get their patches; inner nodes the same points, as the hull of the surface below them.
+      if (!level.exact[f]) continue;
+      bool ready = face_ready(topo, f, cut.rule, no_surface);
+      for (int c = 0; c < 4; ++c) {
+        const int v = topo.vertex(f, c);
+        ready = ready && !slit_end_inside(cut.rule[static_cast<std::size_t>(v)], topo.on_boundary(v));
+      }
+      // Children of isolated faces are isolated: a leaf without its patch is a mistake here.
+      if (!ready) throw MeshError("internal: a face refined round a semi-sharp feature has no patch");
+      QuadPatch p = face_patch(topo, f, cut.rule, no_surface, cut.mesh.vertex_count, phantoms);
+      for (int& i : p.points) i += static_cast<int>(offset);
+      out.patches[base + f] = std::move(p);
+    }
+    if (!phantoms.empty()) out.refinement.append(rows_over(cut.mesh.vertex_count, phantoms), offset);
+    before_base = base;
+    before_vertices = offset;
+  }
+  if (out.refinement.prepared_vertices() > static_cast<std::size_t>(INT32_MAX))
+    throw MeshError("the refinement round the semi-sharp features makes more than 2^31 points");
 }
 
 QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const MeshFeatures& sharp)
@@ -266,6 +372,10 @@ QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, Prepared prepared)
   hierarchy_ = std::move(prepared.hierarchy);
   prepared_ = std::move(prepared.mesh);
   patches_ = std::move(prepared.patches);
+  children_ = std::move(prepared.children);
+  parent_ = std::move(prepared.parent);
+  feature_levels_ = prepared.feature_levels;
+  feature_faces_ = prepared.feature_faces;
   if (tables_.descent()) descent_ = std::make_unique<QuadPatchDescent>(tables_);
   centre_weights_.resize(static_cast<std::size_t>(tables_.rates().back()) + 1);
   for (int n : tables_.rates()) {
@@ -292,6 +402,9 @@ std::string QuadFamily::preparation() const {
   if (crease_steps_ > 0) {
     out += " (" + std::to_string(crease_steps_) + " of them with the creases' sharp rules)";
   }
+  if (feature_levels_ > 0)
+    out += ", then " + std::to_string(feature_levels_) + " level" + (feature_levels_ == 1 ? "" : "s") +
+           " refined round the semi-sharp features (" + std::to_string(feature_faces_) + " faces)";
   return out;
 }
 
@@ -341,6 +454,12 @@ std::pair<std::size_t, std::array<P, 2>> QuadFamily::locate_any(std::size_t face
     }
     const auto [c, child] = quadrant(p[0], p[1]);
     face = first + static_cast<std::size_t>(c);
+    p = child;
+    compose_quadrant(jacobian, c);
+  }
+  while (refined(face)) {  // down the levels refined round semi-sharp features, as the steps above
+    const auto [c, child] = quadrant(p[0], p[1]);
+    face = children_[face] + static_cast<std::size_t>(c);
     p = child;
     compose_quadrant(jacobian, c);
   }
@@ -410,27 +529,90 @@ bool QuadFamily::hull_bounds() const { return checked_descent().nonnegative(); }
 void QuadFamily::root(std::size_t prepared_face, const Point* prepared, SubPatch& out) const {
   const QuadPatch& patch = patches_[prepared_face];
   out.face = prepared_face;
-  out.kind = patch.valence;
+  out.node = prepared_face;
+  out.kind = refined(prepared_face) ? kRefinedKind : patch.valence;
+  out.positions = prepared;
   gather_points(patch.points, prepared, out.points);
   out.domain = SubDomain::unit(false);
 }
 
+SubDomain QuadFamily::child_domain(const SubDomain& parent, int c, int rotation) {
+  // Own coordinates (patch coordinates when rotated) -> the child face's -> the parent's -> through `parent`.
+  const auto map = [&](double X, double Y) {
+    double u = X, v = Y;
+    switch (rotation) {
+      case 0: break;
+      case 1: u = 1 - Y, v = X; break;
+      case 2: u = 1 - X, v = 1 - Y; break;
+      default: u = Y, v = 1 - X; break;
+    }
+    to_parent(c, u, v);
+    return parent.at(u, v);
+  };
+  SubDomain out = parent;
+  const auto o = map(0, 0), x = map(1, 0), y = map(0, 1);
+  out.origin = o;
+  out.x_axis = {x[0] - o[0], x[1] - o[1]};
+  out.y_axis = {y[0] - o[0], y[1] - o[1]};
+  return out;
+}
+
+SubPatch QuadFamily::leaf_patch(const SubPatch& in, double x, double y) const {
+  auto [X, Y] = in.domain.local(x, y);
+  in.domain.clamp_local(X, Y);
+  std::size_t node = in.node;
+  SubDomain domain = in.domain;
+  while (refined(node)) {  // as locate_any's descent of the tree
+    const auto [c, child] = quadrant(X, Y);
+    X = child[0], Y = child[1];
+    node = children_[node] + static_cast<std::size_t>(c);
+    domain = child_domain(domain, c, refined(node) ? 0 : patches_[node].rotation);
+  }
+  SubPatch out;
+  const QuadPatch& patch = patches_[node];
+  out.face = in.face;
+  out.node = node;
+  out.kind = patch.valence;
+  out.positions = in.positions;
+  gather_points(patch.points, in.positions, out.points);
+  out.domain = domain;
+  return out;
+}
+
 int QuadFamily::split(const SubPatch& in, SubPatch* children) const {
+  if (in.kind == kRefinedKind) {  // the node's four children, leaves with their patches
+    for (int c = 0; c < 4; ++c) {
+      SubPatch& out = children[c];
+      const std::size_t child = children_[in.node] + static_cast<std::size_t>(c);
+      const QuadPatch& patch = patches_[child];
+      out.face = in.face;
+      out.node = child;
+      out.positions = in.positions;
+      out.kind = refined(child) ? kRefinedKind : patch.valence;
+      gather_points(patch.points, in.positions, out.points);
+      out.domain = child_domain(in.domain, c, refined(child) ? 0 : patch.rotation);
+    }
+    return 4;
+  }
   const QuadPatchDescent& d = checked_descent();
   for (int c = 0; c < 4; ++c) {
     const int cx = c & 1, cy = c >> 1;
     SubPatch& out = children[c];
     d.child(in.kind, in.points, cx, cy, out.points, out.kind);
     out.face = in.face;
-    const double half = in.domain.x_axis[0] / 2;  // a square along the patch's axes
+    out.node = in.node;
+    out.positions = in.positions;
+    // The quadrant (cx, cy) of the patch's own square (axes along the patch's, or turned below a refined face).
     out.domain = in.domain;
-    out.domain.x_axis = {half, 0}, out.domain.y_axis = {0, half};
-    out.domain.origin = {in.domain.origin[0] + cx * half, in.domain.origin[1] + cy * half};
+    out.domain.x_axis = {in.domain.x_axis[0] / 2, in.domain.x_axis[1] / 2};
+    out.domain.y_axis = {in.domain.y_axis[0] / 2, in.domain.y_axis[1] / 2};
+    out.domain.origin = in.domain.at(cx * 0.5, cy * 0.5);
   }
   return 4;
 }
 
 Approximation QuadFamily::evaluate(const SubPatch& in, double x, double y, double tolerance) const {
+  if (in.kind == kRefinedKind) return evaluate(leaf_patch(in, x, y), x, y, tolerance);
   std::vector<Point> points = in.points;
   // The sub-patch's own parameters; exact fractions where the double is one (the descent then lands exactly).
   auto [sx, sy] = in.domain.local(x, y);
@@ -441,6 +623,7 @@ Approximation QuadFamily::evaluate(const SubPatch& in, double x, double y, doubl
 }
 
 bool QuadFamily::derivatives(const SubPatch& in, double& x, double& y, Derivatives& out) const {
+  if (in.kind == kRefinedKind) return derivatives(leaf_patch(in, x, y), x, y, out);
   const QuadPatchDescent& descent = checked_descent();
   auto [sx, sy] = in.domain.local(x, y);
   in.domain.clamp_local(sx, sy);
@@ -461,9 +644,15 @@ bool QuadFamily::derivatives(const SubPatch& in, double& x, double& y, Derivativ
     out = descent.derivatives(in.kind, points, Fraction::make(i, grid), Fraction::make(j, grid));
     sx = static_cast<double>(i) / static_cast<double>(grid), sy = static_cast<double>(j) / static_cast<double>(grid);
   }
-  const double size = in.domain.x_axis[0];  // a square along the patch's axes
-  x = in.domain.origin[0] + sx * size, y = in.domain.origin[1] + sy * size;
-  for (int k = 0; k < 3; ++k) out.du[k] /= size, out.dv[k] /= size;
+  const auto at = in.domain.at(sx, sy);
+  x = at[0], y = at[1];
+  // To the patch's coordinates: d/dx = dX/dx d/dX + dY/dx d/dY (a scaled square, turned below a refined face).
+  const auto inv = in.domain.inverse_jacobian();
+  for (int k = 0; k < 3; ++k) {
+    const double dX = out.du[k], dY = out.dv[k];
+    out.du[k] = inv[0] * dX + inv[2] * dY;
+    out.dv[k] = inv[1] * dX + inv[3] * dY;
+  }
   return true;
 }
 
@@ -521,13 +710,23 @@ const PolynomialPatch* QuadFamily::polynomial_patch(int kind) const {
 }
 
 FaceParameterReal QuadFamily::original(std::size_t face, double x, double y) const {
-  // Patch coordinates back to the prepared face's (undo the rotation).
+  // Patch coordinates back to the node's own (undo the rotation).
   double u = x, v = y;
   switch (patches_[face].rotation) {
     case 0: break;
     case 1: u = 1 - y, v = x; break;
     case 2: u = 1 - x, v = 1 - y; break;
     default: u = y, v = 1 - x; break;
+  }
+  return original_of_face(face, u, v);
+}
+
+FaceParameterReal QuadFamily::original_of_face(std::size_t face, double u, double v) const {
+  // Up the levels refined round semi-sharp features to the prepared face.
+  while (face >= prepared_.face_count()) {
+    const std::size_t parent = parent_[face];
+    to_parent(static_cast<int>(face - children_[parent]), u, v);
+    face = parent;
   }
   // Up the hierarchy: each child's parameter to its parent's (the inverse of quadrant(), or a sub-face's tile).
   for (std::size_t level = hierarchy_.levels.size(); level-- > 0;) {
@@ -538,14 +737,7 @@ FaceParameterReal QuadFamily::original(std::size_t face, double x, double y) con
       const FaceDomain d = domain(parent);
       u = c % d.u_tiles + u / 2, v = c / d.u_tiles + v / 2;
     } else {
-      double pu = 0, pv = 0;
-      switch (c) {
-        case 0: pu = u / 2, pv = v / 2; break;
-        case 1: pu = (2 - v) / 2, pv = u / 2; break;
-        case 2: pu = (2 - u) / 2, pv = (2 - v) / 2; break;
-        default: pu = v / 2, pv = (2 - u) / 2; break;
-      }
-      u = pu, v = pv;
+      to_parent(c, u, v);
     }
     face = parent;
   }
@@ -717,6 +909,34 @@ bool QuadFamily::stencil(std::size_t face, const ExactParameter& at, PatchStenci
   return descent_stencil(face, at.u, at.v, out);
 }
 
+std::size_t QuadFamily::leaf_of(std::size_t node, long& a, long& b, long d) const {
+  while (refined(node)) {  // quadrant() on (a, b) / d
+    const bool right = 2 * a > d, top = 2 * b > d;
+    const long x = 2 * a - (right ? d : 0), y = 2 * b - (top ? d : 0);
+    const int c = !top ? (right ? 1 : 0) : (right ? 2 : 3);
+    switch (c) {
+      case 0: a = x, b = y; break;
+      case 1: a = y, b = d - x; break;
+      case 2: a = d - x, b = d - y; break;
+      default: a = d - y, b = x; break;
+    }
+    node = children_[node] + static_cast<std::size_t>(c);
+  }
+  return node;
+}
+
+Point QuadFamily::refined_point(std::size_t face, long a, long b, int n, const Point* prepared) const {
+  const std::size_t leaf = leaf_of(face, a, b, 2L * n);
+  const QuadPatch& p = patches_[leaf];
+  long pa = 0, pb = 0;
+  p.to_patch(a, b, 2L * n, pa, pb);
+  // Below a refined face every such point is a node of rate n (one step doubles the odd centres).
+  std::array<double, limits::kMaxPatchPoints> w{};
+  if (((pa | pb) & 1) == 0) tables_.node_stencil(p.valence, n, static_cast<int>(pa / 2), static_cast<int>(pb / 2), w.data());
+  else tables_.centre_stencil(p.valence, n, static_cast<int>(pa / 2), static_cast<int>(pb / 2), w.data());
+  return stencil_sum(w.data(), p.points.data(), p.points.size(), prepared);
+}
+
 // The n^2 cell centres of a regular face, tensor-product form: rows R[q][i] =
 // sum_c wx(i)[c] P(c, q), then each point sums 4 rows with the weights of its
 // row. N > 0 fixes n at compile time (short loops unrolled), N = 0 reads it.
@@ -758,6 +978,14 @@ void QuadFamily::points(const TessellationLayout& layout, std::size_t begin, std
     const QuadPatch& p = patches_[f];
     const int n = layout.rates[f];
     std::array<float, 3>* out = out_all + layout.point_offsets[f];
+    if (refined(f)) {  // point by point from the leaves
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const Point q = refined_point(f, 2L * i + 1, 2L * j + 1, n, pos);
+          out[j * n + i] = {static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2])};
+        }
+      continue;
+    }
     if (p.valence == 4) {
       const double* wx = centre_weights_[static_cast<std::size_t>(n)].data();
       switch (n) {  // small rates unrolled: their per-face loops are short
@@ -829,6 +1057,15 @@ void QuadFamily::normals(const TessellationLayout& layout, std::size_t begin, st
     const QuadPatch& p = patches_[f];
     const int n = layout.rates[f];
     std::array<float, 3>* out = out_all + layout.point_offsets[f];
+    if (refined(f)) {  // point by point, from the original face (no cell centre is a vertex, where normals may fail)
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const FaceParameterReal at = original_of_face(f, (i + 0.5) / n, (j + 0.5) / n);
+          const Point q = normal(at.face, at.u, at.v, pos);
+          out[j * n + i] = {static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2])};
+        }
+      continue;
+    }
     if (p.valence == 4 && !centre_derivative_weights_.empty()) {
       regular_face_samples(p, centre_weights_[static_cast<std::size_t>(n)].data(),
                            centre_derivative_weights_[static_cast<std::size_t>(n)].data(), n, pos, nullptr, out, regular);
@@ -862,7 +1099,7 @@ void QuadFamily::points_and_normals(const TessellationLayout& layout, std::size_
     if (!layout.holes.empty() && layout.holes[f]) continue;  // no points
     const QuadPatch& p = patches_[f];
     const int n = layout.rates[f];
-    if (p.valence == 4 && !centre_derivative_weights_.empty()) {
+    if (p.valence == 4 && !centre_derivative_weights_.empty() && !refined(f)) {
       const std::size_t at = layout.point_offsets[f];
       regular_face_samples(p, centre_weights_[static_cast<std::size_t>(n)].data(),
                            centre_derivative_weights_[static_cast<std::size_t>(n)].data(), n, pos, positions + at,

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "family/crease_step.hpp"
 #include "family/family.hpp"
 #include "mesh/connectivity.hpp"
 #include "mesh/uniform_topology.hpp"
@@ -73,6 +74,9 @@ class QuadFamily final : public Family {
  private:
   struct Prepared;
   static Prepared prepare(const Tables& tables, const Connectivity& mesh, const MeshFeatures& sharp);
+  // The levels refined round the semi-sharp features left on the prepared mesh, their patches and tree.
+  static void refine_round_features(Prepared& out, const QuadTables& tables, const LevelSharpness& sharpness,
+                                    const CurveCreaseRule& crease, bool edge_and_corner);
   QuadFamily(std::shared_ptr<const Tables> tables, Prepared prepared);
 
   std::shared_ptr<const Tables> holder_;  // keeps tables_ alive
@@ -82,7 +86,31 @@ class QuadFamily final : public Family {
   int crease_steps_ = 0;  // steps (the polygon step included) with sharp rules
   int steps_ = 0;  // isolation steps (after the polygon step)
   QuadTopology topology_;
+  // By node: the prepared faces first, then the faces of the levels refined
+  // round semi-sharp features (semi_sharp_levels.hpp), a tree below the
+  // prepared faces that have them. A leaf has a patch; an inner node's four
+  // children (its quadrants, as in subdivide_quads) start at children_[node].
   std::vector<QuadPatch> patches_;
+  static constexpr std::uint32_t kLeaf = UINT32_MAX;
+  // The sub-patch kind of an inner node of that tree (closest points): its
+  // points are the node's 1-ring at its level, whose hull holds the surface
+  // below it; split() gives its four children, evaluate() descends to a leaf.
+  static constexpr int kRefinedKind = -1;
+  // A node's own coordinates as seen through `parent`'s domain: the quadrant c's map, then a patch's rotation.
+  static SubDomain child_domain(const SubDomain& parent, int c, int rotation);
+  // The whole patch of the leaf below an inner node that holds (x, y) (the prepared face's patch coordinates).
+  SubPatch leaf_patch(const SubPatch& node, double x, double y) const;
+  std::vector<std::uint32_t> children_;  // empty: no such levels
+  std::vector<std::uint32_t> parent_;    // by node below the prepared faces: the node it is a quadrant of
+  int feature_levels_ = 0;
+  std::size_t feature_faces_ = 0;
+  bool refined(std::size_t node) const { return !children_.empty() && children_[node] != kLeaf; }
+  // Where the point (a, b) / d of a refined node's square lands: the leaf and the point there, over the same d.
+  std::size_t leaf_of(std::size_t node, long& a, long& b, long d) const;
+  // The limit point at (a, b) / (2n) of a prepared face refined round features, from its leaves' stencils at rate n.
+  Point refined_point(std::size_t face, long a, long b, int n, const Point* prepared) const;
+  // A prepared face's (or a tree node's) own coordinates (u, v) to its original face's.
+  FaceParameterReal original_of_face(std::size_t node, double u, double v) const;
   // Per stored rate n (indexed by n): phi at the n cell centres, 4 weights each.
   std::vector<std::vector<double>> centre_weights_;
   // The same for phi' (empty when the tables hold no phi').

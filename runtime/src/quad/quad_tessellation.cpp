@@ -82,6 +82,7 @@ Point QuadFamily::edge_node(std::size_t face, int corner, int t, int n, const Po
   const QuadPatch& p = patches_[face];
   long i = 0, j = 0, pi = 0, pj = 0;
   edge_grid_node(corner, t, n, i, j);
+  if (refined(face)) return refined_point(face, 2 * i, 2 * j, n, prepared);
   p.to_patch(i, j, n, pi, pj);
   std::array<double, limits::kMaxPatchPoints> w{};
   tables_.node_stencil(p.valence, n, static_cast<int>(pi), static_cast<int>(pj), w.data());

@@ -1,5 +1,6 @@
 #include "semi_sharp_levels.hpp"
 
+#include <atomic>
 #include <string>
 
 #include "family/local_region.hpp"
@@ -34,7 +35,12 @@ void renumber_columns(RefinementStep& step, const SubMesh& sub, std::size_t mesh
   step.input_vertices = mesh_vertices;
 }
 
+std::atomic<std::size_t> whole_mesh_budget{limits::kMaxCreaseStepFaces};
+
 }  // namespace
+
+std::size_t whole_mesh_crease_faces() { return whole_mesh_budget.load(); }
+void set_whole_mesh_crease_faces(std::size_t faces) { whole_mesh_budget.store(faces); }
 
 std::size_t SemiSharpRefinement::faces() const {
   std::size_t n = refined.size();

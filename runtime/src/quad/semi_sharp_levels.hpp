@@ -28,6 +28,14 @@
 
 namespace stencil_runtime {
 
+// The most faces whole-mesh steps may make for a mesh's semi-sharp features;
+// beyond it the quad family refines only round them. Whole-mesh steps are
+// kept where they fit because their faces are tessellated by the fast
+// kernels, while a face refined round a feature is tessellated point by point
+// (docs/runtime.md). Tests lower it to take both ways on one mesh.
+std::size_t whole_mesh_crease_faces();
+void set_whole_mesh_crease_faces(std::size_t faces);
+
 struct SemiSharpLevel {
   Connectivity mesh;  // every face a quad; its border is the region's, plus the mesh's own boundary
   LevelSharpness sharpness;
