@@ -9,6 +9,10 @@
 // preparation time, then a whole static tessellation (plan and points, as
 // bench_tessellation), in triangles per second. OpenSubdiv 3.5's Bfr
 // tessellates the same meshes with the same creases in the same run.
+// Then the refinement round the features (quad/semi_sharp_levels.hpp, which
+// the runtime takes where whole-mesh steps would pass 2^21 faces), forced:
+// every 10th edge at sharpness 2 again, and every 100th at sharpness 2 and 4
+// (a few creases, the usual case; sharpness 4 is beyond whole-mesh steps here).
 // Usage: bench_creases [CATMULL-CLARK.sgs]
 #include <algorithm>
 #include <chrono>
@@ -20,6 +24,8 @@
 
 #include "bench_timing.hpp"
 #include "osd_tessellation.hpp"
+#include "quad/semi_sharp_levels.hpp"
+#include "stencil_runtime/limits.hpp"
 #include "stencil_runtime/mesh_io.hpp"
 #include "stencil_runtime/subdivide.hpp"
 #include "stencil_runtime/tessellation.hpp"
@@ -30,15 +36,15 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Every 10th edge (in the order the faces first name them), with sharpness s.
-MeshFeatures creases(const Mesh& mesh, double s) {
+// Every `every`-th edge (in the order the faces first name them), with sharpness s.
+MeshFeatures creases(const Mesh& mesh, double s, std::size_t every = 10) {
   MeshFeatures out;
   std::size_t corner = 0, count = 0;
   for (int k : mesh.face_sizes) {
     for (int c = 0; c < k; ++c) {
       const int a = mesh.face_vertices[corner + static_cast<std::size_t>(c)];
       const int b = mesh.face_vertices[corner + static_cast<std::size_t>((c + 1) % k)];
-      if (a < b && count++ % 10 == 0) out.edges.push_back({a, b, s});
+      if (a < b && count++ % every == 0) out.edges.push_back({a, b, s});
     }
     corner += static_cast<std::size_t>(k);
   }
@@ -53,11 +59,19 @@ int run(int argc, char** argv) {
   Mesh mesh = read_obj(std::string(STENCIL_SOURCE_DIR) + "/meshes/chess-piece.obj");
   while (mesh.face_count() < 50000) mesh = subdivide(*tables, mesh);
   std::printf("# chess piece refined to %zu faces; every 10th edge creased\n\n", mesh.face_count());
-  std::printf("| sharpness | prepared faces | preparation (s) | rate | threads | triangles | ours (M tri/s) | ours / smooth | Bfr (M tri/s) | Bfr / smooth |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| sharpness | creased edges | refinement | prepared faces | preparation (s) | rate | threads | triangles | ours (M tri/s) | ours / smooth | Bfr (M tri/s) | Bfr / smooth |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::vector<double>> smooth_rates;  // [rate][threads] of the smooth mesh: ours, Bfr
-  for (double sharpness : {0.0, 1.0, 2.0, 10.0}) {
-    const MeshFeatures features = creases(mesh, sharpness);
+  struct Case {
+    double sharpness;
+    std::size_t every;
+    bool round_features;
+  };
+  for (const Case& c : {Case{0, 10, false}, Case{1, 10, false}, Case{2, 10, false}, Case{10, 10, false}, Case{2, 10, true},
+                        Case{2, 100, true}, Case{4, 100, true}}) {
+    const double sharpness = c.sharpness;
+    const MeshFeatures features = creases(mesh, sharpness, c.every);
+    set_whole_mesh_crease_faces(c.round_features ? 0 : limits::kMaxCreaseStepFaces);
     const auto t0 = Clock::now();
     const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, {},
                                                   sharpness > 0 ? features : MeshFeatures{});
@@ -88,9 +102,9 @@ int run(int argc, char** argv) {
         });
         const double ours_rate = triangles / ours / 1e6, osd_rate = osd_triangles / theirs / 1e6;
         if (sharpness == 0) smooth_rates.push_back({ours_rate, osd_rate});
-        const auto& base = smooth_rates[row++];
-        std::printf("| %g | %zu | %.2f | %s | %d | %zu | %.1f | %.2f | %.1f | %.2f |\n", sharpness,
-                    topology->prepared_face_count(), prepare_s, rate ? std::to_string(rate).c_str() : "mix 1..24", threads,
+        const auto& base = smooth_rates[row++ % smooth_rates.size()];
+        std::printf("| %g | 1 in %zu | %s | %zu | %.2f | %s | %d | %zu | %.1f | %.2f | %.1f | %.2f |\n", sharpness, c.every,
+                    c.round_features ? "round the features" : "whole mesh", topology->prepared_face_count(), prepare_s, rate ? std::to_string(rate).c_str() : "mix 1..24", threads,
                     triangles, ours_rate, ours_rate / base[0], osd_rate, osd_rate / base[1]);
         std::fflush(stdout);
       }

@@ -13,6 +13,7 @@
 #include "stencil_runtime/surface.hpp"
 #include "stencil_runtime/surface_topology.hpp"
 #include "stencil_runtime/tessellation.hpp"
+#include "quad/semi_sharp_levels.hpp"
 #include "tables/quad_tables.hpp"
 #include "tables/triangle_tables.hpp"
 
@@ -38,23 +39,28 @@ class Budget {
   long left_ = kWeightBudget;
 };
 
-// Semi-sharp features are applied by whole-mesh steps, one per unit of
-// sharpness: a few tagged faces with a corner of sharpness 9 become a million
-// prepared faces, legal and within the runtime's limit but seconds of work
-// under the sanitizers (a libFuzzer timeout, 2026-12-03). Such inputs are left
-// out, as the weight budget leaves out long sweeps.
+// Semi-sharp features cost faces: Loop's whole-mesh steps make 4 times the
+// faces per unit of sharpness (a few tagged faces with a corner of sharpness 9
+// become a million, legal and within the runtime's limit but seconds under the
+// sanitizers: a libFuzzer timeout, 2026-12-03); the quad family's refinement
+// round the features (quad/semi_sharp_levels.hpp) makes about 32 faces per
+// tagged feature, times 2 per unit of sharpness. Inputs beyond the budget are
+// left out, as the weight budget leaves out long sweeps.
 constexpr double kCreaseStepFaceBudget = 65536;
 
-// The faces those steps would make: every face-vertex (the first step's
-// quads), times 4 for each further step.
-double crease_step_faces(const rt::Mesh& mesh) {
-  double sharpest = 0;
+// Those faces, roughly (an upper estimate for the quad family; Loop's are exact).
+double crease_step_faces(const rt::Mesh& mesh, bool triangles) {
+  double sharpest = 0, features = 0;
   for (const auto& c : mesh.tags.creases)
-    if (c.sharpness < 10) sharpest = std::max(sharpest, c.sharpness);
+    if (c.sharpness > 0 && c.sharpness < 10) sharpest = std::max(sharpest, c.sharpness), ++features;
   for (const auto& c : mesh.tags.corners)
-    if (c.sharpness < 10) sharpest = std::max(sharpest, c.sharpness);
+    if (c.sharpness > 0 && c.sharpness < 10) sharpest = std::max(sharpest, c.sharpness), ++features;
   if (!(sharpest > 0)) return 0;  // NaN included: refused before any step
-  return static_cast<double>(mesh.face_vertices.size()) * std::pow(4.0, std::ceil(sharpest) - 1);
+  const double steps = std::ceil(sharpest);
+  const double whole = static_cast<double>(mesh.face_vertices.size()) * std::pow(4.0, steps - 1);
+  // The quad family takes whole-mesh steps within its budget (lowered to this one below), else refines round the features.
+  if (triangles || whole <= kCreaseStepFaceBudget) return whole;
+  return 32 * features * std::pow(2.0, steps) + 16 * static_cast<double>(mesh.face_vertices.size());
 }
 
 const rt::Mesh& bundled_mesh(const char* name) {
@@ -262,7 +268,10 @@ void use_mesh(const rt::Mesh& input) {
   } catch (const rt::MeshError&) {
   }
   const std::vector<int> view_rates = stencil_tools::rates_for_view(mesh, stencil_tools::Camera{}, 8);
-  if (crease_step_faces(mesh) > kCreaseStepFaceBudget) return;
+  // Both ways of the quad family within the budget: whole-mesh steps up to it, refinement round the features beyond.
+  static const bool budget_set = (rt::set_whole_mesh_crease_faces(static_cast<std::size_t>(kCreaseStepFaceBudget)), true);
+  (void)budget_set;
+  if (crease_step_faces(mesh, triangles) > kCreaseStepFaceBudget) return;
   Budget budget;
   use_surface(triangles ? triangle_tables : quad_tables, mesh, view_rates, budget);
 }

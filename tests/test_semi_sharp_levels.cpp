@@ -430,3 +430,25 @@ TEST_CASE("closest points on surfaces refined round their semi-sharp features eq
   WARN("closest points refined round the features against whole-mesh steps: largest difference " << worst / size
                                                                                                   << " of the size");
 }
+
+TEST_CASE("nonpoly refined round its semi-sharp features equals nonpoly refined whole", "[runtime][creases]") {
+  // No reference evaluates nonpoly; the whole-mesh steps are the plain subdivision it is checked against
+  // (tests/test_creases.cpp: continuous across every edge, crease rule nonpoly-curve).
+  const auto tables = Tables::load(generated_table("nonpoly", "--valence 3-8 --n 8", "sgs").string());
+  std::mt19937 rng(5u);
+  Mesh cube = load("cube");
+  SharpFeatures f;
+  f.crease(cube.face_vertices[0], cube.face_vertices[1], 2.5f);
+  f.crease(cube.face_vertices[1], cube.face_vertices[2], 1.5f);
+  f.corner(cube.face_vertices[6], 1.25f);
+  const Surface whole = surface_of(tables, cube, f);
+  const Surface local = [&] {
+    const WholeMeshBudget budget(0);
+    return surface_of(tables, cube, f);
+  }();
+  REQUIRE(local.topology().preparation().find("refined round") != std::string::npos);
+  CHECK(node_difference(local, whole, cube) < 1e-13);
+  std::vector<int> rates(cube.face_count());
+  for (int& r : rates) r = 1 + static_cast<int>(rng() % 8);
+  CHECK(closed(tessellate(local, rates, {1}, true)));
+}
