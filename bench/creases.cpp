@@ -11,7 +11,8 @@
 // tessellates the same meshes with the same creases in the same run.
 // Then the refinement round the features (quad/semi_sharp_levels.hpp, which
 // the runtime takes where whole-mesh steps would pass 2^21 faces), forced:
-// every 10th edge at sharpness 2 again, and every 100th at sharpness 2 and 4
+// every 10th edge at sharpness 2 again, and every 100th at sharpness 2 (after
+// the same by whole-mesh steps) and 4
 // (a few creases, the usual case; sharpness 4 is beyond whole-mesh steps here).
 // Usage: bench_creases [CATMULL-CLARK.sgs]
 #include <algorithm>
@@ -25,7 +26,6 @@
 #include "bench_timing.hpp"
 #include "osd_tessellation.hpp"
 #include "quad/semi_sharp_levels.hpp"
-#include "stencil_runtime/limits.hpp"
 #include "stencil_runtime/mesh_io.hpp"
 #include "stencil_runtime/subdivide.hpp"
 #include "stencil_runtime/tessellation.hpp"
@@ -58,7 +58,14 @@ int run(int argc, char** argv) {
   const auto tables = Tables::load(cc_path);
   Mesh mesh = read_obj(std::string(STENCIL_SOURCE_DIR) + "/meshes/chess-piece.obj");
   while (mesh.face_count() < 50000) mesh = subdivide(*tables, mesh);
-  std::printf("# chess piece refined to %zu faces; every 10th edge creased\n\n", mesh.face_count());
+  std::printf("# chess piece refined to %zu faces; creases on every 10th or 100th edge\n\n", mesh.face_count());
+  // What the runtime picks by itself (quad/semi_sharp_levels.hpp's automatic choice) for the creased meshes below.
+  for (std::size_t every : {std::size_t{10}, std::size_t{100}}) {
+    set_crease_refinement_choice(CreaseRefinementChoice::Automatic);
+    const auto t = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, {}, creases(mesh, 2, every));
+    std::printf("# automatic choice, every %zuth edge at sharpness 2: %s\n", every, t->preparation().c_str());
+  }
+  std::printf("\n");
   std::printf("| sharpness | creased edges | refinement | prepared faces | preparation (s) | rate | threads | triangles | ours (M tri/s) | ours / smooth | Bfr (M tri/s) | Bfr / smooth |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::vector<double>> smooth_rates;  // [rate][threads] of the smooth mesh: ours, Bfr
@@ -68,10 +75,10 @@ int run(int argc, char** argv) {
     bool round_features;
   };
   for (const Case& c : {Case{0, 10, false}, Case{1, 10, false}, Case{2, 10, false}, Case{10, 10, false}, Case{2, 10, true},
-                        Case{2, 100, true}, Case{4, 100, true}}) {
+                        Case{2, 100, false}, Case{2, 100, true}, Case{4, 100, true}}) {
     const double sharpness = c.sharpness;
     const MeshFeatures features = creases(mesh, sharpness, c.every);
-    set_whole_mesh_crease_faces(c.round_features ? 0 : limits::kMaxCreaseStepFaces);
+    set_crease_refinement_choice(c.round_features ? CreaseRefinementChoice::RoundFeatures : CreaseRefinementChoice::WholeMesh);
     const auto t0 = Clock::now();
     const auto topology = SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, {},
                                                   sharpness > 0 ? features : MeshFeatures{});

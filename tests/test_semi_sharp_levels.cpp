@@ -235,11 +235,11 @@ TEST_CASE("appended refinement steps read the prepared vertices before them, and
 
 namespace {
 
-// Sets the whole-mesh budget for semi-sharp features while alive (0: always refine round them).
-struct WholeMeshBudget {
-  std::size_t before = whole_mesh_crease_faces();
-  explicit WholeMeshBudget(std::size_t faces) { set_whole_mesh_crease_faces(faces); }
-  ~WholeMeshBudget() { set_whole_mesh_crease_faces(before); }
+// Chooses the quad family's way with semi-sharp features while alive.
+struct RefinementChoice {
+  CreaseRefinementChoice before = crease_refinement_choice();
+  explicit RefinementChoice(CreaseRefinementChoice c) { set_crease_refinement_choice(c); }
+  ~RefinementChoice() { set_crease_refinement_choice(before); }
 };
 
 Surface surface_of(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, const SharpFeatures& f) {
@@ -318,10 +318,13 @@ TEST_CASE("surfaces refined round their semi-sharp features equal those refined 
   }
   for (const Case& c : cases) {
     INFO(c.name);
-    const Surface whole = surface_of(tables, c.mesh, c.f);
+    const Surface whole = [&] {
+      const RefinementChoice whole_mesh(CreaseRefinementChoice::WholeMesh);
+      return surface_of(tables, c.mesh, c.f);
+    }();
     std::string preparation;
     const Surface local = [&] {
-      const WholeMeshBudget budget(0);
+      const RefinementChoice round(CreaseRefinementChoice::RoundFeatures);
       return surface_of(tables, c.mesh, c.f);
     }();
     INFO("whole: " << whole.topology().preparation() << "; local: " << local.topology().preparation());
@@ -395,9 +398,12 @@ TEST_CASE("closest points on surfaces refined round their semi-sharp features eq
   SharpFeatures f;
   f.crease(cube.face_vertices[0], cube.face_vertices[1], 3.5f);
   f.corner(cube.face_vertices[6], 2.25f);
-  const Surface whole = surface_of(tables, cube, f);
+  const Surface whole = [&] {
+    const RefinementChoice whole_mesh(CreaseRefinementChoice::WholeMesh);
+    return surface_of(tables, cube, f);
+  }();
   const Surface local = [&] {
-    const WholeMeshBudget budget(0);
+    const RefinementChoice round(CreaseRefinementChoice::RoundFeatures);
     return surface_of(tables, cube, f);
   }();
   REQUIRE(local.topology().preparation().find("refined round") != std::string::npos);
@@ -441,9 +447,12 @@ TEST_CASE("nonpoly refined round its semi-sharp features equals nonpoly refined 
   f.crease(cube.face_vertices[0], cube.face_vertices[1], 2.5f);
   f.crease(cube.face_vertices[1], cube.face_vertices[2], 1.5f);
   f.corner(cube.face_vertices[6], 1.25f);
-  const Surface whole = surface_of(tables, cube, f);
+  const Surface whole = [&] {
+    const RefinementChoice whole_mesh(CreaseRefinementChoice::WholeMesh);
+    return surface_of(tables, cube, f);
+  }();
   const Surface local = [&] {
-    const WholeMeshBudget budget(0);
+    const RefinementChoice round(CreaseRefinementChoice::RoundFeatures);
     return surface_of(tables, cube, f);
   }();
   REQUIRE(local.topology().preparation().find("refined round") != std::string::npos);

@@ -8,6 +8,7 @@
 #include "family/stencil_sum.hpp"
 #include "mesh/polygon_links.hpp"
 #include "quad_creases.hpp"
+#include "family/local_region.hpp"
 #include "family/sharp_cut.hpp"
 #include "quad_refinement.hpp"
 #include "regular_face_samples.hpp"
@@ -66,6 +67,25 @@ bool isolated(const QuadTopology& topo, const std::vector<SectorRule>& corner, c
   for (std::size_t f = 0; f < topo.faces(); ++f)
     if (!face_ready(topo, f, corner, no_surface)) return false;
   return true;
+}
+
+// Whether semi-sharp features that whole-mesh steps could take are better
+// refined round (crease_refinement_choice): few faces have a corner with one.
+bool round_features_pay(const Connectivity& mesh, const LevelSharpness& sharpness) {
+  switch (crease_refinement_choice()) {
+    case CreaseRefinementChoice::WholeMesh: return false;
+    case CreaseRefinementChoice::RoundFeatures: return true;
+    case CreaseRefinementChoice::Automatic: break;
+  }
+  const std::vector<char> at = semi_sharp_vertices(mesh, sharpness);
+  std::size_t marked = 0, corner = 0;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    bool any = false;
+    for (int c = 0; c < mesh.face_sizes[f]; ++c) any = any || at[static_cast<std::size_t>(mesh.face_vertices[corner + static_cast<std::size_t>(c)])];
+    marked += any ? 1 : 0;
+    corner += static_cast<std::size_t>(mesh.face_sizes[f]);
+  }
+  return 4 * marked <= mesh.face_count();
 }
 
 using PhantomRows = std::vector<std::vector<std::pair<int, double>>>;
@@ -220,7 +240,8 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   if (!sharpness.smooth()) {
     crease = quad_crease_rule(t, tables.scheme());
     const std::size_t first = all_quads ? 4 * mesh.face_count() : mesh.face_vertices.size();
-    local = sharpness.has_semi_sharp() && !crease_steps_fit(first, sharpness.max(), whole_mesh_crease_faces());
+    local = sharpness.has_semi_sharp() && (!crease_steps_fit(first, sharpness.max(), whole_mesh_crease_faces()) ||
+                                           round_features_pay(mesh, sharpness));
     if (!local) check_crease_steps(mesh.face_count(), first, sharpness.max());
   }
   if (all_quads) {

@@ -36,11 +36,14 @@ void renumber_columns(RefinementStep& step, const SubMesh& sub, std::size_t mesh
 }
 
 std::atomic<std::size_t> whole_mesh_budget{limits::kMaxCreaseStepFaces};
+std::atomic<CreaseRefinementChoice> refinement_choice{CreaseRefinementChoice::Automatic};
 
 }  // namespace
 
 std::size_t whole_mesh_crease_faces() { return whole_mesh_budget.load(); }
 void set_whole_mesh_crease_faces(std::size_t faces) { whole_mesh_budget.store(faces); }
+CreaseRefinementChoice crease_refinement_choice() { return refinement_choice.load(); }
+void set_crease_refinement_choice(CreaseRefinementChoice choice) { refinement_choice.store(choice); }
 
 std::size_t SemiSharpRefinement::faces() const {
   std::size_t n = refined.size();

@@ -29,12 +29,22 @@
 namespace stencil_runtime {
 
 // The most faces whole-mesh steps may make for a mesh's semi-sharp features;
-// beyond it the quad family refines only round them. Whole-mesh steps are
-// kept where they fit because their faces are tessellated by the fast
-// kernels, while a face refined round a feature is tessellated point by point
-// (docs/runtime.md). Tests lower it to take both ways on one mesh.
+// beyond it the quad family refines only round them.
 std::size_t whole_mesh_crease_faces();
 void set_whole_mesh_crease_faces(std::size_t faces);
+
+// Which way the quad family takes semi-sharp features within that budget.
+// Automatic: round them when at most a quarter of the faces have a corner
+// with a semi-sharp feature (bench_creases, 2026-12-03: with every 100th edge
+// creased, 0.82-0.96 of the smooth mesh's tessellation rate round the
+// features against 0.48-0.77 by whole-mesh steps; with every 10th, where 81%
+// of the faces have such a corner, 0.41-0.55 against 0.58-0.81: a face
+// refined round a feature is tessellated point by point, a face of
+// whole-mesh steps by the fast kernels), else by whole-mesh steps. Tests
+// choose one way to compare it with the other.
+enum class CreaseRefinementChoice { Automatic, WholeMesh, RoundFeatures };
+CreaseRefinementChoice crease_refinement_choice();
+void set_crease_refinement_choice(CreaseRefinementChoice choice);
 
 struct SemiSharpLevel {
   Connectivity mesh;  // every face a quad; its border is the region's, plus the mesh's own boundary
