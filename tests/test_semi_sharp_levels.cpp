@@ -251,7 +251,7 @@ Surface surface_of(const std::shared_ptr<const Tables>& tables, const Mesh& mesh
 double node_difference(const Surface& a, const Surface& b, const Mesh& mesh) {
   double worst = 0;
   for (std::size_t face = 0; face < mesh.face_count(); ++face)
-    for (long n = 1; n <= 8; ++n)
+    for (long n = 1; n <= 8 && !a.topology().is_hole(face); ++n)
       for (long j = 0; j <= n; ++j)
         for (long i = 0; i <= n; ++i) worst = std::max(worst, distance(a.evaluate(face, grid(i, j, n)), b.evaluate(face, grid(i, j, n))));
   return worst / extent(mesh);
@@ -262,7 +262,7 @@ double bfr_node_difference(const Surface& ours, const Mesh& mesh, const SharpFea
   bfr_reference::BfrLimit bfr(mesh.positions, mesh.face_sizes, mesh.face_vertices, bfr_reference::osd::Sdc::SCHEME_CATMARK, {}, f.osd);
   double worst = 0;
   for (std::size_t face = 0; face < mesh.face_count(); ++face)
-    for (long j = 0; j <= n; ++j)
+    for (long j = 0; j <= n && !ours.topology().is_hole(face); ++j)
       for (long i = 0; i <= n; ++i)
         worst = std::max(worst, distance(ours.evaluate(face, grid(i, j, n)),
                                          bfr.evaluate(static_cast<int>(face), static_cast<double>(i) / n, static_cast<double>(j) / n)));
@@ -313,7 +313,32 @@ TEST_CASE("surfaces refined round their semi-sharp features equal those refined 
     Case c{"open grid 6x5 with creases, edge-and-corner", test_meshes::open_grid(6, 5), {}};
     for (int i = 0; i < 6; ++i) c.f.crease(2 * 7 + i, 2 * 7 + i + 1, 3.0f);
     c.f.crease(0, 1, 2.0f);
+    c.f.crease(5, 6, 1.5f);  // at the corner that is its face's corner 1: a turned sector patch
+    c.f.crease(34, 41, 2.5f);  // and at the one that is corner 2
     c.f.boundary(BoundaryInterpolation::EdgeAndCorner);
+    cases.push_back(c);
+  }
+  {
+    // A 4x4 grid less its top right quadrant: the inner corner (vertex 12) is on the boundary in three
+    // faces, whose sector patches are turned (the corner is not their first), and no step is needed first.
+    Case c{"open L of 12 quads with creases at its inner corner", test_meshes::open_grid(4, 4), {}};
+    Mesh& m = c.mesh;
+    std::vector<int> sizes, vertices;
+    for (std::size_t f = 0; f < m.face_count(); ++f)
+      if (!(f % 4 >= 2 && f / 4 >= 2)) {
+        sizes.push_back(4);
+        vertices.insert(vertices.end(), m.face_vertices.begin() + static_cast<long>(4 * f), m.face_vertices.begin() + static_cast<long>(4 * f + 4));
+      }
+    m.face_sizes = sizes, m.face_vertices = vertices;
+    // (3, 3), (4, 3), (3, 4) and (4, 4) are in no face now: ignored, as OpenSubdiv does.
+    c.f.crease(11, 12, 2.5f);
+    c.f.crease(7, 12, 1.5f);
+    cases.push_back(c);
+  }
+  {
+    Case c{"open grid 8x7 with a crease of 3 through it, boundary none", test_meshes::open_grid(8, 7), {}};
+    for (int i = 0; i < 8; ++i) c.f.crease(3 * 9 + i, 3 * 9 + i + 1, 3.0f);
+    c.f.boundary_none();
     cases.push_back(c);
   }
   for (const Case& c : cases) {
@@ -353,7 +378,9 @@ TEST_CASE("surfaces refined round their semi-sharp features equal those refined 
     const auto& family = dynamic_cast<const QuadFamily&>(local.topology().family());
     double worst = 0;
     std::size_t at = 0;
+    const std::vector<char> holes = local.topology().prepared_holes();
     for (std::size_t f = 0; f < plan.prepared_rates().size(); ++f) {
+      if (!holes.empty() && holes[f]) continue;  // no points
       const long n = plan.prepared_rates()[f];
       for (long j = 0; j < n; ++j)
         for (long i = 0; i < n; ++i, ++at) {
@@ -366,6 +393,14 @@ TEST_CASE("surfaces refined round their semi-sharp features equal those refined 
         }
     }
     CHECK(worst / extent(c.mesh) < 1e-6);
+    // Closest points: at the surface's point at their parameters, and no dense sample nearer.
+    const ClosestPointQuery query(local);
+    const std::vector<Point> samples = surface_nodes(whole, c.mesh, 8);
+    for (int k = 0; k < 100; ++k) {
+      const Point q = k % 2 ? random_query(samples, 0.3 * extent(c.mesh), rng) : samples[rng() % samples.size()];
+      INFO("closest point query " << k);
+      CHECK(closest_point_defect(local, q, query.find(q), samples, extent(c.mesh), 1e-9 * extent(c.mesh)) == "");
+    }
   }
 }
 

@@ -327,6 +327,10 @@ void QuadFamily::refine_round_features(Prepared& out, const QuadTables& t, const
   const std::size_t prepared_faces = out.mesh.face_count();
   out.children.assign(prepared_faces, kLeaf);
   out.parent.assign(prepared_faces, kLeaf);
+  // A refined face's own patch is only its hull (closest points): unturned,
+  // so that its sub-patch coordinates are the face's own, as its tree's are.
+  for (std::size_t f = 0; f < prepared_faces; ++f)
+    if (r.refined[f]) out.patches[f].rotation = 0;
   out.feature_levels = static_cast<int>(r.levels.size());
   out.feature_faces = r.faces() - prepared_faces;
   std::size_t before_base = 0, before_vertices = 0;  // the level before: its first node and prepared vertex (the prepared mesh's at 0)
@@ -368,6 +372,7 @@ void QuadFamily::refine_round_features(Prepared& out, const QuadTables& t, const
       if (!ready) throw MeshError("internal: a face refined round a semi-sharp feature has no patch");
       QuadPatch p = face_patch(topo, f, cut.rule, no_surface, cut.mesh.vertex_count, phantoms);
       for (int& i : p.points) i += static_cast<int>(offset);
+      if (level.refined[f]) p.rotation = 0;  // a hull, as above
       out.patches[base + f] = std::move(p);
     }
     if (!phantoms.empty()) out.refinement.append(rows_over(cut.mesh.vertex_count, phantoms), offset);
