@@ -496,3 +496,25 @@ TEST_CASE("nonpoly refined round its semi-sharp features equals nonpoly refined 
   for (int& r : rates) r = 1 + static_cast<int>(rng() % 8);
   CHECK(closed(tessellate(local, rates, {1}, true)));
 }
+
+TEST_CASE("stencil rows over the control points of a surface refined round its semi-sharp features give its points",
+          "[runtime][creases]") {
+  // Fitting solves for control points through these rows (Refinement::fold through the appended levels).
+  const auto tables = catmull_clark();
+  const Mesh mesh = load("chess-piece");
+  SharpFeatures f;
+  const auto edges = edges_of(mesh);
+  for (std::size_t k = 0; k < edges.size(); k += 40) f.crease(edges[k].first, edges[k].second, 6.0f);
+  const RefinementChoice round(CreaseRefinementChoice::RoundFeatures);
+  const Surface surface = surface_of(tables, mesh, f);
+  REQUIRE(surface.topology().preparation().find("refined round") != std::string::npos);
+  double worst = 0;
+  for (std::size_t face = 0; face < mesh.face_count(); face += 3)
+    for (long j = 0; j <= 4; ++j)
+      for (long i = 0; i <= 4; ++i) {
+        const StencilRows rows = surface.topology().stencil(face, grid(i, j, 4));
+        REQUIRE(rows.columns == mesh.vertex_count());
+        worst = std::max(worst, distance(rows.apply(mesh.positions)[0], surface.evaluate(face, grid(i, j, 4))));
+      }
+  CHECK(worst / extent(mesh) < 1e-13);
+}
