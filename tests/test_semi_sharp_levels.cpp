@@ -374,9 +374,10 @@ TEST_CASE("surfaces refined round their semi-sharp features equal those refined 
     for (int& r : rates) r = 1 + static_cast<int>(rng() % 8);
     const TessellationPlan plan(local.shared_topology(), rates, {1});
     PolygonSoup soup = plan.make_soup();
-    plan.evaluate(local, soup.positions.data());
+    soup.normals.resize(soup.positions.size());
+    plan.evaluate(local, soup.positions.data(), soup.normals.data());
     const auto& family = dynamic_cast<const QuadFamily&>(local.topology().family());
-    double worst = 0;
+    double worst = 0, worst_normal = 0;
     std::size_t at = 0;
     const std::vector<char> holes = local.topology().prepared_holes();
     for (std::size_t f = 0; f < plan.prepared_rates().size(); ++f) {
@@ -390,9 +391,13 @@ TEST_CASE("surfaces refined round their semi-sharp features equal those refined 
           const Point exact = whole.evaluate(o.face, o.u, o.v, 1e-12).point;
           const auto& q = soup.positions[at];
           worst = std::max(worst, distance(exact, {q[0], q[1], q[2]}));
+          const Point normal = whole.normal(o.face, o.u, o.v);
+          const auto& m = soup.normals[at];
+          worst_normal = std::max(worst_normal, distance(normal, {m[0], m[1], m[2]}));
         }
     }
     CHECK(worst / extent(c.mesh) < 1e-6);
+    CHECK(worst_normal < 1e-5);  // unit normals in float
     // Closest points: at the surface's point at their parameters, and no dense sample nearer.
     const ClosestPointQuery query(local);
     const std::vector<Point> samples = surface_nodes(whole, c.mesh, 8);

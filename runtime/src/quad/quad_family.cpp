@@ -963,6 +963,27 @@ Point QuadFamily::refined_point(std::size_t face, long a, long b, int n, const P
   return stencil_sum(w.data(), p.points.data(), p.points.size(), prepared);
 }
 
+bool QuadFamily::refined_regular_normal(std::size_t face, long a, long b, int n, const Point* prepared, Point& normal) const {
+  if (!tables_.has_regular_derivatives()) return false;
+  const std::size_t leaf = leaf_of(face, a, b, 2L * n);
+  const QuadPatch& p = patches_[leaf];
+  if (p.valence != 4) return false;
+  long pa = 0, pb = 0;
+  p.to_patch(a, b, 2L * n, pa, pb);
+  // Quarter turns and doublings keep the orientation: du x dv in the leaf's coordinates points as on the face.
+  double wx[4], wy[4], dx[4], dy[4];
+  tables_.regular_weights(n, pa, wx), tables_.regular_weights(n, pb, wy);
+  tables_.regular_derivative_weights(n, pa, dx), tables_.regular_derivative_weights(n, pb, dy);
+  Derivatives d;
+  for (int q = 0; q < 4; ++q)
+    for (int r = 0; r < 4; ++r) {
+      const Point& P = prepared[p.points[static_cast<std::size_t>(q * 4 + r)]];
+      for (std::size_t k = 0; k < 3; ++k) d.du[k] += dx[r] * wy[q] * P[k], d.dv[k] += wx[r] * dy[q] * P[k];
+    }
+  normal = d.normal();
+  return true;
+}
+
 // The n^2 cell centres of a regular face, tensor-product form: rows R[q][i] =
 // sum_c wx(i)[c] P(c, q), then each point sums 4 rows with the weights of its
 // row. N > 0 fixes n at compile time (short loops unrolled), N = 0 reads it.
@@ -1083,11 +1104,15 @@ void QuadFamily::normals(const TessellationLayout& layout, std::size_t begin, st
     const QuadPatch& p = patches_[f];
     const int n = layout.rates[f];
     std::array<float, 3>* out = out_all + layout.point_offsets[f];
-    if (refined(f)) {  // point by point, from the original face (no cell centre is a vertex, where normals may fail)
+    if (refined(f)) {  // point by point: regular leaves from their stencils, others from the original face
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-          const FaceParameterReal at = original_of_face(f, (i + 0.5) / n, (j + 0.5) / n);
-          const Point q = normal(at.face, at.u, at.v, pos);
+          Point q;
+          if (!refined_regular_normal(f, 2L * i + 1, 2L * j + 1, n, pos, q)) {
+            // No cell centre is a vertex, where normals may fail.
+            const FaceParameterReal at = original_of_face(f, (i + 0.5) / n, (j + 0.5) / n);
+            q = normal(at.face, at.u, at.v, pos);
+          }
           out[j * n + i] = {static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2])};
         }
       continue;

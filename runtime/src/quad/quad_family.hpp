@@ -109,6 +109,9 @@ class QuadFamily final : public Family {
   std::size_t leaf_of(std::size_t node, long& a, long& b, long d) const;
   // The limit point at (a, b) / (2n) of a prepared face refined round features, from its leaves' stencils at rate n.
   Point refined_point(std::size_t face, long a, long b, int n, const Point* prepared) const;
+  // Its unit normal there where the leaf is regular (the tensor product of the curve and its
+  // derivative at the node, when the tables hold it); false elsewhere.
+  bool refined_regular_normal(std::size_t face, long a, long b, int n, const Point* prepared, Point& normal) const;
   // A prepared face's (or a tree node's) own coordinates (u, v) to its original face's.
   FaceParameterReal original_of_face(std::size_t node, double u, double v) const;
   // Per stored rate n (indexed by n): phi at the n cell centres, 4 weights each.
