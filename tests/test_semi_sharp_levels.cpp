@@ -109,6 +109,29 @@ std::vector<std::pair<int, int>> edges_of(const Mesh& m) {
   return {out.begin(), out.end()};
 }
 
+struct Case {
+  std::string name;
+  Mesh mesh;
+  SharpFeatures f;
+};
+
+Case creased_cube() {
+  Case c{"cube, an edge of 3.5, a corner of 2.25", load("cube"), {}};
+  c.f.crease(c.mesh.face_vertices[0], c.mesh.face_vertices[1], 3.5f);
+  c.f.corner(c.mesh.face_vertices[6], 2.25f);
+  return c;
+}
+
+Case creased_open_grid() {
+  Case c{"open grid 6x5 with creases across it and at its corners, edge-and-corner", test_meshes::open_grid(6, 5), {}};
+  for (int i = 0; i < 6; ++i) c.f.crease(2 * 7 + i, 2 * 7 + i + 1, 3.0f);  // row 2 of the 7-wide vertex grid
+  c.f.crease(0, 1, 2.0f);
+  c.f.crease(5, 6, 1.5f);    // at the corner that is its face's corner 1
+  c.f.crease(34, 41, 2.5f);  // and at the one that is corner 2
+  c.f.boundary(BoundaryInterpolation::EdgeAndCorner);
+  return c;
+}
+
 }  // namespace
 
 TEST_CASE("refinement round semi-sharp features: every point it keeps is Far's at its level, and its leaves cover the "
@@ -116,18 +139,8 @@ TEST_CASE("refinement round semi-sharp features: every point it keeps is Far's a
           "[runtime][creases][opensubdiv]") {
   const auto tables = catmull_clark();
   std::mt19937 rng(20261203u);
-  struct Case {
-    std::string name;
-    Mesh mesh;
-    SharpFeatures f;
-  };
   std::vector<Case> cases;
-  {
-    Case c{"cube, one edge of sharpness 3.5 and a corner of 2.25", load("cube"), {}};
-    c.f.crease(c.mesh.face_vertices[0], c.mesh.face_vertices[1], 3.5f);
-    c.f.corner(c.mesh.face_vertices[6], 2.25f);
-    cases.push_back(c);
-  }
+  cases.push_back(creased_cube());
   for (bool chaikin : {false, true}) {
     Case c{std::string("chess piece, a few creases up to 3.75, ") + (chaikin ? "Chaikin" : "uniform"), load("chess-piece"), {}};
     const auto edges = edges_of(c.mesh);
@@ -139,13 +152,7 @@ TEST_CASE("refinement round semi-sharp features: every point it keeps is Far's a
     if (chaikin) c.f.chaikin();
     cases.push_back(c);
   }
-  {
-    Case c{"open grid 6x5, a crease of 3 through it and one of 2 on its rim, edge-and-corner", test_meshes::open_grid(6, 5), {}};
-    for (int i = 0; i < 6; ++i) c.f.crease(2 * 7 + i, 2 * 7 + i + 1, 3.0f);  // row 2 of the 7-wide vertex grid
-    c.f.crease(0, 1, 2.0f);
-    c.f.boundary(BoundaryInterpolation::EdgeAndCorner);
-    cases.push_back(c);
-  }
+  cases.push_back(creased_open_grid());
   for (const Case& c : cases) {
     INFO(c.name);
     const SemiSharpRefinement r = levels_of(*tables, c.mesh, c.f);
@@ -287,18 +294,8 @@ bool closed(const PolygonSoup& soup) {
 TEST_CASE("surfaces refined round their semi-sharp features equal those refined whole, and Bfr's", "[runtime][creases][opensubdiv]") {
   const auto tables = catmull_clark();
   std::mt19937 rng(20261203u);
-  struct Case {
-    std::string name;
-    Mesh mesh;
-    SharpFeatures f;
-  };
   std::vector<Case> cases;
-  {
-    Case c{"cube, an edge of 3.5, a corner of 2.25", load("cube"), {}};
-    c.f.crease(c.mesh.face_vertices[0], c.mesh.face_vertices[1], 3.5f);
-    c.f.corner(c.mesh.face_vertices[6], 2.25f);
-    cases.push_back(c);
-  }
+  cases.push_back(creased_cube());
   {
     Case c{"chess piece, creases up to 3.75 and an infinitely sharp one", load("chess-piece"), {}};
     const auto edges = edges_of(c.mesh);
@@ -309,15 +306,7 @@ TEST_CASE("surfaces refined round their semi-sharp features equal those refined 
     c.f.corner(static_cast<int>(rng() % c.mesh.vertex_count()), 2.5f);
     cases.push_back(c);
   }
-  {
-    Case c{"open grid 6x5 with creases, edge-and-corner", test_meshes::open_grid(6, 5), {}};
-    for (int i = 0; i < 6; ++i) c.f.crease(2 * 7 + i, 2 * 7 + i + 1, 3.0f);
-    c.f.crease(0, 1, 2.0f);
-    c.f.crease(5, 6, 1.5f);  // at the corner that is its face's corner 1: a turned sector patch
-    c.f.crease(34, 41, 2.5f);  // and at the one that is corner 2
-    c.f.boundary(BoundaryInterpolation::EdgeAndCorner);
-    cases.push_back(c);
-  }
+  cases.push_back(creased_open_grid());
   {
     // A 4x4 grid less its top right quadrant: the inner corner (vertex 12) is on the boundary in three
     // faces, whose sector patches are turned (the corner is not their first), and no step is needed first.
