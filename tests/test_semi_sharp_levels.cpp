@@ -276,6 +276,13 @@ double bfr_node_difference(const Surface& ours, const Mesh& mesh, const SharpFea
   return worst / extent(mesh);
 }
 
+// The surface prepared the given way.
+Surface surface_by(CreaseRefinementChoice choice, const std::shared_ptr<const Tables>& tables, const Mesh& mesh,
+                   const SharpFeatures& f) {
+  const RefinementChoice chosen(choice);
+  return surface_of(tables, mesh, f);
+}
+
 // Whether every edge of the soup is shared by exactly two of its polygons (a closed surface).
 bool closed(const PolygonSoup& soup) {
   std::map<std::pair<int, int>, int> uses;
@@ -332,15 +339,8 @@ TEST_CASE("surfaces refined round their semi-sharp features equal those refined 
   }
   for (const Case& c : cases) {
     INFO(c.name);
-    const Surface whole = [&] {
-      const RefinementChoice whole_mesh(CreaseRefinementChoice::WholeMesh);
-      return surface_of(tables, c.mesh, c.f);
-    }();
-    std::string preparation;
-    const Surface local = [&] {
-      const RefinementChoice round(CreaseRefinementChoice::RoundFeatures);
-      return surface_of(tables, c.mesh, c.f);
-    }();
+    const Surface whole = surface_by(CreaseRefinementChoice::WholeMesh, tables, c.mesh, c.f);
+    const Surface local = surface_by(CreaseRefinementChoice::RoundFeatures, tables, c.mesh, c.f);
     INFO("whole: " << whole.topology().preparation() << "; local: " << local.topology().preparation());
     CHECK(local.topology().preparation().find("refined round the semi-sharp features") != std::string::npos);
     CHECK(whole.topology().preparation().find("refined round") == std::string::npos);
@@ -427,14 +427,8 @@ TEST_CASE("closest points on surfaces refined round their semi-sharp features eq
   SharpFeatures f;
   f.crease(cube.face_vertices[0], cube.face_vertices[1], 3.5f);
   f.corner(cube.face_vertices[6], 2.25f);
-  const Surface whole = [&] {
-    const RefinementChoice whole_mesh(CreaseRefinementChoice::WholeMesh);
-    return surface_of(tables, cube, f);
-  }();
-  const Surface local = [&] {
-    const RefinementChoice round(CreaseRefinementChoice::RoundFeatures);
-    return surface_of(tables, cube, f);
-  }();
+  const Surface whole = surface_by(CreaseRefinementChoice::WholeMesh, tables, cube, f);
+  const Surface local = surface_by(CreaseRefinementChoice::RoundFeatures, tables, cube, f);
   REQUIRE(local.topology().preparation().find("refined round") != std::string::npos);
   const ClosestPointQuery a(local), b(whole);
   const std::vector<Point> samples = surface_nodes(whole, cube, 16);
@@ -476,14 +470,8 @@ TEST_CASE("nonpoly refined round its semi-sharp features equals nonpoly refined 
   f.crease(cube.face_vertices[0], cube.face_vertices[1], 2.5f);
   f.crease(cube.face_vertices[1], cube.face_vertices[2], 1.5f);
   f.corner(cube.face_vertices[6], 1.25f);
-  const Surface whole = [&] {
-    const RefinementChoice whole_mesh(CreaseRefinementChoice::WholeMesh);
-    return surface_of(tables, cube, f);
-  }();
-  const Surface local = [&] {
-    const RefinementChoice round(CreaseRefinementChoice::RoundFeatures);
-    return surface_of(tables, cube, f);
-  }();
+  const Surface whole = surface_by(CreaseRefinementChoice::WholeMesh, tables, cube, f);
+  const Surface local = surface_by(CreaseRefinementChoice::RoundFeatures, tables, cube, f);
   REQUIRE(local.topology().preparation().find("refined round") != std::string::npos);
   CHECK(node_difference(local, whole, cube) < 1e-13);
   std::vector<int> rates(cube.face_count());
