@@ -134,4 +134,15 @@ std::vector<char> semi_sharp_vertices(const Connectivity& mesh, const LevelSharp
   return out;
 }
 
+std::vector<char> semi_sharp_faces(const Connectivity& mesh, const LevelSharpness& sharpness) {
+  const std::vector<char> at = semi_sharp_vertices(mesh, sharpness);
+  std::vector<char> out(mesh.face_count(), 0);
+  std::size_t corner = 0;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    for (int c = 0; c < mesh.face_sizes[f]; ++c) out[f] |= at[static_cast<std::size_t>(mesh.face_vertices[corner + static_cast<std::size_t>(c)])];
+    corner += static_cast<std::size_t>(mesh.face_sizes[f]);
+  }
+  return out;
+}
+
 }  // namespace stencil_runtime

@@ -44,5 +44,7 @@ LevelSharpness restrict_sharpness(const LevelSharpness& parent, const SubMesh& s
 // A face with no such vertex has a stationary limit surface: the creasing
 // rules change only the points of such vertices and of such edges.
 std::vector<char> semi_sharp_vertices(const Connectivity& mesh, const LevelSharpness& sharpness);
+// Per face: whether a corner of it is such a vertex (faces of any size).
+std::vector<char> semi_sharp_faces(const Connectivity& mesh, const LevelSharpness& sharpness);
 
 }  // namespace stencil_runtime

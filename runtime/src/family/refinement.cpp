@@ -95,6 +95,19 @@ void Refinement::apply_chain(const Point* control, std::vector<std::vector<Point
   }
 }
 
+namespace {
+
+void add_rows(RefinementStep& step, const std::vector<std::vector<std::pair<int, double>>>& rows) {
+  SparseEntries row;
+  for (const auto& p : rows) {
+    row.clear();
+    for (const auto& [v, w] : p) row.emplace_back(static_cast<std::uint32_t>(v), w);
+    step.add_row(row);
+  }
+}
+
+}  // namespace
+
 RefinementStep append_rows(std::size_t vertices, const std::vector<std::vector<std::pair<int, double>>>& extra) {
   RefinementStep step;
   step.input_vertices = vertices;
@@ -103,11 +116,14 @@ RefinementStep append_rows(std::size_t vertices, const std::vector<std::vector<s
     row.assign(1, {static_cast<std::uint32_t>(v), 1.0});
     step.add_row(row);
   }
-  for (const auto& p : extra) {
-    row.clear();
-    for (const auto& [v, w] : p) row.emplace_back(static_cast<std::uint32_t>(v), w);
-    step.add_row(row);
-  }
+  add_rows(step, extra);
+  return step;
+}
+
+RefinementStep rows_over(std::size_t vertices, const std::vector<std::vector<std::pair<int, double>>>& rows) {
+  RefinementStep step;
+  step.input_vertices = vertices;
+  add_rows(step, rows);
   return step;
 }
 

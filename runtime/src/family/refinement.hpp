@@ -34,6 +34,8 @@ struct RefinementStep {
 // A step that keeps every one of `vertices` and appends `extra` rows over them
 // (phantom points beyond a boundary, copies of vertices on a sharp crease).
 RefinementStep append_rows(std::size_t vertices, const std::vector<std::vector<std::pair<int, double>>>& extra);
+// A step of those `rows` alone over `vertices` vertices (Refinement::append reads them in place).
+RefinementStep rows_over(std::size_t vertices, const std::vector<std::vector<std::pair<int, double>>>& rows);
 
 class Refinement {
  public:

@@ -16,6 +16,7 @@
 // boundary or a crease), whether it is a corner: Sdc's corner rule, counting
 // boundary edges as infinitely sharp and, with edge-and-corner interpolation,
 // a real boundary vertex in one face as a sharp vertex.
+#include <utility>
 #include <vector>
 
 #include "mesh/connectivity.hpp"
@@ -47,6 +48,14 @@ inline bool slit_end_inside(SectorRule rule, bool on_cut_boundary) { return ends
 // cut mesh, with the cone rule.
 SharpCut cut_along_sharp_edges(const Connectivity& mesh, const PolygonLinks& links, const LevelSharpness& sharpness,
                                bool edge_and_corner);
+
+// The rows of the cut mesh's extra vertices (copies of those on infinitely
+// sharp edges, after the `uncut` vertices), each its vertex of the uncut mesh.
+inline std::vector<std::vector<std::pair<int, double>>> copy_rows(const SharpCut& cut, std::size_t uncut) {
+  std::vector<std::vector<std::pair<int, double>>> out;
+  for (std::size_t v = uncut; v < cut.mesh.vertex_count; ++v) out.push_back({{cut.origin[v], 1.0}});
+  return out;
+}
 
 // With boundary interpolation `none`, per vertex of a mesh (`links` over
 // `mesh`): whether the faces at it have no surface. OpenSubdiv (Far's

@@ -48,8 +48,8 @@ int sector_corner(const QuadTopology& topo, std::size_t f, const std::vector<Sec
 // no patch). `topo` is the mesh cut along its infinitely sharp edges
 // (sharp_cut.hpp), whose boundaries are the mesh's and its creases, `corner`
 // its vertices' rules, `no_surface` per vertex whether the faces at it have no
-// surface (empty: none).
-// The same for one face (but the slits, checked per vertex).
+// surface (empty: none). face_ready: the same for one face, but the slits
+// (checked per vertex).
 bool face_ready(const QuadTopology& topo, std::size_t f, const std::vector<SectorRule>& corner, const std::vector<char>& no_surface) {
   if (topo.touches_boundary(f)) {
     if (topo.touches_marked(f, no_surface)) return true;
@@ -77,15 +77,8 @@ bool round_features_pay(const Connectivity& mesh, const LevelSharpness& sharpnes
     case CreaseRefinementChoice::RoundFeatures: return true;
     case CreaseRefinementChoice::Automatic: break;
   }
-  const std::vector<char> at = semi_sharp_vertices(mesh, sharpness);
-  std::size_t marked = 0, corner = 0;
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    bool any = false;
-    for (int c = 0; c < mesh.face_sizes[f]; ++c) any = any || at[static_cast<std::size_t>(mesh.face_vertices[corner + static_cast<std::size_t>(c)])];
-    marked += any ? 1 : 0;
-    corner += static_cast<std::size_t>(mesh.face_sizes[f]);
-  }
-  return 4 * marked <= mesh.face_count();
+  const std::vector<char> marked = semi_sharp_faces(mesh, sharpness);
+  return 4 * static_cast<std::size_t>(std::count(marked.begin(), marked.end(), 1)) <= mesh.face_count();
 }
 
 using PhantomRows = std::vector<std::vector<std::pair<int, double>>>;
@@ -101,19 +94,6 @@ QuadPatch face_patch(const QuadTopology& topo, std::size_t f, const std::vector<
   else if (c >= 0) p = gather_sector_patch(topo, f, c, rule);
   else p = gather_boundary_patch(topo, f, first_phantom, phantoms);
   return p;
-}
-
-// Rows appended after `vertices` prepared vertices: each a weighted sum of them.
-RefinementStep rows_over(std::size_t vertices, const PhantomRows& rows) {
-  RefinementStep step;
-  step.input_vertices = vertices;
-  SparseEntries row;
-  for (const auto& r : rows) {
-    row.clear();
-    for (const auto& [v, w] : r) row.emplace_back(static_cast<std::uint32_t>(v), w);
-    step.add_row(row);
-  }
-  return step;
 }
 
 // The vertices of the input mesh, cut along its infinitely sharp edges: inside
@@ -304,11 +284,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   // creases) and the points beyond its boundaries (boundary_patch_ready)
   // become prepared points of their own, by steps that keep every vertex and
   // append them.
-  if (cut.cut) {
-    std::vector<std::vector<std::pair<int, double>>> copies;
-    for (std::size_t v = out.mesh.vertex_count; v < cut.mesh.vertex_count; ++v) copies.push_back({{cut.origin[v], 1.0}});
-    out.refinement.add(append_rows(out.mesh.vertex_count, copies));
-  }
+  if (cut.cut) out.refinement.add(append_rows(out.mesh.vertex_count, copy_rows(cut, out.mesh.vertex_count)));
   PhantomRows phantoms;
   out.patches.resize(patch_topo.faces());
   for (std::size_t f = 0; f < patch_topo.faces(); ++f)
@@ -354,11 +330,7 @@ void QuadFamily::refine_round_features(Prepared& out, const QuadTables& t, const
     const SharpCut cut = cut_along_sharp_edges(level.mesh, links, level.sharpness, edge_and_corner);
     const std::vector<char> no_surface = no_surface_vertices(out.no_boundary_surface, level.mesh, links, level.sharpness, cut);
     const QuadTopology topo(cut.mesh, true);
-    if (cut.cut) {
-      PhantomRows copies;
-      for (std::size_t v = level.mesh.vertex_count; v < cut.mesh.vertex_count; ++v) copies.push_back({{cut.origin[v], 1.0}});
-      out.refinement.append(rows_over(level.mesh.vertex_count, copies), offset);
-    }
+    if (cut.cut) out.refinement.append(rows_over(level.mesh.vertex_count, copy_rows(cut, level.mesh.vertex_count)), offset);
     PhantomRows phantoms;
     for (std::size_t f = 0; f < faces; ++f) {
       // Leaves get their patches; inner nodes the same points, as the hull of the surface below them.
@@ -565,13 +537,8 @@ void QuadFamily::root(std::size_t prepared_face, const Point* prepared, SubPatch
 SubDomain QuadFamily::child_domain(const SubDomain& parent, int c, int rotation) {
   // Own coordinates (patch coordinates when rotated) -> the child face's -> the parent's -> through `parent`.
   const auto map = [&](double X, double Y) {
-    double u = X, v = Y;
-    switch (rotation) {
-      case 0: break;
-      case 1: u = 1 - Y, v = X; break;
-      case 2: u = 1 - X, v = 1 - Y; break;
-      default: u = Y, v = 1 - X; break;
-    }
+    double u = 0, v = 0;
+    QuadPatch::from_patch(rotation, X, Y, u, v);
     to_parent(c, u, v);
     return parent.at(u, v);
   };
@@ -737,13 +704,8 @@ const PolynomialPatch* QuadFamily::polynomial_patch(int kind) const {
 
 FaceParameterReal QuadFamily::original(std::size_t face, double x, double y) const {
   // Patch coordinates back to the node's own (undo the rotation).
-  double u = x, v = y;
-  switch (patches_[face].rotation) {
-    case 0: break;
-    case 1: u = 1 - y, v = x; break;
-    case 2: u = 1 - x, v = 1 - y; break;
-    default: u = y, v = 1 - x; break;
-  }
+  double u = 0, v = 0;
+  QuadPatch::from_patch(patches_[face].rotation, x, y, u, v);
   return original_of_face(face, u, v);
 }
 

@@ -27,6 +27,15 @@ struct QuadPatch {
       default: pi = n - j, pj = i; break;
     }
   }
+  // Patch coordinates (x, y) back to the face's (u, v): the inverse of to_patch.
+  static void from_patch(int rotation, double x, double y, double& u, double& v) {
+    switch (rotation) {
+      case 0: u = x, v = y; break;
+      case 1: u = 1 - y, v = x; break;
+      case 2: u = 1 - x, v = 1 - y; break;
+      default: u = y, v = 1 - x; break;
+    }
+  }
   // The same for an exact parameter.
   ExactParameter to_patch(const ExactParameter& p) const {
     const Fraction one{1, 1};

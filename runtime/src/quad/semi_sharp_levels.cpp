@@ -14,12 +14,9 @@ namespace {
 
 // Per face: `exact` and a corner with a semi-sharp feature.
 std::vector<char> faces_to_refine(const Connectivity& mesh, const LevelSharpness& sharpness, const std::vector<char>* exact) {
-  const std::vector<char> at = semi_sharp_vertices(mesh, sharpness);
-  std::vector<char> out(mesh.face_count(), 0);
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    if (exact && !(*exact)[f]) continue;
-    for (int c = 0; c < 4 && !out[f]; ++c) out[f] = at[static_cast<std::size_t>(mesh.face_vertices[4 * f + c])];
-  }
+  std::vector<char> out = semi_sharp_faces(mesh, sharpness);
+  if (exact)
+    for (std::size_t f = 0; f < out.size(); ++f) out[f] &= (*exact)[f];
   return out;
 }
 

@@ -301,10 +301,7 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
   // The cut mesh's extra vertices (copies of those on creases), then the
   // phantoms, are prepared points after the mesh's own.
   if (patch_mesh->cut && patch_mesh->cut->cut) {
-    const SharpCut& cut = *patch_mesh->cut;
-    std::vector<std::vector<std::pair<int, double>>> copies;
-    for (std::size_t v = out.mesh.vertex_count; v < cut.mesh.vertex_count; ++v) copies.push_back({{cut.origin[v], 1.0}});
-    out.refinement.add(append_rows(out.mesh.vertex_count, copies));
+    out.refinement.add(append_rows(out.mesh.vertex_count, copy_rows(*patch_mesh->cut, out.mesh.vertex_count)));
   }
   if (!out.phantoms.rows.empty()) out.refinement.add(append_rows(out.phantoms.first, out.phantoms.rows));
   return out;
