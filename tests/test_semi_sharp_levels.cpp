@@ -109,6 +109,14 @@ std::vector<std::pair<int, int>> edges_of(const Mesh& m) {
   return {out.begin(), out.end()};
 }
 
+// Every 40th edge of `mesh` (12 on the chess piece) creased with sharpness s.
+SharpFeatures every_40th_edge(const Mesh& mesh, float s) {
+  SharpFeatures f;
+  const auto edges = edges_of(mesh);
+  for (std::size_t k = 0; k < edges.size(); k += 40) f.crease(edges[k].first, edges[k].second, s);
+  return f;
+}
+
 struct Case {
   std::string name;
   Mesh mesh;
@@ -174,9 +182,7 @@ TEST_CASE("refinement round semi-sharp features stays small at sharpness 9 (the 
           "[runtime][creases]") {
   const auto tables = catmull_clark();
   const Mesh mesh = load("chess-piece");
-  SharpFeatures f;
-  const auto edges = edges_of(mesh);
-  for (std::size_t k = 0; k < edges.size(); k += 40) f.crease(edges[k].first, edges[k].second, 9.0f);
+  const SharpFeatures f = every_40th_edge(mesh, 9.0f);
   const SemiSharpRefinement r = levels_of(*tables, mesh, f);
   CHECK(r.levels.size() == 9);
   // Whole-mesh steps would make 224 * 4^9 = 58.7 million faces; round the creases the
@@ -402,9 +408,7 @@ TEST_CASE("sharpness 9 on the chess piece, refused by whole-mesh steps, is refin
           "[runtime][creases][opensubdiv]") {
   const auto tables = catmull_clark();
   const Mesh mesh = load("chess-piece");
-  SharpFeatures f;
-  const auto edges = edges_of(mesh);
-  for (std::size_t k = 0; k < edges.size(); k += 40) f.crease(edges[k].first, edges[k].second, 9.0f);
+  const SharpFeatures f = every_40th_edge(mesh, 9.0f);
   const Surface surface = surface_of(tables, mesh, f);
   INFO(surface.topology().preparation());
   // One isolation step (with the sharp rules), then the other eight round the creases.
@@ -445,9 +449,7 @@ TEST_CASE("closest points on surfaces refined round their semi-sharp features eq
   CHECK(worst <= 2 * a.tolerance());
   // The chess piece with sharpness 9, which whole-mesh steps cannot take.
   const Mesh piece = load("chess-piece");
-  SharpFeatures g;
-  const auto edges = edges_of(piece);
-  for (std::size_t k = 0; k < edges.size(); k += 40) g.crease(edges[k].first, edges[k].second, 9.0f);
+  const SharpFeatures g = every_40th_edge(piece, 9.0f);
   const Surface sharp = surface_of(tables, piece, g);
   const ClosestPointQuery c(sharp);
   const std::vector<Point> dense = surface_nodes(sharp, piece, 8);
@@ -484,9 +486,7 @@ TEST_CASE("stencil rows over the control points of a surface refined round its s
   // Fitting solves for control points through these rows (Refinement::fold through the appended levels).
   const auto tables = catmull_clark();
   const Mesh mesh = load("chess-piece");
-  SharpFeatures f;
-  const auto edges = edges_of(mesh);
-  for (std::size_t k = 0; k < edges.size(); k += 40) f.crease(edges[k].first, edges[k].second, 6.0f);
+  const SharpFeatures f = every_40th_edge(mesh, 6.0f);
   const RefinementChoice round(CreaseRefinementChoice::RoundFeatures);
   const Surface surface = surface_of(tables, mesh, f);
   REQUIRE(surface.topology().preparation().find("refined round") != std::string::npos);
