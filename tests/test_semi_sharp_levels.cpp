@@ -16,6 +16,7 @@
 #include "open_meshes.hpp"
 #include "runtime_api.hpp"
 #include "runtime_checks.hpp"
+#include "semi_sharp_checks.hpp"
 #include "sharp_features.hpp"
 #include "quad/quad_creases.hpp"
 #include "quad/quad_family.hpp"
@@ -246,64 +247,6 @@ TEST_CASE("appended refinement steps read the prepared vertices before them, and
   }
 }
 
-namespace {
-
-// Chooses the quad family's way with semi-sharp features while alive.
-struct RefinementChoice {
-  CreaseRefinementChoice before = crease_refinement_choice();
-  explicit RefinementChoice(CreaseRefinementChoice c) { set_crease_refinement_choice(c); }
-  ~RefinementChoice() { set_crease_refinement_choice(before); }
-};
-
-Surface surface_of(const std::shared_ptr<const Tables>& tables, const Mesh& mesh, const SharpFeatures& f) {
-  return Surface(SurfaceTopology::create(tables, mesh.vertex_count(), mesh.face_sizes, mesh.face_vertices, {}, f.ours),
-                 mesh.positions);
-}
-
-// Largest distance over the size between two surfaces at every node of every face at rates 1..8.
-double node_difference(const Surface& a, const Surface& b, const Mesh& mesh) {
-  double worst = 0;
-  for (std::size_t face = 0; face < mesh.face_count(); ++face)
-    for (long n = 1; n <= 8 && !a.topology().is_hole(face); ++n)
-      for (long j = 0; j <= n; ++j)
-        for (long i = 0; i <= n; ++i) worst = std::max(worst, distance(a.evaluate(face, grid(i, j, n)), b.evaluate(face, grid(i, j, n))));
-  return worst / extent(mesh);
-}
-
-// Largest distance over the size from our surface at every node of rate `n` of every face to Bfr's.
-double bfr_node_difference(const Surface& ours, const Mesh& mesh, const SharpFeatures& f, long n) {
-  bfr_reference::BfrLimit bfr(mesh.positions, mesh.face_sizes, mesh.face_vertices, bfr_reference::osd::Sdc::SCHEME_CATMARK, {}, f.osd);
-  double worst = 0;
-  for (std::size_t face = 0; face < mesh.face_count(); ++face)
-    for (long j = 0; j <= n && !ours.topology().is_hole(face); ++j)
-      for (long i = 0; i <= n; ++i)
-        worst = std::max(worst, distance(ours.evaluate(face, grid(i, j, n)),
-                                         bfr.evaluate(static_cast<int>(face), static_cast<double>(i) / n, static_cast<double>(j) / n)));
-  return worst / extent(mesh);
-}
-
-// The surface prepared the given way.
-Surface surface_by(CreaseRefinementChoice choice, const std::shared_ptr<const Tables>& tables, const Mesh& mesh,
-                   const SharpFeatures& f) {
-  const RefinementChoice chosen(choice);
-  return surface_of(tables, mesh, f);
-}
-
-// Whether every edge of the soup is shared by exactly two of its polygons (a closed surface).
-bool closed(const PolygonSoup& soup) {
-  std::map<std::pair<int, int>, int> uses;
-  auto edge = [&](int a, int b) { ++uses[{std::min(a, b), std::max(a, b)}]; };
-  for (const auto& q : soup.quads)
-    for (int k = 0; k < 4; ++k) edge(q[static_cast<std::size_t>(k)], q[static_cast<std::size_t>((k + 1) % 4)]);
-  for (const auto& t : soup.triangles)
-    for (int k = 0; k < 3; ++k) edge(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]);
-  for (const auto& [e, n] : uses)
-    if (n != 2) return false;
-  return !uses.empty();
-}
-
-}  // namespace
-
 TEST_CASE("surfaces refined round their semi-sharp features equal those refined whole, and Bfr's", "[runtime][creases][opensubdiv]") {
   const auto tables = catmull_clark();
   std::mt19937 rng(20261203u);
@@ -393,14 +336,7 @@ TEST_CASE("surfaces refined round their semi-sharp features equal those refined 
     }
     CHECK(worst / extent(c.mesh) < 1e-6);
     CHECK(worst_normal < 1e-5);  // unit normals in float
-    // Closest points: at the surface's point at their parameters, and no dense sample nearer.
-    const ClosestPointQuery query(local);
-    const std::vector<Point> samples = surface_nodes(whole, c.mesh, 8);
-    for (int k = 0; k < 100; ++k) {
-      const Point q = k % 2 ? random_query(samples, 0.3 * extent(c.mesh), rng) : samples[rng() % samples.size()];
-      INFO("closest point query " << k);
-      CHECK(closest_point_defect(local, q, query.find(q), samples, extent(c.mesh), 1e-9 * extent(c.mesh)) == "");
-    }
+    check_closest_points(local, whole, c.mesh, rng);
   }
 }
 

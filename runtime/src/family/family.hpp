@@ -58,8 +58,8 @@ struct Approximation {
 struct SubPatch {
   std::size_t face = 0;  // the prepared face
   int kind = 0;          // the family's patch kind (quads: the valence, 4 for regular; triangles: triangle_family.hpp)
-  // Quads, below a prepared face refined round semi-sharp features: the tree's
-  // node (kind QuadFamily::kRefinedKind) or the leaf whose patch this is part of,
+  // Below a prepared face refined round semi-sharp features: the tree's node
+  // (kind QuadFamily::kRefinedKind, TriangleFamily::kRefinedKind) or the leaf whose patch this is part of,
   // and the prepared positions root() was given, from which an inner node's
   // descendants take their points (a sub-patch does not outlive its search).
   std::size_t node = 0;
@@ -67,6 +67,20 @@ struct SubPatch {
   std::vector<Point> points;
   SubDomain domain;
 };
+
+// Points gathered afresh from `positions` for the sub-patches below a tree
+// node (its children's, or a leaf's whole patch), moved into the frame of the
+// node's own points: a search may have moved those by an origin near them
+// (face_search.cpp keeps deep sub-patches relative to one), and what it reads
+// below the node must be in the same frame. `first` is the prepared vertex
+// the node's first point was gathered from.
+inline void into_frame_of(const SubPatch& node, int first, std::vector<Point>& points) {
+  const Point& from = node.positions[first];
+  const Point shift{from[0] - node.points[0][0], from[1] - node.points[0][1], from[2] - node.points[0][2]};
+  if (shift[0] == 0 && shift[1] == 0 && shift[2] == 0) return;
+  for (Point& p : points)
+    for (int k = 0; k < 3; ++k) p[k] -= shift[k];
+}
 
 // The most children a sub-patch has under one step (sqrt(3)'s composite step splits a triangle in nine).
 constexpr int kMaxSubPatchChildren = 9;

@@ -27,7 +27,7 @@ struct QuadFamily::Prepared {
   bool boundary = false;
   bool no_boundary_surface = false;  // `none`: faces at boundary vertices have no surface (holes), hence no patch
   std::vector<QuadPatch> patches;  // by node (quad_family.hpp): the prepared faces', then the feature levels'
-  std::vector<std::uint32_t> children, parent;
+  FeatureTree tree;
   int feature_levels = 0;
   std::size_t feature_faces = 0;
 };
@@ -67,18 +67,6 @@ bool isolated(const QuadTopology& topo, const std::vector<SectorRule>& corner, c
   for (std::size_t f = 0; f < topo.faces(); ++f)
     if (!face_ready(topo, f, corner, no_surface)) return false;
   return true;
-}
-
-// Whether semi-sharp features that whole-mesh steps could take are better
-// refined round (crease_refinement_choice): few faces have a corner with one.
-bool round_features_pay(const Connectivity& mesh, const LevelSharpness& sharpness) {
-  switch (crease_refinement_choice()) {
-    case CreaseRefinementChoice::WholeMesh: return false;
-    case CreaseRefinementChoice::RoundFeatures: return true;
-    case CreaseRefinementChoice::Automatic: break;
-  }
-  const std::vector<char> marked = semi_sharp_faces(mesh, sharpness);
-  return 4 * static_cast<std::size_t>(std::count(marked.begin(), marked.end(), 1)) <= mesh.face_count();
 }
 
 using PhantomRows = std::vector<std::vector<std::pair<int, double>>>;
@@ -220,8 +208,7 @@ QuadFamily::Prepared QuadFamily::prepare(const Tables& tables, const Connectivit
   if (!sharpness.smooth()) {
     crease = quad_crease_rule(t, tables.scheme());
     const std::size_t first = all_quads ? 4 * mesh.face_count() : mesh.face_vertices.size();
-    local = sharpness.has_semi_sharp() && (!crease_steps_fit(first, sharpness.max(), whole_mesh_crease_faces()) ||
-                                           round_features_pay(mesh, sharpness));
+    local = prefer_round_features(mesh, sharpness, first);
     if (!local) check_crease_steps(mesh.face_count(), first, sharpness.max());
   }
   if (all_quads) {
@@ -301,8 +288,7 @@ void QuadFamily::refine_round_features(Prepared& out, const QuadTables& t, const
   SemiSharpRefinement r =
       refine_round_semi_sharp(out.mesh, sharpness, t, crease, {crease.centre, crease.neighbour, edge_and_corner}, edge_and_corner);
   const std::size_t prepared_faces = out.mesh.face_count();
-  out.children.assign(prepared_faces, kLeaf);
-  out.parent.assign(prepared_faces, kLeaf);
+  out.tree.start(prepared_faces);
   // A refined face's own patch is only its hull (closest points): unturned,
   // so that its sub-patch coordinates are the face's own, as its tree's are.
   for (std::size_t f = 0; f < prepared_faces; ++f)
@@ -312,16 +298,8 @@ void QuadFamily::refine_round_features(Prepared& out, const QuadTables& t, const
   std::size_t before_base = 0, before_vertices = 0;  // the level before: its first node and prepared vertex (the prepared mesh's at 0)
   for (SemiSharpLevel& level : r.levels) {
     const std::size_t base = out.patches.size(), faces = level.mesh.face_count();
-    if (base + faces >= kLeaf) throw MeshError("the refinement round the semi-sharp features makes more than 2^32 faces");
+    out.tree.add_level(level, base, before_base);
     out.patches.resize(base + faces);
-    out.children.resize(base + faces, kLeaf);
-    out.parent.resize(base + faces, kLeaf);
-    for (std::size_t f = 0; f < faces; f += 4) {
-      if (!level.exact[f]) continue;  // a child of the region's margin: no node of the tree
-      const std::size_t parent = before_base + level.parent[f];
-      out.children[parent] = static_cast<std::uint32_t>(base + f);
-      for (std::size_t c = 0; c < 4; ++c) out.parent[base + f + c] = static_cast<std::uint32_t>(parent);
-    }
     const std::size_t offset = out.refinement.prepared_vertices();
     out.refinement.append(std::move(level.step), before_vertices);
     // Patches of the leaves, gathered as on the prepared mesh: on the level cut
@@ -370,8 +348,7 @@ QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, Prepared prepared)
   hierarchy_ = std::move(prepared.hierarchy);
   prepared_ = std::move(prepared.mesh);
   patches_ = std::move(prepared.patches);
-  children_ = std::move(prepared.children);
-  parent_ = std::move(prepared.parent);
+  tree_ = std::move(prepared.tree);
   feature_levels_ = prepared.feature_levels;
   feature_faces_ = prepared.feature_faces;
   if (tables_.descent()) descent_ = std::make_unique<QuadPatchDescent>(tables_);
@@ -457,7 +434,7 @@ std::pair<std::size_t, std::array<P, 2>> QuadFamily::locate_any(std::size_t face
   }
   while (refined(face)) {  // down the levels refined round semi-sharp features, as the steps above
     const auto [c, child] = quadrant(p[0], p[1]);
-    face = children_[face] + static_cast<std::size_t>(c);
+    face = tree_.child(face, c);
     p = child;
     compose_quadrant(jacobian, c);
   }
@@ -536,18 +513,12 @@ void QuadFamily::root(std::size_t prepared_face, const Point* prepared, SubPatch
 
 SubDomain QuadFamily::child_domain(const SubDomain& parent, int c, int rotation) {
   // Own coordinates (patch coordinates when rotated) -> the child face's -> the parent's -> through `parent`.
-  const auto map = [&](double X, double Y) {
+  return mapped_domain(parent, [&](double X, double Y) {
     double u = 0, v = 0;
     QuadPatch::from_patch(rotation, X, Y, u, v);
     to_parent(c, u, v);
-    return parent.at(u, v);
-  };
-  SubDomain out = parent;
-  const auto o = map(0, 0), x = map(1, 0), y = map(0, 1);
-  out.origin = o;
-  out.x_axis = {x[0] - o[0], x[1] - o[1]};
-  out.y_axis = {y[0] - o[0], y[1] - o[1]};
-  return out;
+    return std::array<double, 2>{u, v};
+  });
 }
 
 SubPatch QuadFamily::leaf_patch(const SubPatch& in, double x, double y) const {
@@ -558,7 +529,7 @@ SubPatch QuadFamily::leaf_patch(const SubPatch& in, double x, double y) const {
   while (refined(node)) {  // as locate_any's descent of the tree
     const auto [c, child] = quadrant(X, Y);
     X = child[0], Y = child[1];
-    node = children_[node] + static_cast<std::size_t>(c);
+    node = tree_.child(node, c);
     domain = child_domain(domain, c, refined(node) ? 0 : patches_[node].rotation);
   }
   SubPatch out;
@@ -568,6 +539,7 @@ SubPatch QuadFamily::leaf_patch(const SubPatch& in, double x, double y) const {
   out.kind = patch.valence;
   out.positions = in.positions;
   gather_points(patch.points, in.positions, out.points);
+  into_frame_of(in, patches_[in.node].points[0], out.points);
   out.domain = domain;
   return out;
 }
@@ -576,13 +548,14 @@ int QuadFamily::split(const SubPatch& in, SubPatch* children) const {
   if (in.kind == kRefinedKind) {  // the node's four children, leaves with their patches
     for (int c = 0; c < 4; ++c) {
       SubPatch& out = children[c];
-      const std::size_t child = children_[in.node] + static_cast<std::size_t>(c);
+      const std::size_t child = tree_.child(in.node, c);
       const QuadPatch& patch = patches_[child];
       out.face = in.face;
       out.node = child;
       out.positions = in.positions;
       out.kind = refined(child) ? kRefinedKind : patch.valence;
       gather_points(patch.points, in.positions, out.points);
+      into_frame_of(in, patches_[in.node].points[0], out.points);
       out.domain = child_domain(in.domain, c, refined(child) ? 0 : patch.rotation);
     }
     return 4;
@@ -712,9 +685,8 @@ FaceParameterReal QuadFamily::original(std::size_t face, double x, double y) con
 FaceParameterReal QuadFamily::original_of_face(std::size_t face, double u, double v) const {
   // Up the levels refined round semi-sharp features to the prepared face.
   while (face >= prepared_.face_count()) {
-    const std::size_t parent = parent_[face];
-    to_parent(static_cast<int>(face - children_[parent]), u, v);
-    face = parent;
+    to_parent(tree_.which(face), u, v);
+    face = tree_.parent[face];
   }
   // Up the hierarchy: each child's parameter to its parent's (the inverse of quadrant(), or a sub-face's tile).
   for (std::size_t level = hierarchy_.levels.size(); level-- > 0;) {
@@ -908,7 +880,7 @@ std::size_t QuadFamily::leaf_of(std::size_t node, long& a, long& b, long d) cons
       case 2: a = d - x, b = d - y; break;
       default: a = d - y, b = x; break;
     }
-    node = children_[node] + static_cast<std::size_t>(c);
+    node = tree_.child(node, c);
   }
   return node;
 }

@@ -12,6 +12,7 @@
 
 #include "family/crease_step.hpp"
 #include "family/family.hpp"
+#include "family/feature_tree.hpp"
 #include "mesh/connectivity.hpp"
 #include "mesh/uniform_topology.hpp"
 #include "patch_descent.hpp"
@@ -89,9 +90,8 @@ class QuadFamily final : public Family {
   // By node: the prepared faces first, then the faces of the levels refined
   // round semi-sharp features (semi_sharp_levels.hpp), a tree below the
   // prepared faces that have them. A leaf has a patch; an inner node's four
-  // children (its quadrants, as in subdivide_quads) start at children_[node].
+  // children (its quadrants, as in subdivide_quads) follow each other (family/feature_tree.hpp).
   std::vector<QuadPatch> patches_;
-  static constexpr std::uint32_t kLeaf = UINT32_MAX;
   // The sub-patch kind of an inner node of that tree (closest points): its
   // points are the node's 1-ring at its level, whose hull holds the surface
   // below it; split() gives its four children, evaluate() descends to a leaf.
@@ -100,11 +100,10 @@ class QuadFamily final : public Family {
   static SubDomain child_domain(const SubDomain& parent, int c, int rotation);
   // The whole patch of the leaf below an inner node that holds (x, y) (the prepared face's patch coordinates).
   SubPatch leaf_patch(const SubPatch& node, double x, double y) const;
-  std::vector<std::uint32_t> children_;  // empty: no such levels
-  std::vector<std::uint32_t> parent_;    // by node below the prepared faces: the node it is a quadrant of
+  FeatureTree tree_;  // empty: no such levels
   int feature_levels_ = 0;
   std::size_t feature_faces_ = 0;
-  bool refined(std::size_t node) const { return !children_.empty() && children_[node] != kLeaf; }
+  bool refined(std::size_t node) const { return tree_.refined(node); }
   // Where the point (a, b) / d of a refined node's square lands: the leaf and the point there, over the same d.
   std::size_t leaf_of(std::size_t node, long& a, long& b, long d) const;
   // The limit point at (a, b) / (2n) of a prepared face refined round features, from its leaves' stencils at rate n.

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "family/crease_step.hpp"
+#include "family/semi_sharp_levels.hpp"
 #include "stencil_runtime/face_domain.hpp"
 #include "family/sharp_cut.hpp"
 #include "family/parameter_ops.hpp"
@@ -13,6 +14,7 @@
 #include "boundary_patch.hpp"
 #include "sector_patch.hpp"
 #include "mesh/polygon_links.hpp"
+#include "loop_split.hpp"
 #include "triangle_steps.hpp"
 
 namespace stencil_runtime {
@@ -24,57 +26,67 @@ struct TriangleFamily::Prepared {
   int crease_steps = 0;  // of the steps, those that still had sharp features
   bool boundary = false;
   Connectivity mesh;
-  std::vector<TrianglePatch> patches;  // as the last isolation check found them
+  std::vector<TrianglePatch> patches;  // as the last isolation check found them, then the tree's nodes
   PhantomPoints phantoms;              // the points beyond the boundary those patches use
+  FeatureTree tree;  // refined round semi-sharp features (triangle_family.hpp)
+  int feature_levels = 0;
+  std::size_t feature_faces = 0;
 };
 
 namespace {
 
-// Every face's patch, or false when one cannot be gathered. `topo` is the mesh
-// cut along its infinitely sharp edges (family/sharp_cut.hpp), whose boundaries
-// are the mesh's own and its creases; `rules` its vertices' rules. On a mesh
-// with boundaries, a face at one boundary vertex in other than three faces or
-// at a corner takes that vertex's sector patch (sector_patch.hpp; two such
-// corners: not yet isolated), a face whose corners are all regular the regular
-// patch with phantoms (boundary_patch.hpp); the others need the tables' chart
-// walks, which stop at the boundary. A face at a vertex marked in `no_surface`
+// A face's patch. `topo` is the mesh cut along its infinitely sharp edges
+// (family/sharp_cut.hpp), whose boundaries are the mesh's own and its creases;
+// `rules` its vertices' rules (`cones`: some are cone points). On a mesh with
+// boundaries, a face at one boundary vertex in other than three faces or at a
+// corner takes that vertex's sector patch (sector_patch.hpp; two such corners:
+// not yet isolated), a face whose corners are all regular the regular patch
+// with phantoms (boundary_patch.hpp); the others need the tables' chart walks,
+// which stop at the boundary. A face at a vertex marked in `no_surface`
 // (OpenSubdiv's `none`: a copy of a vertex on the mesh's own boundary) has no
 // surface: where it has no regular patch it gets a placeholder that is never
-// evaluated.
+// evaluated. No patch (nullopt): the face is not isolated yet.
+std::optional<TrianglePatch> face_patch(const TriangleTopology& topo, std::size_t f, const TriangleTables& tables,
+                                       PhantomPoints& phantoms, const std::vector<char>& no_surface,
+                                       const std::vector<SectorRule>& rules, bool cones) {
+  const bool at_boundary = topo.touches_boundary(f);
+  // A vertex on the boundary in other than three faces, a corner, a dart or
+  // a cone point: the sector's patch (sector_patch.hpp).
+  int sector_corner = -1, sectors = 0;
+  const bool sector_possible = (at_boundary || cones) && !topo.touches_marked(f, no_surface);
+  for (int c = 0; c < 3; ++c) {
+    const int v = topo.vertex(f, c);
+    const SectorRule rule = rules[static_cast<std::size_t>(v)];
+    if (slit_end_inside(rule, topo.on_boundary(v))) return std::nullopt;
+    if (sector_possible && loop_sector_vertex(topo, v, rule)) ++sectors, sector_corner = c;
+  }
+  if (sectors > 1) return std::nullopt;
+  if (sectors == 1) return loop_sector_patch(topo, f, sector_corner, rules, tables);
+  if (at_boundary || (topo.has_boundary() && regular_loop_vertex(topo, topo.vertex(f, 0)) &&
+                      regular_loop_vertex(topo, topo.vertex(f, 1)) && regular_loop_vertex(topo, topo.vertex(f, 2)))) {
+    std::optional<TrianglePatch> patch = regular_boundary_patch(topo, f, tables, phantoms);
+    if (!patch && topo.touches_marked(f, no_surface)) {
+      patch.emplace();
+      patch->points.assign(tables.layout(6).size(), topo.vertex(f, 0));  // a hole: never evaluated
+    }
+    return patch;
+  }
+  return find_triangle_patch(topo, f, tables);
+}
+
+bool has_cones(const std::vector<SectorRule>& rules) {
+  return std::find(rules.begin(), rules.end(), SectorRule::Cone) != rules.end();
+}
+
 bool gather_patches(const TriangleTopology& topo, const TriangleTables& tables, std::vector<TrianglePatch>& patches,
                     PhantomPoints& phantoms, const std::vector<char>& no_surface, const std::vector<SectorRule>& rules) {
   patches.clear();
   patches.reserve(topo.faces());
   phantoms = PhantomPoints{};
   phantoms.first = topo.vertices();
-  const bool cones = std::find(rules.begin(), rules.end(), SectorRule::Cone) != rules.end();
+  const bool cones = has_cones(rules);
   for (std::size_t f = 0; f < topo.faces(); ++f) {
-    const bool at_boundary = topo.touches_boundary(f);
-    // A vertex on the boundary in other than three faces, a corner, a dart or
-    // a cone point: the sector's patch (sector_patch.hpp).
-    int sector_corner = -1, sectors = 0;
-    const bool sector_possible = (at_boundary || cones) && !topo.touches_marked(f, no_surface);
-    for (int c = 0; c < 3; ++c) {
-      const int v = topo.vertex(f, c);
-      const SectorRule rule = rules[static_cast<std::size_t>(v)];
-      if (slit_end_inside(rule, topo.on_boundary(v))) return false;
-      if (sector_possible && loop_sector_vertex(topo, v, rule)) ++sectors, sector_corner = c;
-    }
-    std::optional<TrianglePatch> patch;
-    if (sectors > 1) {
-      return false;
-    } else if (sectors == 1) {
-      patch = loop_sector_patch(topo, f, sector_corner, rules, tables);
-    } else if (at_boundary || (topo.has_boundary() && regular_loop_vertex(topo, topo.vertex(f, 0)) &&
-                        regular_loop_vertex(topo, topo.vertex(f, 1)) && regular_loop_vertex(topo, topo.vertex(f, 2)))) {
-      patch = regular_boundary_patch(topo, f, tables, phantoms);
-      if (!patch && topo.touches_marked(f, no_surface)) {
-        patch.emplace();
-        patch->points.assign(tables.layout(6).size(), topo.vertex(f, 0));  // a hole: never evaluated
-      }
-    } else {
-      patch = find_triangle_patch(topo, f, tables);
-    }
+    std::optional<TrianglePatch> patch = face_patch(topo, f, tables, phantoms, no_surface, rules, cones);
     if (!patch) return false;
     patches.push_back(std::move(*patch));
   }
@@ -177,20 +189,6 @@ struct PatchMesh {
   const TriangleTopology& topology(const TriangleTopology& uncut) const { return cut_topology ? *cut_topology : uncut; }
 };
 
-// Child of a face split by a Loop step (loop_step) holding (u, v), and the parameter there.
-template <class P>
-std::pair<int, std::array<P, 2>> loop_child(const P& u, const P& v) {
-  // Barycentric coordinates times 2: (k, a, b) on corners 0, 1, 2. The child at
-  // corner c holds the points where corner c's weight is at least 1/2.
-  const P one = integer<P>(1);
-  const P a = multiply(u, 2), b = multiply(v, 2);
-  const P k = subtract(subtract(integer<P>(2), a), b);
-  if (compare(k, one) >= 0) return {0, {a, b}};
-  if (compare(a, one) >= 0) return {1, {b, k}};
-  if (compare(b, one) >= 0) return {2, {k, a}};
-  return {3, {subtract(one, k), subtract(one, a)}};  // middle child: corners at the midpoints of edges 0, 1, 2
-}
-
 // Cell of the 1-to-9 split (ternary_cells) holding (u, v), and the parameter there.
 template <class P>
 std::pair<int, std::array<P, 2>> ternary_child(const P& u, const P& v) {
@@ -254,9 +252,13 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
   if (out.boundary) boundary = loop_boundary_rules(tables, features);
   LevelSharpness sharpness = LevelSharpness::of(mesh, features, true);
   CurveCreaseRule crease;
+  // Semi-sharp features by whole-mesh steps where they fit the budget, else
+  // refined round them after the isolation (refine_round_features).
+  bool local = false;
   if (!sharpness.smooth()) {
-    crease = triangle_crease_rule(t, tables.scheme(), "creases and corners");
-    check_crease_steps(mesh.face_count(), 4 * mesh.face_count(), sharpness.max());
+    crease = triangle_crease_rule(t, tables.scheme(), "creases and corners");  // sqrt(3) refused here
+    local = prefer_round_features(mesh, sharpness, 4 * mesh.face_count());
+    if (!local) check_crease_steps(mesh.face_count(), 4 * mesh.face_count(), sharpness.max());
   }
   {
     ValenceCheck valences(tables.valences(), t.rates(), tables.scheme(), 6);
@@ -286,7 +288,8 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
   };
   // Semi-sharp features decay by at least 1 a step: steps until none is left
   // (infinitely sharp ones are boundaries of the cut mesh: family/sharp_cut.hpp).
-  while (sharpness.has_semi_sharp()) step_once();
+  if (!local)
+    while (sharpness.has_semi_sharp()) step_once();
   const int before_isolation = out.steps;
   auto patch_mesh = std::make_unique<PatchMesh>(out.mesh, topo, sharpness, edge_and_corner, no_boundary_surface);
   while (!gather_patches(patch_mesh->topology(topo), t, out.patches, out.phantoms, patch_mesh->no_surface, patch_mesh->rules)) {
@@ -304,7 +307,65 @@ TriangleFamily::Prepared TriangleFamily::prepare(const Tables& tables, const Con
     out.refinement.add(append_rows(out.mesh.vertex_count, copy_rows(*patch_mesh->cut, out.mesh.vertex_count)));
   }
   if (!out.phantoms.rows.empty()) out.refinement.add(append_rows(out.phantoms.first, out.phantoms.rows));
+  if (local) refine_round_features(out, t, sharpness, crease, edge_and_corner && out.boundary, no_boundary_surface);
   return out;
+}
+
+void TriangleFamily::refine_round_features(Prepared& out, const TriangleTables& t, const LevelSharpness& sharpness,
+                                           const CurveCreaseRule& crease, bool boundary_corners, bool no_boundary_surface) {
+  if (!sharpness.has_semi_sharp()) return;  // the isolation steps took it all
+  // Loop steps on each region, its border under the boundary rules (the points next to it are not used).
+  const BoundaryRules rules{crease.centre, crease.neighbour, boundary_corners};
+  const RegionStepper step = [&](const Connectivity& region) {
+    TriangleStep s = loop_step(TriangleTopology(region, true), t, &rules);
+    RegionStep r;
+    r.edge_points = loop_step_edge_points(region, s.mesh);
+    r.step = std::move(s.steps.front());
+    r.mesh = std::move(s.mesh);
+    return r;
+  };
+  SemiSharpRefinement r = refine_round_semi_sharp(out.mesh, sharpness, step, crease, boundary_corners);
+  const std::size_t prepared_faces = out.mesh.face_count();
+  out.tree.start(prepared_faces);
+  // A refined face's own patch is only its hull (closest points): unturned,
+  // so that its sub-patch coordinates are the face's own, as its tree's are.
+  for (std::size_t f = 0; f < prepared_faces; ++f)
+    if (r.refined[f]) out.patches[f].rotation = 0;
+  out.feature_levels = static_cast<int>(r.levels.size());
+  out.feature_faces = r.faces() - prepared_faces;
+  std::size_t before_base = 0, before_vertices = 0;  // the level before: its first node and prepared vertex
+  for (SemiSharpLevel& level : r.levels) {
+    const std::size_t base = out.patches.size(), faces = level.mesh.face_count();
+    out.tree.add_level(level, base, before_base);
+    out.patches.resize(base + faces);
+    const std::size_t offset = out.refinement.prepared_vertices();
+    out.refinement.append(std::move(level.step), before_vertices);
+    // Patches of the tree's nodes, gathered as on the prepared mesh: on the
+    // level cut along its infinitely sharp edges, with copies and phantoms
+    // after its vertices. An inner node's points are the hull of the surface below it.
+    const PolygonLinks links = link_polygons(level.mesh, true);
+    const SharpCut cut = cut_along_sharp_edges(level.mesh, links, level.sharpness, boundary_corners);
+    const std::vector<char> no_surface = no_surface_vertices(no_boundary_surface, level.mesh, links, level.sharpness, cut);
+    const TriangleTopology topo(cut.mesh, true);
+    if (cut.cut) out.refinement.append(rows_over(level.mesh.vertex_count, copy_rows(cut, level.mesh.vertex_count)), offset);
+    PhantomPoints phantoms;
+    phantoms.first = cut.mesh.vertex_count;
+    const bool cones = has_cones(cut.rule);
+    for (std::size_t f = 0; f < faces; ++f) {
+      if (!level.exact[f]) continue;
+      std::optional<TrianglePatch> p = face_patch(topo, f, t, phantoms, no_surface, cut.rule, cones);
+      // Children of isolated faces are isolated: a node without its patch is a mistake here.
+      if (!p) throw MeshError("internal: a face refined round a semi-sharp feature has no patch");
+      for (int& i : p->points) i += static_cast<int>(offset);
+      if (level.refined[f]) p->rotation = 0;  // a hull, as above
+      out.patches[base + f] = std::move(*p);
+    }
+    if (!phantoms.rows.empty()) out.refinement.append(rows_over(cut.mesh.vertex_count, phantoms.rows), offset);
+    before_base = base;
+    before_vertices = offset;
+  }
+  if (out.refinement.prepared_vertices() > static_cast<std::size_t>(INT32_MAX))
+    throw MeshError("the refinement round the semi-sharp features makes more than 2^31 points");
 }
 
 
@@ -317,7 +378,10 @@ TriangleFamily::TriangleFamily(std::shared_ptr<const Tables> tables, Prepared pr
       steps_(prepared.steps),
       crease_steps_(prepared.crease_steps),
       topology_(prepared.mesh, prepared.boundary),
-      patches_(std::move(prepared.patches)) {
+      patches_(std::move(prepared.patches)),
+      tree_(std::move(prepared.tree)),
+      feature_levels_(prepared.feature_levels),
+      feature_faces_(prepared.feature_faces) {
   if (tables_.has_descent()) descent_.emplace(tables_);
   if (tables_.polynomial_degree() > 0) derivative_rows_.emplace(tables_.polynomial_degree(), tables_.polynomial(), tables_.layout(6).size());
   refinement_ = std::move(prepared.refinement);
@@ -483,7 +547,10 @@ Derivatives TriangleFamily::derivatives(std::size_t face, const ExactParameter& 
 
 std::string TriangleFamily::preparation() const {
   return std::to_string(steps_) + (sqrt3() ? " double sqrt(3) step" : " subdivision step") + (steps_ == 1 ? "" : "s") +
-         (crease_steps_ > 0 ? " (" + std::to_string(crease_steps_) + " of them with the creases' sharp rules)" : "");
+         (crease_steps_ > 0 ? " (" + std::to_string(crease_steps_) + " of them with the creases' sharp rules)" : "") +
+         (feature_levels_ > 0 ? ", then " + std::to_string(feature_levels_) + " level" + (feature_levels_ == 1 ? "" : "s") +
+                                    " refined round the semi-sharp features (" + std::to_string(feature_faces_) + " faces)"
+                              : "");
 }
 
 FaceDomain TriangleFamily::domain(std::size_t) const { return FaceDomain::of(SchemeFamily::Triangle, 3); }
@@ -494,6 +561,11 @@ std::pair<std::size_t, std::array<P, 2>> TriangleFamily::locate_any(std::size_t 
   for (const FaceHierarchy::Level& level : hierarchy_.levels) {
     const auto [c, child] = level.scale == 3 ? ternary_child(p[0], p[1]) : loop_child(p[0], p[1]);
     face = level.child_offsets[face] + static_cast<std::size_t>(c);
+    p = child;
+  }
+  while (refined(face)) {  // down the levels refined round semi-sharp features, by the same Loop split
+    const auto [c, child] = loop_child(p[0], p[1]);
+    face = tree_.child(face, c);
     p = child;
   }
   return {face, p};

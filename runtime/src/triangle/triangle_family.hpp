@@ -6,6 +6,7 @@
 // chart walks; exact evaluation from the tables and the tessellation kernels
 // (triangle_tessellation.cpp).
 #include <array>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -14,7 +15,9 @@
 #include <utility>
 #include <vector>
 
+#include "family/crease_step.hpp"
 #include "family/family.hpp"
+#include "family/feature_tree.hpp"
 #include "mesh/connectivity.hpp"
 #include "mesh/uniform_topology.hpp"
 #include "stencil_runtime/tables.hpp"
@@ -129,6 +132,9 @@ class TriangleFamily final : public Family {
   Point vertex_normal(const TrianglePatch& patch, double det, const Point* prepared) const;
   struct Prepared;
   static Prepared prepare(const Tables& tables, const Connectivity& mesh, const MeshFeatures& sharp);
+  // The levels refined round the semi-sharp features left on the prepared mesh (Loop), their patches and tree.
+  static void refine_round_features(Prepared& out, const TriangleTables& tables, const LevelSharpness& sharpness,
+                                    const CurveCreaseRule& crease, bool boundary_corners, bool no_boundary_surface);
   TriangleFamily(std::shared_ptr<const Tables> tables, Prepared prepared);
 
   std::shared_ptr<const Tables> holder_;  // keeps tables_ alive
@@ -136,7 +142,25 @@ class TriangleFamily final : public Family {
   int steps_ = 0;
   int crease_steps_ = 0;  // of the steps, those with sharp rules
   TriangleTopology topology_;
+  // By node: the prepared faces first, then the faces of the levels refined
+  // round semi-sharp features (family/semi_sharp_levels.hpp), a tree below the
+  // prepared faces that have them. A leaf has a patch; an inner node's four
+  // children (Loop's split: the corners' children, then the middle one) start
+  // one after another (family/feature_tree.hpp). An inner node's patch is the hull of the surface below it.
   std::vector<TrianglePatch> patches_;
+  // The sub-patch kind of an inner node of that tree (closest points): split()
+  // gives its four children, evaluate() descends to a leaf.
+  static constexpr int kRefinedKind = -1;
+  FeatureTree tree_;  // empty: no such levels
+  int feature_levels_ = 0;
+  std::size_t feature_faces_ = 0;
+  bool refined(std::size_t node) const { return tree_.refined(node); }
+  // Where the point (a, b) / d of a node lands: the leaf and the point there, over the same d.
+  std::size_t leaf_of(std::size_t node, long& a, long& b, long d) const;
+  // The whole patch of the leaf below an inner node that holds (x, y) (the prepared face's coordinates).
+  SubPatch leaf_patch(const SubPatch& node, double x, double y) const;
+  // A sub-patch's points from a node's patch (a sector's with its box).
+  void node_points(const TrianglePatch& patch, const Point* prepared, std::vector<Point>& out) const;
   std::optional<TrianglePatchDescent> descent_;  // when the tables hold the patch subdivision
   std::optional<FaceDerivativeRows> derivative_rows_;  // where the regular basis is polynomial (Loop): tessellation normals
   mutable std::once_flag affine_once_;

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "family/stencil_sum.hpp"
+#include "loop_split.hpp"
 #include "tables/sparse_rows.hpp"
 #include "triangle_family.hpp"
 #include "triangle_steps.hpp"
@@ -85,16 +86,83 @@ std::vector<Point> TriangleFamily::layout_points(const SubPatch& in, int& valenc
   return points;
 }
 
+void TriangleFamily::node_points(const TrianglePatch& patch, const Point* prepared, std::vector<Point>& out) const {
+  gather_points(patch.points, prepared, out);
+  if (TriangleTables::is_sector_code(patch.valence)) append_sector_box(out, tables_.sector_spread(patch.valence));
+}
+
 void TriangleFamily::root(std::size_t prepared_face, const Point* prepared, SubPatch& out) const {
   const TrianglePatch& patch = patches_[prepared_face];
   out.face = prepared_face;
-  out.kind = kind_of(patch.valence, patch.region);
-  gather_points(patch.points, prepared, out.points);
-  if (TriangleTables::is_sector_code(patch.valence)) append_sector_box(out.points, tables_.sector_spread(patch.valence));
+  out.node = prepared_face;
+  out.positions = prepared;
+  out.kind = refined(prepared_face) ? kRefinedKind : kind_of(patch.valence, patch.region);
+  node_points(patch, prepared, out.points);
   out.domain = SubDomain::unit(true);
 }
 
+namespace {
+
+// Patch coordinates (x, y) to its face's (u, v): the inverse of TrianglePatch::to_patch.
+void from_patch(int rotation, double x, double y, double& u, double& v) {
+  switch (rotation) {
+    case 0: u = x, v = y; break;
+    case 1: u = 1 - x - y, v = x; break;
+    default: u = y, v = 1 - x - y; break;
+  }
+}
+
+// A tree node's own coordinates (its patch's, when turned) as seen through its parent's domain.
+SubDomain child_domain(const SubDomain& parent, int c, int rotation) {
+  return mapped_domain(parent, [&](double X, double Y) {
+    double u = 0, v = 0;
+    from_patch(rotation, X, Y, u, v);
+    loop_parent(c, u, v);
+    return std::array<double, 2>{u, v};
+  });
+}
+
+}  // namespace
+
+SubPatch TriangleFamily::leaf_patch(const SubPatch& in, double x, double y) const {
+  auto [X, Y] = in.domain.local(x, y);
+  in.domain.clamp_local(X, Y);
+  std::size_t node = in.node;
+  SubDomain domain = in.domain;
+  while (refined(node)) {  // as locate_any's descent of the tree
+    const auto [c, child] = loop_child(X, Y);
+    X = child[0], Y = child[1];
+    node = tree_.child(node, c);
+    domain = child_domain(domain, c, refined(node) ? 0 : patches_[node].rotation);
+  }
+  SubPatch out;
+  const TrianglePatch& patch = patches_[node];
+  out.face = in.face;
+  out.node = node;
+  out.positions = in.positions;
+  out.kind = kind_of(patch.valence, patch.region);
+  node_points(patch, in.positions, out.points);
+  into_frame_of(in, patches_[in.node].points[0], out.points);
+  out.domain = domain;
+  return out;
+}
+
 int TriangleFamily::split(const SubPatch& in, SubPatch* children) const {
+  if (in.kind == kRefinedKind) {  // the node's four children, leaves with their patches
+    for (int c = 0; c < 4; ++c) {
+      SubPatch& out = children[c];
+      const std::size_t child = tree_.child(in.node, c);
+      const TrianglePatch& patch = patches_[child];
+      out.face = in.face;
+      out.node = child;
+      out.positions = in.positions;
+      out.kind = refined(child) ? kRefinedKind : kind_of(patch.valence, patch.region);
+      node_points(patch, in.positions, out.points);
+      into_frame_of(in, patches_[in.node].points[0], out.points);
+      out.domain = child_domain(in.domain, c, refined(child) ? 0 : patch.rotation);
+    }
+    return 4;
+  }
   checked_descent();
   const int m = tables_.dilation();
   int valence = 0, region = 0;
@@ -106,6 +174,8 @@ int TriangleFamily::split(const SubPatch& in, SubPatch* children) const {
     apply(cell.rows, in.points, out.points);  // the rows' columns are the layout's: a sector's box is not read
     if (TriangleTables::is_sector_code(cell.valence)) append_sector_box(out.points, tables_.sector_spread(cell.valence));
     out.face = in.face;
+    out.node = in.node;
+    out.positions = in.positions;
     out.kind = kind_of(cell.valence, cell.region);
     // The kind's corner k is the cell's corner rotation + k.
     std::array<std::array<double, 2>, 3> corner;
@@ -122,6 +192,7 @@ int TriangleFamily::split(const SubPatch& in, SubPatch* children) const {
 }
 
 Approximation TriangleFamily::evaluate(const SubPatch& in, double x, double y, double tolerance) const {
+  if (in.kind == kRefinedKind) return evaluate(leaf_patch(in, x, y), x, y, tolerance);
   int valence = 0, region = 0;
   std::vector<Point> points = layout_points(in, valence, region);
   auto l = in.domain.local(x, y);
@@ -147,6 +218,7 @@ Approximation TriangleFamily::evaluate(const SubPatch& in, double x, double y, d
 }
 
 bool TriangleFamily::derivatives(const SubPatch& in, double& x, double& y, Derivatives& out) const {
+  if (in.kind == kRefinedKind) return derivatives(leaf_patch(in, x, y), x, y, out);
   const TrianglePatchDescent& descent = checked_descent();
   auto l = in.domain.local(x, y);
   const bool inside = in.domain.contains_local(l[0], l[1]);
@@ -190,12 +262,13 @@ bool TriangleFamily::derivatives(const SubPatch& in, double& x, double& y, Deriv
 }
 
 FaceParameterReal TriangleFamily::original(std::size_t face, double x, double y) const {
-  // Patch coordinates back to the prepared face's (the inverse of TrianglePatch::to_patch).
-  double u = x, v = y;
-  switch (patches_[face].rotation) {
-    case 0: break;
-    case 1: u = 1 - x - y, v = x; break;
-    default: u = y, v = 1 - x - y; break;
+  // Patch coordinates back to the node's own (the inverse of TrianglePatch::to_patch).
+  double u = 0, v = 0;
+  from_patch(patches_[face].rotation, x, y, u, v);
+  // Up the levels refined round semi-sharp features to the prepared face.
+  while (face >= topology_.faces()) {
+    loop_parent(tree_.which(face), u, v);
+    face = tree_.parent[face];
   }
   // Up the hierarchy: each child's parameter to its parent's (the inverse of loop_child() or ternary_child()).
   for (std::size_t level = hierarchy_.levels.size(); level-- > 0;) {
@@ -203,21 +276,14 @@ FaceParameterReal TriangleFamily::original(std::size_t face, double x, double y)
     const auto& offsets = l.child_offsets;
     const std::size_t parent = static_cast<std::size_t>(std::upper_bound(offsets.begin(), offsets.end(), face) - offsets.begin()) - 1;
     const int c = static_cast<int>(face - offsets[parent]);
-    double pu = 0, pv = 0;
     if (l.scale == 3) {
       const TernaryCell& cell = ternary_cells()[static_cast<std::size_t>(c)];
       const double X = cell.down ? cell.a + 1 - v : u + cell.a;
       const double Y = cell.down ? u + v + cell.b : v + cell.b;
-      pu = X / 3, pv = Y / 3;
+      u = X / 3, v = Y / 3;
     } else {
-      switch (c) {
-        case 0: pu = u / 2, pv = v / 2; break;
-        case 1: pu = (2 - u - v) / 2, pv = u / 2; break;
-        case 2: pu = v / 2, pv = (2 - u - v) / 2; break;
-        default: pu = (1 - v) / 2, pv = (u + v) / 2; break;
-      }
+      loop_parent(c, u, v);
     }
-    u = pu, v = pv;
     face = parent;
   }
   return {face, u, v};

@@ -7,6 +7,7 @@
 
 #include "family/seam_polygons.hpp"
 #include "family/stencil_sum.hpp"
+#include "loop_split.hpp"
 #include "triangle_family.hpp"
 
 namespace stencil_runtime {
@@ -119,16 +120,47 @@ void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin
     const long n = layout.rates[f];
     std::array<float, 3>* position = kPositions ? positions + layout.point_offsets[f] : nullptr;
     std::array<float, 3>* normal = kNormals ? normals + layout.point_offsets[f] : nullptr;
-    gather_points(p.points, pos, local);  // once per face: the sums below read them n^2 times
-    const std::size_t m = local.size();
-    const TriangleTables::Grid grid = tables_.grid(p.valence, static_cast<int>(n), p.region);
-    // Normals: the same points differentiated in the patch's own coordinates;
-    // the patch's rotation keeps the orientation, so du x dv there points the
-    // same way as on the face.
+    // Normals: the points differentiated in the patch's own coordinates; the
+    // patch's rotation (and the Loop split's maps, below a refined face) keep
+    // the orientation, so du x dv there points the same way as on the face.
     auto put_normal = [&](const Point& du, const Point& dv) {
       const Point u = unit_cross(du, dv);
       *normal++ = {static_cast<float>(u[0]), static_cast<float>(u[1]), static_cast<float>(u[2])};
     };
+    // The face's n^2 centres in their order (up_centre_index, down_centre_index):
+    // row(a0, b, count) for the samples (a0 + 3i, b), i < count, in thirds of 1/n.
+    auto each_row = [&](auto&& row) {
+      for (long j = 0; j < n; ++j) row(1L, 3 * j + 1, n - j);
+      for (long j = 0; j + 1 < n; ++j) row(2L, 3 * j + 2, n - 1 - j);
+    };
+    if (refined(f)) {
+      // Refined round semi-sharp features: point by point from the leaves,
+      // where each centre is a centre of rate n again (a Loop split doubles it).
+      each_row([&](long a0, long b, long count) {
+        for (long i = 0, a = a0; i < count; ++i, a += 3) {
+          long la = a, lb = b, pa = 0, pb = 0;
+          const TrianglePatch& leaf = patches_[leaf_of(f, la, lb, 3 * n)];
+          leaf.to_patch(la, lb, 3 * n, pa, pb);
+          const TriangleTables::Grid g = tables_.grid(leaf.valence, static_cast<int>(n), leaf.region);
+          const std::size_t m = leaf.points.size();
+          if (kPositions) {
+            const Point q = stencil_sum(g.weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3),
+                                        leaf.points.data(), m, pos);
+            *position++ = {static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2])};
+          }
+          if (kNormals) {
+            const int ci = static_cast<int>(pa / 3), cj = static_cast<int>(pb / 3), rate = static_cast<int>(n);
+            const int centre = pa % 3 == 1 ? up_centre_index(ci, cj, rate) : down_centre_index(ci, cj, rate);
+            const double* d = centre_derivatives(leaf.valence, leaf.region, rate, m)->data() + static_cast<std::size_t>(centre) * 2 * m;
+            put_normal(stencil_sum(d, leaf.points.data(), m, pos), stencil_sum(d + m, leaf.points.data(), m, pos));
+          }
+        }
+      });
+      continue;
+    }
+    gather_points(p.points, pos, local);  // once per face: the sums below read them n^2 times
+    const std::size_t m = local.size();
+    const TriangleTables::Grid grid = tables_.grid(p.valence, static_cast<int>(n), p.region);
     auto put_position = [&](const double* w) {
       double x = 0, y = 0, z = 0;
       for (std::size_t h = 0; h < m; ++h) x += w[h] * local[h][0], y += w[h] * local[h][1], z += w[h] * local[h][2];
@@ -138,12 +170,6 @@ void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin
       long pa = 0, pb = 0;
       p.to_patch(a, b, 3 * n, pa, pb);
       return grid.weights(static_cast<TriangleTables::GridPoint>(pa % 3), pa / 3, pb / 3);
-    };
-    // The face's n^2 centres in their order (up_centre_index, down_centre_index):
-    // row(a0, b, count) for the samples (a0 + 3i, b), i < count, in thirds of 1/n.
-    auto each_row = [&](auto&& row) {
-      for (long j = 0; j < n; ++j) row(1L, 3 * j + 1, n - j);
-      for (long j = 0; j + 1 < n; ++j) row(2L, 3 * j + 2, n - 1 - j);
     };
     if (kNormals && derivative_rows_ && p.valence == 6 && p.region == 0 && n >= kRowNormalRate) {
       // A polynomial regular patch (Loop): normals row by row (face_derivative_rows.hpp).
@@ -266,10 +292,15 @@ inline void edge_grid_node(int k, long t, long n, long& i, long& j) {
 
 }  // namespace
 
+std::size_t TriangleFamily::leaf_of(std::size_t node, long& a, long& b, long d) const {
+  while (refined(node)) node = tree_.child(node, loop_child_on_grid(a, b, d));
+  return node;
+}
+
 Point TriangleFamily::edge_node(std::size_t face, int corner, int t, int n, const Point* prepared) const {
-  const TrianglePatch& p = patches_[face];
   long i = 0, j = 0, pi = 0, pj = 0;
   edge_grid_node(corner, t, n, i, j);
+  const TrianglePatch& p = patches_[leaf_of(face, i, j, 3L * n)];  // a node of rate n below a refined face too
   p.to_patch(i, j, 3L * n, pi, pj);
   const TriangleTables::Grid grid = tables_.grid(p.valence, n, p.region);
   const double* w = grid.weights(TriangleTables::GridPoint::Node, pi / 3, pj / 3);
