@@ -14,7 +14,9 @@
 // every 10th edge at sharpness 2 again, and every 100th at sharpness 2 (after
 // the same by whole-mesh steps) and 4
 // (a few creases, the usual case; sharpness 4 is beyond whole-mesh steps here).
-// Usage: bench_creases [CATMULL-CLARK.sgs]
+// With Loop tables too, the same for the triangle torus refined by Loop steps
+// to >= 50k faces (TriangleFamily's tree, the same levels).
+// Usage: bench_creases [CATMULL-CLARK.sgs [LOOP.sgt]]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -25,7 +27,7 @@
 
 #include "bench_timing.hpp"
 #include "osd_tessellation.hpp"
-#include "quad/semi_sharp_levels.hpp"
+#include "family/semi_sharp_levels.hpp"
 #include "stencil_runtime/mesh_io.hpp"
 #include "stencil_runtime/subdivide.hpp"
 #include "stencil_runtime/tessellation.hpp"
@@ -53,12 +55,13 @@ MeshFeatures creases(const Mesh& mesh, double s, std::size_t every = 10) {
 
 }  // namespace
 
-int run(int argc, char** argv) {
-  const std::string cc_path = argc > 1 ? argv[1] : "tables/catmull-clark/catmull-clark.sgs";
-  const auto tables = Tables::load(cc_path);
-  Mesh mesh = read_obj(std::string(STENCIL_SOURCE_DIR) + "/meshes/chess-piece.obj");
+namespace {
+
+void bench(const std::shared_ptr<const Tables>& tables, const std::string& name, bool loop) {
+  Mesh mesh = read_obj(std::string(STENCIL_SOURCE_DIR) + "/meshes/" + name + ".obj");
   while (mesh.face_count() < 50000) mesh = subdivide(*tables, mesh);
-  std::printf("# chess piece refined to %zu faces; creases on every 10th or 100th edge\n\n", mesh.face_count());
+  std::printf("# %s: %s refined to %zu faces; creases on every 10th or 100th edge\n\n", tables->scheme().c_str(),
+              name.c_str(), mesh.face_count());
   // What the runtime picks by itself (quad/semi_sharp_levels.hpp's automatic choice) for the creased meshes below.
   for (std::size_t every : {std::size_t{10}, std::size_t{100}}) {
     set_crease_refinement_choice(CreaseRefinementChoice::Automatic);
@@ -90,7 +93,7 @@ int run(int argc, char** argv) {
       pairs.insert(pairs.end(), {e.a, e.b});
       weights.push_back(static_cast<float>(e.sharpness));
     }
-    osd_bench::Input input{&mesh.positions, &mesh.face_sizes, &mesh.face_vertices, false};
+    osd_bench::Input input{&mesh.positions, &mesh.face_sizes, &mesh.face_vertices, loop};
     if (sharpness > 0) input.crease_pairs = &pairs, input.crease_sharpness = &weights;
     osd_bench::BfrTessellator osd(input);
     std::size_t row = 0;
@@ -117,6 +120,15 @@ int run(int argc, char** argv) {
       }
     }
   }
+  std::printf("\n");
+}
+
+}  // namespace
+
+int run(int argc, char** argv) {
+  const std::string cc_path = argc > 1 ? argv[1] : "tables/catmull-clark/catmull-clark.sgs";
+  bench(Tables::load(cc_path), "chess-piece", false);
+  if (argc > 2) bench(Tables::load(argv[2]), "tri-torus", true);
   return 0;
 }
 
