@@ -48,8 +48,8 @@ class Budget {
 // left out, as the weight budget leaves out long sweeps.
 constexpr double kCreaseStepFaceBudget = 65536;
 
-// Those faces, roughly (an upper estimate for the quad family; Loop's are exact).
-double crease_step_faces(const rt::Mesh& mesh, bool triangles) {
+// Those faces, roughly (an upper estimate; whole-mesh steps' are exact).
+double crease_step_faces(const rt::Mesh& mesh) {
   double sharpest = 0, features = 0;
   for (const auto& c : mesh.tags.creases)
     if (c.sharpness > 0 && c.sharpness < 10) sharpest = std::max(sharpest, c.sharpness), ++features;
@@ -58,8 +58,8 @@ double crease_step_faces(const rt::Mesh& mesh, bool triangles) {
   if (!(sharpest > 0)) return 0;  // NaN included: refused before any step
   const double steps = std::ceil(sharpest);
   const double whole = static_cast<double>(mesh.face_vertices.size()) * std::pow(4.0, steps - 1);
-  // The quad family takes whole-mesh steps within its budget (lowered to this one below), else refines round the features.
-  if (triangles || whole <= kCreaseStepFaceBudget) return whole;
+  // Both families take whole-mesh steps within their budget (lowered to this one below), else refine round the features.
+  if (whole <= kCreaseStepFaceBudget) return whole;
   return 32 * features * std::pow(2.0, steps) + 16 * static_cast<double>(mesh.face_vertices.size());
 }
 
@@ -268,10 +268,10 @@ void use_mesh(const rt::Mesh& input) {
   } catch (const rt::MeshError&) {
   }
   const std::vector<int> view_rates = stencil_tools::rates_for_view(mesh, stencil_tools::Camera{}, 8);
-  // Both ways of the quad family within the budget: whole-mesh steps up to it, refinement round the features beyond.
+  // Both ways of the families within the budget: whole-mesh steps up to it, refinement round the features beyond.
   static const bool budget_set = (rt::set_whole_mesh_crease_faces(static_cast<std::size_t>(kCreaseStepFaceBudget)), true);
   (void)budget_set;
-  if (crease_step_faces(mesh, triangles) > kCreaseStepFaceBudget) return;
+  if (crease_step_faces(mesh) > kCreaseStepFaceBudget) return;
   Budget budget;
   use_surface(triangles ? triangle_tables : quad_tables, mesh, view_rates, budget);
 }
