@@ -287,50 +287,26 @@ void QuadFamily::refine_round_features(Prepared& out, const QuadTables& t, const
   // The boundary rules are the crease curve's, on the mesh's boundaries and on the regions' borders alike.
   SemiSharpRefinement r =
       refine_round_semi_sharp(out.mesh, sharpness, t, crease, {crease.centre, crease.neighbour, edge_and_corner}, edge_and_corner);
-  const std::size_t prepared_faces = out.mesh.face_count();
-  out.tree.start(prepared_faces);
-  // A refined face's own patch is only its hull (closest points): unturned,
-  // so that its sub-patch coordinates are the face's own, as its tree's are.
-  for (std::size_t f = 0; f < prepared_faces; ++f)
-    if (r.refined[f]) out.patches[f].rotation = 0;
   out.feature_levels = static_cast<int>(r.levels.size());
-  out.feature_faces = r.faces() - prepared_faces;
-  std::size_t before_base = 0, before_vertices = 0;  // the level before: its first node and prepared vertex (the prepared mesh's at 0)
-  for (SemiSharpLevel& level : r.levels) {
-    const std::size_t base = out.patches.size(), faces = level.mesh.face_count();
-    out.tree.add_level(level, base, before_base);
-    out.patches.resize(base + faces);
-    const std::size_t offset = out.refinement.prepared_vertices();
-    out.refinement.append(std::move(level.step), before_vertices);
-    // Patches of the leaves, gathered as on the prepared mesh: on the level cut
-    // along its infinitely sharp edges, with copies and phantoms after its vertices.
-    const PolygonLinks links = link_polygons(level.mesh, true);
-    const SharpCut cut = cut_along_sharp_edges(level.mesh, links, level.sharpness, edge_and_corner);
-    const std::vector<char> no_surface = no_surface_vertices(out.no_boundary_surface, level.mesh, links, level.sharpness, cut);
+  out.feature_faces = r.faces() - out.mesh.face_count();
+  const auto gather = [&](const SharpCut& cut, const std::vector<char>& no_surface, const std::vector<char>& exact,
+                          std::vector<QuadPatch>& patches) {
     const QuadTopology topo(cut.mesh, true);
-    if (cut.cut) out.refinement.append(rows_over(level.mesh.vertex_count, copy_rows(cut, level.mesh.vertex_count)), offset);
     PhantomRows phantoms;
-    for (std::size_t f = 0; f < faces; ++f) {
-      // Leaves get their patches; inner nodes the same points, as the hull of the surface below them.
-      if (!level.exact[f]) continue;
+    for (std::size_t f = 0; f < patches.size(); ++f) {
+      if (!exact[f]) continue;
       bool ready = face_ready(topo, f, cut.rule, no_surface);
       for (int c = 0; c < 4; ++c) {
         const int v = topo.vertex(f, c);
         ready = ready && !slit_end_inside(cut.rule[static_cast<std::size_t>(v)], topo.on_boundary(v));
       }
-      // Children of isolated faces are isolated: a leaf without its patch is a mistake here.
+      // Children of isolated faces are isolated: a node without its patch is a mistake here.
       if (!ready) throw MeshError("internal: a face refined round a semi-sharp feature has no patch");
-      QuadPatch p = face_patch(topo, f, cut.rule, no_surface, cut.mesh.vertex_count, phantoms);
-      for (int& i : p.points) i += static_cast<int>(offset);
-      if (level.refined[f]) p.rotation = 0;  // a hull, as above
-      out.patches[base + f] = std::move(p);
+      patches[f] = face_patch(topo, f, cut.rule, no_surface, cut.mesh.vertex_count, phantoms);
     }
-    if (!phantoms.empty()) out.refinement.append(rows_over(cut.mesh.vertex_count, phantoms), offset);
-    before_base = base;
-    before_vertices = offset;
-  }
-  if (out.refinement.prepared_vertices() > static_cast<std::size_t>(INT32_MAX))
-    throw MeshError("the refinement round the semi-sharp features makes more than 2^31 points");
+    return phantoms;
+  };
+  hang_levels(r, edge_and_corner, out.no_boundary_surface, out.refinement, out.tree, out.patches, gather);
 }
 
 QuadFamily::QuadFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const MeshFeatures& sharp)

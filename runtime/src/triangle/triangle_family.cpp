@@ -325,49 +325,25 @@ void TriangleFamily::refine_round_features(Prepared& out, const TriangleTables& 
     return r;
   };
   SemiSharpRefinement r = refine_round_semi_sharp(out.mesh, sharpness, step, crease, boundary_corners);
-  const std::size_t prepared_faces = out.mesh.face_count();
-  out.tree.start(prepared_faces);
-  // A refined face's own patch is only its hull (closest points): unturned,
-  // so that its sub-patch coordinates are the face's own, as its tree's are.
-  for (std::size_t f = 0; f < prepared_faces; ++f)
-    if (r.refined[f]) out.patches[f].rotation = 0;
   out.feature_levels = static_cast<int>(r.levels.size());
-  out.feature_faces = r.faces() - prepared_faces;
-  std::size_t before_base = 0, before_vertices = 0;  // the level before: its first node and prepared vertex
-  for (SemiSharpLevel& level : r.levels) {
-    const std::size_t base = out.patches.size(), faces = level.mesh.face_count();
-    out.tree.add_level(level, base, before_base);
-    out.patches.resize(base + faces);
-    const std::size_t offset = out.refinement.prepared_vertices();
-    out.refinement.append(std::move(level.step), before_vertices);
-    // Patches of the tree's nodes, gathered as on the prepared mesh: on the
-    // level cut along its infinitely sharp edges, with copies and phantoms
-    // after its vertices. An inner node's points are the hull of the surface below it.
-    const PolygonLinks links = link_polygons(level.mesh, true);
-    const SharpCut cut = cut_along_sharp_edges(level.mesh, links, level.sharpness, boundary_corners);
-    const std::vector<char> no_surface = no_surface_vertices(no_boundary_surface, level.mesh, links, level.sharpness, cut);
+  out.feature_faces = r.faces() - out.mesh.face_count();
+  const auto gather = [&](const SharpCut& cut, const std::vector<char>& no_surface, const std::vector<char>& exact,
+                          std::vector<TrianglePatch>& patches) {
     const TriangleTopology topo(cut.mesh, true);
-    if (cut.cut) out.refinement.append(rows_over(level.mesh.vertex_count, copy_rows(cut, level.mesh.vertex_count)), offset);
     PhantomPoints phantoms;
     phantoms.first = cut.mesh.vertex_count;
     const bool cones = has_cones(cut.rule);
-    for (std::size_t f = 0; f < faces; ++f) {
-      if (!level.exact[f]) continue;
+    for (std::size_t f = 0; f < patches.size(); ++f) {
+      if (!exact[f]) continue;
       std::optional<TrianglePatch> p = face_patch(topo, f, t, phantoms, no_surface, cut.rule, cones);
       // Children of isolated faces are isolated: a node without its patch is a mistake here.
       if (!p) throw MeshError("internal: a face refined round a semi-sharp feature has no patch");
-      for (int& i : p->points) i += static_cast<int>(offset);
-      if (level.refined[f]) p->rotation = 0;  // a hull, as above
-      out.patches[base + f] = std::move(*p);
+      patches[f] = std::move(*p);
     }
-    if (!phantoms.rows.empty()) out.refinement.append(rows_over(cut.mesh.vertex_count, phantoms.rows), offset);
-    before_base = base;
-    before_vertices = offset;
-  }
-  if (out.refinement.prepared_vertices() > static_cast<std::size_t>(INT32_MAX))
-    throw MeshError("the refinement round the semi-sharp features makes more than 2^31 points");
+    return std::move(phantoms.rows);
+  };
+  hang_levels(r, boundary_corners, no_boundary_surface, out.refinement, out.tree, out.patches, gather);
 }
-
 
 TriangleFamily::TriangleFamily(std::shared_ptr<const Tables> tables, const Connectivity& mesh, const MeshFeatures& sharp)
     : TriangleFamily(tables, prepare(*tables, mesh, sharp)) {}
