@@ -136,6 +136,9 @@ void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin
     if (refined(f)) {
       // Refined round semi-sharp features: point by point from the leaves,
       // where each centre is a centre of rate n again (a Loop split doubles it).
+      // The leaves' kinds' centre derivatives, looked up (under the cache's lock) only when the kind changes.
+      std::shared_ptr<const std::vector<double>> kind_derivatives;
+      int kind_valence = 0, kind_region = -1;
       each_row([&](long a0, long b, long count) {
         for (long i = 0, a = a0; i < count; ++i, a += 3) {
           long la = a, lb = b, pa = 0, pb = 0;
@@ -151,7 +154,11 @@ void TriangleFamily::samples(const TessellationLayout& layout, std::size_t begin
           if (kNormals) {
             const int ci = static_cast<int>(pa / 3), cj = static_cast<int>(pb / 3), rate = static_cast<int>(n);
             const int centre = pa % 3 == 1 ? up_centre_index(ci, cj, rate) : down_centre_index(ci, cj, rate);
-            const double* d = centre_derivatives(leaf.valence, leaf.region, rate, m)->data() + static_cast<std::size_t>(centre) * 2 * m;
+            if (leaf.valence != kind_valence || leaf.region != kind_region) {
+              kind_derivatives = centre_derivatives(leaf.valence, leaf.region, rate, m);
+              kind_valence = leaf.valence, kind_region = leaf.region;
+            }
+            const double* d = kind_derivatives->data() + static_cast<std::size_t>(centre) * 2 * m;
             put_normal(stencil_sum(d, leaf.points.data(), m, pos), stencil_sum(d + m, leaf.points.data(), m, pos));
           }
         }
