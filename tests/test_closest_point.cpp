@@ -15,6 +15,7 @@
 #include "bfr_distance.hpp"
 #include "distance/affine_enclosure.hpp"
 #include "distance/convex_bound.hpp"
+#include "open_meshes.hpp"
 #include "cli.hpp"
 #include "runtime_api.hpp"
 #include "stencil_runtime/closest_point.hpp"
@@ -612,6 +613,41 @@ TEST_CASE("a tolerance below what doubles resolve is raised to 1e-14 of the exte
     const ClosestPoint tight = query.find(q), loose = usual.find(q);
     CHECK(tight.distance <= loose.distance + 1e-12);
     CHECK(tight.accuracy <= 1e-12);
+  }
+}
+
+TEST_CASE("the default tolerance is 1e-9 of the control points' diagonal on a mesh with boundaries too",
+          "[runtime][distance][boundary]") {
+  // A boundary's phantom points lie beyond the control points, and the default
+  // tolerance used to be taken from the prepared points' box: 1.7 times the
+  // promise on a CGAL mesh with six boundary edges, one query 1.27e-9 of the
+  // diagonal above brute force.
+  for (const bool loop : {false, true}) {
+    const auto tables = loop ? Tables::load(generated_table("loop", "--valence 3-8 --n 8", "sgt").string())
+                             : Tables::load(generated_table("catmull-clark", "--valence 3-8 --n 8", "sgs").string());
+    Mesh mesh = test_meshes::open_grid(5, 4);
+    if (loop) {  // each quad as two triangles
+      Mesh t;
+      t.positions = mesh.positions;
+      for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+        const int* v = &mesh.face_vertices[4 * f];
+        for (int tri : {v[0], v[1], v[2], v[0], v[2], v[3]}) t.face_vertices.push_back(tri);
+        t.face_sizes.insert(t.face_sizes.end(), {3, 3});
+      }
+      mesh = t;
+    }
+    INFO((loop ? "Loop" : "Catmull-Clark"));
+    const Surface surface = surface_of(tables, mesh);
+    const double diagonal = diagonal_of(mesh);
+    CHECK(surface.control_diagonal() == Approx(diagonal).epsilon(1e-14));
+    // The premise: the prepared points reach beyond the control points here.
+    Point lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+    for (const Point& p : surface.prepared_positions())
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    CHECK(std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) > 1.05 * diagonal);
+    const ClosestPointQuery query(surface);
+    CHECK(query.tolerance() <= 1e-9 * diagonal * (1 + 1e-12));
+    CHECK(query.tolerance() >= 1e-9 * diagonal * (1 - 1e-12));
   }
 }
 

@@ -22,9 +22,10 @@ namespace stencil_runtime {
 
 struct ClosestPointOptions {
   // The largest amount by which a reported distance may exceed the true one
-  // (absolute); 0: 1e-9 of the diagonal of the control points' bounding box.
-  // At least 1e-14 of that diagonal (a smaller one is raised to it: doubles
-  // resolve no finer); tolerance() says what is used.
+  // (absolute); 0: 1e-9 of the diagonal of the control points' bounding box
+  // (Surface::control_diagonal; the prepared points' where that is smaller).
+  // At least 1e-14 of the prepared points' diagonal (a smaller one is raised
+  // to it: doubles resolve no finer); tolerance() says what is used.
   double tolerance = 0;
   // Points farther than this from the surface come back with found == false.
   double max_distance = std::numeric_limits<double>::infinity();

@@ -47,6 +47,10 @@ class Surface {
   bool has_positions() const { return has_positions_; }
   // R * control: the positions of the prepared mesh's vertices.
   const std::vector<Point>& prepared_positions() const { return prepared_; }
+  // The diagonal of the bounding box of the control positions last set (0
+  // without positions): what relative tolerances are fractions of. The
+  // prepared positions can reach beyond it (a boundary's phantom points).
+  double control_diagonal() const { return control_diagonal_; }
   // The prepared mesh itself (its faces are all quads or all triangles): the
   // same limit surface, described by more control points.
   Mesh prepared_mesh() const;
@@ -103,6 +107,7 @@ class Surface {
   std::vector<Point> prepared_;
   std::vector<std::vector<Point>> levels_;  // intermediate refinement levels, kept for reuse
   bool has_positions_ = false;
+  double control_diagonal_ = 0;
   double rounding_ = 0;  // single-precision tables: the bound their weights' rounding adds (2^-20 of the largest coordinate)
 };
 

@@ -26,7 +26,8 @@ Surface::Surface(std::shared_ptr<const SurfaceTopology> topology, const std::vec
 // The topology is shared, not moved: a surface moved from stays usable, without positions.
 Surface::Surface(Surface&& other) noexcept
     : topology_(other.topology_), prepared_(std::move(other.prepared_)), levels_(std::move(other.levels_)),
-      has_positions_(std::exchange(other.has_positions_, false)), rounding_(other.rounding_) {}
+      has_positions_(std::exchange(other.has_positions_, false)), control_diagonal_(std::exchange(other.control_diagonal_, 0.0)),
+      rounding_(other.rounding_) {}
 
 Surface& Surface::operator=(Surface&& other) noexcept {
   if (this != &other) {
@@ -34,6 +35,7 @@ Surface& Surface::operator=(Surface&& other) noexcept {
     prepared_ = std::move(other.prepared_);
     levels_ = std::move(other.levels_);
     has_positions_ = std::exchange(other.has_positions_, false);
+    control_diagonal_ = std::exchange(other.control_diagonal_, 0.0);
     rounding_ = other.rounding_;
     other.prepared_.clear();
   }
@@ -49,6 +51,10 @@ void Surface::set_positions(const Point* control, std::size_t count) {
                           std::to_string(topology_->vertex_count()) + " vertices");
   if (const std::string fault = coordinate_fault(control, count); !fault.empty()) throw EvaluationError(fault);
   topology_->family().refinement().apply(control, levels_, prepared_);
+  Point lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  for (std::size_t i = 0; i < count; ++i)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], control[i][k]), hi[k] = std::max(hi[k], control[i][k]);
+  control_diagonal_ = count > 0 ? std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) : 0.0;  // hypot: no underflow
   rounding_ = 0;
   if (topology_->tables().single_precision())
     for (const Point& p : prepared_)
