@@ -534,11 +534,18 @@ int main(int argc, char** argv) {
                       mesh.face_sizes.size(), r.samples, r.position, r.normal, r.bfr_approximate, r.far_limit, r.no_normal,
                       r.mismatches, r.worst.empty() ? "" : ": ", r.worst.c_str());
         bfr_rows += row;
-        const DistanceResult d = check_distances(mesh, surface);
+        // Past here the shape is evaluated: an error from a closest point (or
+        // from evaluating at what it returned) is a failure, not a refusal.
         ++distance_evaluated;
-        if (d.violations) ++distance_failed;
-        std::snprintf(row, sizeof row, "| %s | %zu | %.1e | %.1e | %zu%s%s |\n", name.c_str(), d.queries, d.above_dense,
-                      d.off_surface, d.violations, d.worst.empty() ? "" : ": ", d.worst.c_str());
+        try {
+          const DistanceResult d = check_distances(mesh, surface);
+          if (d.violations) ++distance_failed;
+          std::snprintf(row, sizeof row, "| %s | %zu | %.1e | %.1e | %zu%s%s |\n", name.c_str(), d.queries, d.above_dense,
+                        d.off_surface, d.violations, d.worst.empty() ? "" : ": ", d.worst.c_str());
+        } catch (const Error& e) {
+          ++distance_failed;
+          std::snprintf(row, sizeof row, "| %s | | | | failed: %s |\n", name.c_str(), e.what());
+        }
         distance_rows += row;
       } catch (const Error& e) {
         ++refused;

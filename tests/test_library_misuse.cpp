@@ -97,6 +97,27 @@ TEST_CASE("exact parameters are placed on an N-gon's tiles exactly, whatever the
   CHECK(s < 5);
 }
 
+TEST_CASE("FaceDomain::clamp moves a parameter rounded just outside to the nearest point inside", "[runtime][parameters]") {
+  const FaceDomain quad = FaceDomain::of(SchemeFamily::Quad, 4), tri = FaceDomain::of(SchemeFamily::Triangle, 3);
+  struct Case {
+    const FaceDomain* domain;
+    double u, v, cu, cv;  // the parameter and the nearest point of the domain
+  };
+  const FaceDomain pentagon = FaceDomain::of(SchemeFamily::Quad, 5);  // 3 x 2 tiles of 1/2
+  for (const Case& c : {Case{&tri, 0.125, -2.7755575615628914e-17, 0.125, 0}, Case{&tri, -1.1e-16, 0.25, 0, 0.25},
+                        Case{&tri, 0.7, 0.30000000000000004, 0.69999999999999996, 0.30000000000000004},
+                        Case{&tri, 0.6, 0.6, 0.5, 0.5}, Case{&tri, 0.2, 0.3, 0.2, 0.3}, Case{&quad, 1 + 1e-16, -1e-17, 1, 0},
+                        Case{&quad, 0.4, 0.6, 0.4, 0.6}, Case{&pentagon, 1.5 + 1e-15, 0.25, 1.5, 0.25},
+                        Case{&pentagon, 2.25, -1e-16, 2.25, 0}}) {
+    double u = c.u, v = c.v;
+    c.domain->clamp(u, v);
+    INFO(c.u << ", " << c.v << " -> " << u << ", " << v);
+    CHECK(c.domain->contains(u, v));
+    CHECK(u == Approx(c.cu).margin(1e-15));
+    CHECK(v == Approx(c.cv).margin(1e-15));
+  }
+}
+
 TEST_CASE("fractions take every value 64 bits hold, -2^63 included", "[runtime][misuse][parameters]") {
   CHECK(Fraction::make(INT64_MIN, 1) == Fraction{INT64_MIN, 1});
   CHECK(Fraction::make(0, INT64_MIN) == Fraction{0, 1});

@@ -33,6 +33,10 @@ struct FaceDomain {
   // Whether (u, v) lies in the domain (tiles include their edges).
   bool contains(double u, double v) const;
   bool contains(const ExactParameter& p) const;
+  // Moves (u, v) to the nearest point of the domain (within the sub-face that
+  // subface() picks for an N-gon): for a parameter computed from another,
+  // which rounding may leave just outside (NaN stays NaN).
+  void clamp(double& u, double& v) const;
   // QuadSubfaces: the sub-face holding (u, v) (Bfr's rule: points on a tile's
   // border go to the tile whose lower-left is nearer) and its own coordinates.
   // For (u, v) outside the domain, the nearest tile's (coordinates outside

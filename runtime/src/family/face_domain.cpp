@@ -66,6 +66,27 @@ bool FaceDomain::contains(double u, double v) const {
   }
 }
 
+void FaceDomain::clamp(double& u, double& v) const {
+  switch (kind) {
+    case Kind::Quad:
+      u = std::clamp(u, 0.0, 1.0), v = std::clamp(v, 0.0, 1.0);
+      return;
+    case Kind::Triangle:
+      u = std::max(u, 0.0), v = std::max(v, 0.0);
+      if (u + v > 1) {  // the nearest point of the hypotenuse
+        u = std::clamp(u - (u + v - 1) / 2, 0.0, 1.0);
+        v = 1 - u;  // u + v rounds to 1 at most
+      }
+      return;
+    default: {
+      double su = 0, sv = 0;
+      const int s = subface(u, v, su, sv);
+      su = std::clamp(su, 0.0, 1.0), sv = std::clamp(sv, 0.0, 1.0);
+      u = s % u_tiles + su / 2, v = s / u_tiles + sv / 2;
+    }
+  }
+}
+
 namespace {
 
 // Whether a parameter lies in the domain is decided in 128 bits: products of

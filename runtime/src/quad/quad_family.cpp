@@ -677,6 +677,7 @@ FaceParameterReal QuadFamily::original_of_face(std::size_t face, double u, doubl
     }
     face = parent;
   }
+  domain(face).clamp(u, v);  // the steps up round: a border point may land a few ulps outside
   return {face, u, v};
 }
 

@@ -286,6 +286,9 @@ FaceParameterReal TriangleFamily::original(std::size_t face, double x, double y)
     }
     face = parent;
   }
+  // The steps up round: a point on a border may land a few ulps outside (a
+  // closest point came back at v = -2.8e-17, which evaluation then refused).
+  domain(face).clamp(u, v);
   return {face, u, v};
 }
 
