@@ -116,10 +116,6 @@ int main(int argc, char** argv) {
     boundary.apply(mesh);
     for (const std::string& warning : mesh.warnings) std::cerr << warning << '\n';
     const std::vector<Point> queries = stencil_tools::read_points(points_path);
-    Point lo = mesh.positions.at(0), hi = lo;
-    for (const Point& p : mesh.positions)
-      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-    const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 
     const auto topology = SurfaceTopology::create(tables, mesh);
     if (signed_distance && topology->has_boundary())
@@ -129,7 +125,7 @@ int main(int argc, char** argv) {
                                "(line " + std::to_string(mesh.tags.holes.front().line) + ")");
     const Surface surface(topology, mesh.positions);
     ClosestPointOptions options;
-    options.tolerance = tolerance * diagonal;
+    options.tolerance = tolerance * surface.control_diagonal();  // --tolerance is a fraction of the control mesh's diagonal
     options.max_distance = max_distance;
     options.threads = threads;
     const auto start_all = std::chrono::steady_clock::now();

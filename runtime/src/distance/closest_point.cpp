@@ -17,6 +17,7 @@
 
 #include "distance/face_search.hpp"
 #include "distance/point_ops.hpp"
+#include "mesh/coordinates.hpp"
 #include "stencil_runtime/derivatives.hpp"
 #include "stencil_runtime/error.hpp"
 #include "stencil_runtime/limits.hpp"
@@ -231,10 +232,7 @@ void ClosestPointQuery::Impl::build(const Surface& surface) {
 
   // Control boxes (Embree's primitives) and the extent that fixes the default tolerance.
   boxes.assign(faces, {});
-  Point lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
-  for (const Point& p : prepared)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);  // no underflow for a tiny mesh
+  const double diagonal = box_diagonal(prepared.data(), prepared.size());
   // The extent checks are on the prepared points, which the queries use.
   if (diagonal == 0) throw EvaluationError("closest points: the control points all coincide (the surface is one point)");
   if (!(diagonal >= limits::kMinQueryExtent)) {

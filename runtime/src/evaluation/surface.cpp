@@ -51,10 +51,7 @@ void Surface::set_positions(const Point* control, std::size_t count) {
                           std::to_string(topology_->vertex_count()) + " vertices");
   if (const std::string fault = coordinate_fault(control, count); !fault.empty()) throw EvaluationError(fault);
   topology_->family().refinement().apply(control, levels_, prepared_);
-  Point lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
-  for (std::size_t i = 0; i < count; ++i)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], control[i][k]), hi[k] = std::max(hi[k], control[i][k]);
-  control_diagonal_ = count > 0 ? std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) : 0.0;  // hypot: no underflow
+  control_diagonal_ = box_diagonal(control, count);
   rounding_ = 0;
   if (topology_->tables().single_precision())
     for (const Point& p : prepared_)

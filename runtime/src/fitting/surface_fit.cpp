@@ -44,13 +44,6 @@ void check_points(const std::vector<Point>& points, const char* what) {
   if (const std::string fault = coordinate_fault(points.data(), points.size(), what); !fault.empty()) throw FitError(fault);
 }
 
-double diagonal_of(const std::vector<Point>& points) {
-  Point lo = points.front(), hi = lo;
-  for (const Point& p : points)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
-}
-
 // Stencil rows exist at every parameter where the scheme's regular patches are
 // polynomial; elsewhere only where the patch's descent reaches a stored grid.
 // There a foot moves to the nearest node of the grid 1 / G, G = n d^k, n the
@@ -165,7 +158,7 @@ FitResult fit_surface(std::shared_ptr<const SurfaceTopology> topology, const std
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   FitResult result;
-  result.diagonal = diagonal_of(points);
+  result.diagonal = box_diagonal(points.data(), points.size());
   if (!(result.diagonal > 0)) throw FitError("the points are all equal: nothing to fit");
   const double m = static_cast<double>(points.size()), n = static_cast<double>(topology->vertex_count());
   const auto laplacian =

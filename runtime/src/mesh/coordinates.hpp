@@ -25,4 +25,14 @@ inline std::string coordinate_fault(const Point* points, std::size_t count, cons
   return {};
 }
 
+// The diagonal of the bounding box of points[0 .. count) (0 for none): what
+// relative tolerances and extents are measured against. hypot: no underflow
+// for a tiny mesh.
+inline double box_diagonal(const Point* points, std::size_t count) {
+  Point lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  for (std::size_t i = 0; i < count; ++i)
+    for (int k = 0; k < 3; ++k) lo[k] = std::fmin(lo[k], points[i][k]), hi[k] = std::fmax(hi[k], points[i][k]);
+  return count > 0 ? std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) : 0.0;
+}
+
 }  // namespace stencil_runtime
