@@ -5,7 +5,10 @@
 // nonpoly, dense exact limit points. Signs against the mesh's inside.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <iomanip>
 #include <iterator>
 #include <map>
@@ -867,6 +870,43 @@ TEST_CASE("stencildist answers as the library does and refuses bad points files 
   CHECK(!expected.empty());
   CHECK(result(crlf_ply) == expected);
   CHECK(result(bom_xyz) == expected);
+  // Binary PLY in both byte orders (older scanners and the Stanford archive
+  // write big-endian): doubles read as the text's numbers; floats alike in
+  // both orders. A uchar before x and a face list with 2-byte counts after
+  // the points check that every field is read in the file's order.
+  {
+    const auto in_order = [](const void* value, std::size_t bytes, bool big) {
+      std::string raw(static_cast<const char*>(value), bytes);
+      if (big != (std::endian::native == std::endian::big)) std::reverse(raw.begin(), raw.end());
+      return raw;
+    };
+    const double xyz[9] = {0.1, 0.2, 0.9, 3, -1, 0.5, 0, 0, 0};
+    const auto binary = [&](bool big, bool doubles) {
+      const std::string type = doubles ? "double" : "float";
+      std::string file = std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") +
+                         " 1.0\nelement vertex 3\nproperty uchar flag\nproperty " + type + " x\nproperty " + type +
+                         " y\nproperty " + type + " z\nelement face 1\nproperty list ushort int vertex_indices\nend_header\n";
+      for (int p = 0; p < 3; ++p) {
+        file += '\7';
+        for (int k = 0; k < 3; ++k) {
+          const float f = static_cast<float>(xyz[3 * p + k]);
+          file += doubles ? in_order(&xyz[3 * p + k], 8, big) : in_order(&f, 4, big);
+        }
+      }
+      const std::uint16_t three = 3;
+      file += in_order(&three, 2, big);
+      for (const std::int32_t v : {0, 1, 2}) file += in_order(&v, 4, big);
+      return file;
+    };
+    CHECK(result(write("be-double.ply", binary(true, true))) == expected);
+    CHECK(result(write("le-double.ply", binary(false, true))) == expected);
+    const std::string floats = result(write("le-float.ply", binary(false, false)));
+    CHECK(!floats.empty());
+    CHECK(result(write("be-float.ply", binary(true, false))) == floats);
+    // Cut short within the face list: its big-endian count (3) is what the walk reads.
+    const std::string whole = binary(true, true);
+    refused(write("be-cut.ply", whole.substr(0, whole.size() - 1)), "truncated: the file ends within face 1 of 1 (binary)");
+  }
   const std::string with_normals = write("n.xyz", "0.1 0.2 0.9 0 0 1\n3 -1 0.5 1 0 0\n0 0 0 0 1 0\n");
   CHECK(result(with_normals) == expected);  // scanners' `x y z nx ny nz`: the normals are not used
   refused(write("badnormal.xyz", "0 0 0 0 0 1\n1 2 3 0 nan 1\n"), "badnormal.xyz:2");

@@ -1,6 +1,8 @@
 #include "points_file.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -174,10 +176,37 @@ bool ply_float_type(const std::string& type) {
   return type == "float" || type == "float32" || type == "double" || type == "float64";
 }
 
-// Where the later elements of a binary (little-endian) file end, walking
-// their lists' counts from `offset`; an error where the file ends first.
+// A binary PLY file's unsigned integer of `bytes` bytes at `at`, in the
+// file's byte order (big-endian: the byte at `at` is the most significant).
+std::uint64_t unsigned_at(const char* at, int bytes, bool big_endian) {
+  std::uint64_t n = 0;
+  for (int b = 0; b < bytes; ++b) {
+    const int i = big_endian ? b : bytes - 1 - b;  // most significant first
+    n = (n << 8) | static_cast<unsigned char>(at[i]);
+  }
+  return n;
+}
+
+// A binary PLY file's float (4 bytes) or double (8) at `at`, in the file's
+// byte order, whatever this machine's.
+double real_at(const char* at, int bytes, bool big_endian) {
+  std::array<char, 8> raw{};
+  std::memcpy(raw.data(), at, static_cast<std::size_t>(bytes));
+  if (big_endian != (std::endian::native == std::endian::big)) std::reverse(raw.begin(), raw.begin() + bytes);
+  if (bytes == 4) {
+    float f = 0;
+    std::memcpy(&f, raw.data(), 4);
+    return f;
+  }
+  double x = 0;
+  std::memcpy(&x, raw.data(), 8);
+  return x;
+}
+
+// Where the later elements of a binary file end, walking their lists' counts
+// from `offset`; an error where the file ends first.
 std::size_t later_elements_end(const std::string& path, const std::string& data, std::size_t offset,
-                               const std::vector<LaterElement>& later) {
+                               const std::vector<LaterElement>& later, bool big_endian) {
   for (const LaterElement& e : later)
     for (std::size_t i = 0; i < e.count && !e.properties.empty(); ++i)  // each item takes a byte at least: bounded by the file
       for (const LaterProperty& q : e.properties) {
@@ -186,9 +215,8 @@ std::size_t later_elements_end(const std::string& path, const std::string& data,
         if (q.count_bytes > 0) {
           if (left < static_cast<std::size_t>(q.count_bytes)) items = std::size_t(-1);
           else {
-            std::uint64_t n = 0;  // little-endian, unsigned: a signed count's negative values are huge and refused below
-            for (int b = q.count_bytes - 1; b >= 0; --b) n = (n << 8) | static_cast<unsigned char>(data[offset + static_cast<std::size_t>(b)]);
-            items = n;
+            // Unsigned: a signed count's negative values are huge and refused below.
+            items = unsigned_at(data.data() + offset, q.count_bytes, big_endian);
             offset += static_cast<std::size_t>(q.count_bytes);
           }
         }
@@ -229,9 +257,9 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
     if (key == "format") {
       std::string version;
       words >> format >> version;
-      if (format != "ascii" && format != "binary_little_endian")
+      if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
         throw std::runtime_error(where + ": PLY format " + stencil_runtime::quoted_excerpt(format) +
-                                 " is not supported (ascii or binary_little_endian)");
+                                 " is not one of ascii, binary_little_endian and binary_big_endian");
     } else if (key == "element") {
       std::string name, n;
       words >> name >> n;
@@ -355,7 +383,8 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
   if ((data.size() - body) / stride < count)
     throw std::runtime_error(path + ": truncated: " + std::to_string(count) + " points of " + std::to_string(stride) +
                              " bytes need more than the file holds");
-  const std::size_t end = later_elements_end(path, data, body + count * stride, later);
+  const bool big_endian = format == "binary_big_endian";
+  const std::size_t end = later_elements_end(path, data, body + count * stride, later, big_endian);
   if (end != data.size())
     throw std::runtime_error(path + ": " + std::to_string(data.size() - end) + " bytes after the " + std::to_string(count) +
                              " points the header declares" + (later.empty() ? " (and no further element)" : " and the elements after them"));
@@ -365,14 +394,7 @@ std::vector<Point> read_ply(const std::string& path, const std::string& data) {
       const int bytes = std::abs(properties[i].bytes);
       for (int k = 0; k < 3; ++k)
         if (slot[k] == static_cast<int>(i)) {
-          double x = 0;
-          if (bytes == 4) {
-            float f = 0;
-            std::memcpy(&f, data.data() + offset, 4);
-            x = f;
-          } else {
-            std::memcpy(&x, data.data() + offset, 8);
-          }
+          const double x = real_at(data.data() + offset, bytes, big_endian);
           points[p][static_cast<std::size_t>(k)] =
               checked_coordinate(x, path + ": point " + std::to_string(p + 1) + " of " + std::to_string(count) + " (binary)");
         }
