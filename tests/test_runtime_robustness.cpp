@@ -338,14 +338,34 @@ TEST_CASE("meshes outside the runtime's limits get a clear error naming the line
   }
   write_file(dir / "bom.obj", "\xEF\xBB\xBF" + cube);
   write_file(dir / "coloured.obj", coloured);
+  // OBJ's line continuation: every face split over two lines (the second with
+  // CRLF ends), and a comment ending in a backslash that must not swallow the
+  // vertex after it; the same surface as the plain file.
+  std::string continued;
+  for (std::size_t at = 0, end; at < cube.size(); at = end + 1) {
+    end = cube.find('\n', at);
+    std::string line = cube.substr(at, end - at);
+    if (at == cube.find("\nv ") + 1) continued += "# exported to C:\\models\\\n";  // just before the first vertex
+    if (line.rfind("f ", 0) == 0) line.replace(line.find(' ', 2), 1, " \\\r\n   ");
+    continued += line + "\n";
+  }
+  write_file(dir / "continued.obj", continued);
   const CliResult plain = eval((fs::path(STENCIL_SOURCE_DIR) / "meshes" / "cube.obj").string(), "--face 2 --uv 1/3,1/5");
   REQUIRE(plain.status == 0);
-  for (const char* name : {"bom.obj", "coloured.obj"}) {
+  for (const char* name : {"bom.obj", "coloured.obj", "continued.obj"}) {
     const CliResult r = eval((dir / name).string(), "--face 2 --uv 1/3,1/5");
     INFO(name << ": " << r.output);
     CHECK(r.status == 0);
     CHECK(r.output == plain.output);
   }
+  // A continued line's error names its first line; a continuation at the end of the file ends the line.
+  write_file(dir / "continued-bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \\\n 3 4x\n");
+  expect_error(eval((dir / "continued-bad.obj").string()), "continued-bad.obj:4: bad face index '4x'");
+  write_file(dir / "continued-end.obj", cube.substr(0, cube.find_last_not_of('\n') + 1) + " \\");
+  const CliResult at_end = eval((dir / "continued-end.obj").string(), "--face 2 --uv 1/3,1/5");
+  INFO(at_end.output);
+  CHECK(at_end.status == 0);
+  CHECK(at_end.output == plain.output);
   fs::remove_all(dir);
 }
 

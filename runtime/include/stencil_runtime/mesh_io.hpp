@@ -11,7 +11,9 @@ namespace stencil_runtime {
 // indices, `a/t/n` forms accepted), and OpenSubdiv's tag lines `t name I/F/S
 // ...` into Mesh::tags (crease, corner, hole, interpolateboundary,
 // creasemethod, smoothtriangles; an unknown tag becomes a warning in
-// Mesh::warnings); other lines are ignored. Refuses, with a
+// Mesh::warnings); other lines are ignored. A line ending in a backslash
+// continues on the next (not a comment's: a comment may end in a Windows
+// folder); messages name a continued line's first. Refuses, with a
 // LoadError naming the file and line: a file that is not a regular file or is
 // larger than limits::kMaxMeshFileBytes, a line longer than
 // limits::kMaxMeshLineBytes, coordinates that are not finite or exceed

@@ -41,6 +41,17 @@ bool next_line(std::streambuf& in, std::string& line, const Fail& fail) {
   return true;
 }
 
+// Whether `line` ends in OBJ's line continuation, a backslash (before a
+// '\r' of a CRLF file), and is not a comment: a comment ending in one (a
+// Windows folder) must not swallow the line after it.
+bool continues(const std::string& line) {
+  std::size_t end = line.size();
+  if (end > 0 && line[end - 1] == '\r') --end;
+  if (end == 0 || line[end - 1] != '\\') return false;
+  const std::size_t first = line.find_first_not_of(" \t");
+  return first != std::string::npos && line[first] != '#';
+}
+
 }  // namespace
 
 Mesh read_obj(const std::string& path) {
@@ -57,11 +68,29 @@ Mesh read_obj(const std::string& path) {
   if (!in) throw LoadError(path + ": cannot open");
   Mesh mesh;
   mesh.source = path;
-  std::string line;
-  long number = 0;
+  std::string line, more;
+  long number = 0;    // the line that messages name: the first of a continued line
+  long physical = 0;  // lines read
   auto fail = [&](const std::string& what) { throw LoadError(path + ":" + std::to_string(number) + ": " + what); };
-  while (next_line(*in.rdbuf(), line, [&](const std::string& what) { ++number; fail(what); })) {
-    ++number;
+  const auto too_long = [&](const std::string& what) {
+    number = physical + 1;
+    fail(what);
+  };
+  while (next_line(*in.rdbuf(), line, too_long)) {
+    number = ++physical;
+    // A backslash at the end joins the next line to this one (the OBJ
+    // format's continuation, for long faces), in place of the backslash.
+    while (continues(line)) {
+      line.resize(line.find_last_of('\\'));
+      if (!next_line(*in.rdbuf(), more, too_long)) break;  // the file's last line: nothing to join
+      ++physical;
+      if (line.size() + 1 + more.size() > limits::kMaxMeshLineBytes) {
+        number = physical;
+        fail("line longer than " + std::to_string(limits::kMaxMeshLineBytes) + " bytes (with the lines it continues)");
+      }
+      line += ' ';
+      line += more;
+    }
     std::size_t pos = 0;
     if (number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) pos = 3;  // a UTF-8 byte-order mark (Windows editors)
     const std::string_view tag = next_token(line, pos);
