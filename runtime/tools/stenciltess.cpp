@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
   int rate = 0, threads = 0, width = 1920;
   double tolerance = 0, pixels = 0, fov = 60;
   app.add_option("--tables", tables_spec, "a .sgs or .sgt table file, the directory stencilgen wrote it to, or a directory of exact JSON quad tables")->required();
-  app.add_option("--mesh", mesh_path, "control mesh (.obj): polygons for a quad scheme (closed, or with boundaries: see above), triangles for a triangle scheme (closed; Loop: or with boundaries)")->required();
+  app.add_option("--mesh", mesh_path, "control mesh (.obj, or .off by its extension): polygons for a quad scheme (closed, or with boundaries: see above), triangles for a triangle scheme (closed; Loop: or with boundaries)")->required();
   app.add_option("--out", out, "output .obj (text) or .ply (binary), written whole or not at all; with --frames a pattern such as out/f%04d.ply")->required();
   auto* r1 = app.add_option("--rate", rate, "uniform rate N (1..4096) for every face");
   auto* r2 = app.add_option("--rates", rates_file, "file with one rate per face (file order)");
@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
         if (app.count(option)) throw std::runtime_error(std::string(option) + " applies to --camera rates only");
     const auto t0 = Clock::now();
     const auto tables = Tables::load(tables_spec);
-    Mesh mesh = read_obj(mesh_path);
+    Mesh mesh = read_mesh(mesh_path);
     boundary.apply(mesh);
     for (const std::string& warning : mesh.warnings) std::cerr << warning << '\n';
     std::vector<int> rates;
@@ -161,7 +161,7 @@ int main(int argc, char** argv) {
     for (std::size_t k = 0; k < files.size(); ++k) names.push_back(stencil_tools::frame_name(out, k));
     stencil_tools::check_outputs_are_not_inputs(names, inputs, {read.folder});
     for (std::size_t k = 0; k < files.size(); ++k) {
-      Mesh frame = read_obj(files[k]);
+      Mesh frame = read_mesh(files[k]);
       if (!topology->same_connectivity(frame.vertex_count(), frame.face_sizes, frame.face_vertices))
         throw std::runtime_error(files[k] + ": frame " + std::to_string(k) + " has another connectivity than " + mesh_path);
       // The plan and the topology are the mesh's: a frame's own tags would
@@ -178,7 +178,7 @@ int main(int argc, char** argv) {
     stencil_tools::StagedFiles written;
     double per_frame = 0;
     for (std::size_t k = 0; k < files.size(); ++k) {
-      const Mesh frame = read_obj(files[k]);
+      const Mesh frame = read_mesh(files[k]);
       const auto t1 = Clock::now();
       try {
         surface.set_positions(frame.positions);

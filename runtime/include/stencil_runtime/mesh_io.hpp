@@ -25,6 +25,21 @@ namespace stencil_runtime {
 // with the Mesh refuses the ones the runtime cannot evaluate.
 Mesh read_obj(const std::string& path);
 
+// OFF (as CGAL, Meshlab and the Princeton shape benchmark write it): the
+// keyword OFF (or COFF, NOFF, STOFF, ..., with the counts after it or on the
+// next line), `vertices faces edges`, one `x y z` line per vertex (normals,
+// colours and texture coordinates after it are allowed and not read), one
+// `n i0 ... i(n-1)` line per face with indices from 0 (a colour after it
+// allowed); '#' comments. Refused with a LoadError naming the file and line,
+// as for OBJ: the file limits, counts out of range or more than the file can
+// hold, coordinates that are not finite, indices out of range, faces of fewer
+// than three vertices, a file that ends early or goes on past its counts,
+// binary OFF and 4OFF/nOFF (other shapes of vertex). No tags (OFF has none).
+Mesh read_off(const std::string& path);
+
+// A control mesh by its extension: .off (any case) is OFF, anything else OBJ.
+Mesh read_mesh(const std::string& path);
+
 // A path's extension in lower case ("scan.PLY" gives ".ply"): what every
 // reader and writer chooses its format by, so "OUT.OBJ" is an OBJ file.
 std::string lowercase_extension(const std::string& path);

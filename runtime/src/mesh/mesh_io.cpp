@@ -14,6 +14,7 @@
 #include "coordinates.hpp"
 #include "file_output.hpp"
 #include "line_tokens.hpp"
+#include "mesh_file.hpp"
 #include "obj_tags.hpp"
 #include "stencil_runtime/limits.hpp"
 
@@ -23,23 +24,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using detail::next_line;
 using detail::next_token;
-
-// One line (without its '\n'); false at the end of the input. Throws via `fail`
-// for a line longer than the limit, before reading it whole.
-template <class Fail>
-bool next_line(std::streambuf& in, std::string& line, const Fail& fail) {
-  line.clear();
-  int c = in.sbumpc();
-  if (c == std::char_traits<char>::eof()) return false;
-  while (c != std::char_traits<char>::eof() && c != '\n') {
-    if (line.size() >= limits::kMaxMeshLineBytes)
-      fail("line longer than " + std::to_string(limits::kMaxMeshLineBytes) + " bytes");
-    line.push_back(static_cast<char>(c));
-    c = in.sbumpc();
-  }
-  return true;
-}
 
 // Whether `line` ends in OBJ's line continuation, a backslash (before a
 // '\r' of a CRLF file), and is not a comment: a comment ending in one (a
@@ -54,7 +40,7 @@ bool continues(const std::string& line) {
 
 }  // namespace
 
-Mesh read_obj(const std::string& path) {
+std::ifstream detail::open_mesh_file(const std::string& path) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (ec || !fs::exists(status)) throw LoadError(path + ": cannot open (no such file)");
@@ -66,9 +52,15 @@ Mesh read_obj(const std::string& path) {
                     std::to_string(limits::kMaxMeshFileBytes) + " bytes");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw LoadError(path + ": cannot open");
+  return in;
+}
+
+Mesh read_obj(const std::string& path) {
+  std::ifstream in = detail::open_mesh_file(path);
   Mesh mesh;
   mesh.source = path;
   std::string line, more;
+  std::string first_word;  // the file's first word, for the message when there are no faces
   long number = 0;    // the line that messages name: the first of a continued line
   long physical = 0;  // lines read
   auto fail = [&](const std::string& what) { throw LoadError(path + ":" + std::to_string(number) + ": " + what); };
@@ -94,6 +86,7 @@ Mesh read_obj(const std::string& path) {
     std::size_t pos = 0;
     if (number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) pos = 3;  // a UTF-8 byte-order mark (Windows editors)
     const std::string_view tag = next_token(line, pos);
+    if (first_word.empty() && !tag.empty() && tag[0] != '#') first_word = tag.substr(0, 16);
     if (tag == "v") {
       Point p{};
       for (int k = 0; k < 3; ++k) {
@@ -156,7 +149,14 @@ Mesh read_obj(const std::string& path) {
       detail::read_obj_tag(std::string_view(line).substr(pos), number, path + ":" + std::to_string(number), mesh, fail);
     }
   }
-  if (mesh.face_sizes.empty()) throw LoadError(path + ": no faces");
+  if (mesh.face_sizes.empty()) {
+    // An OFF or PLY file read as OBJ has no OBJ lines at all: say what it is.
+    const std::string_view word = first_word;
+    const bool off = word.size() >= 3 && word.substr(word.size() - 3) == "OFF";
+    throw LoadError(path + ": no faces" +
+                    (off ? " (it starts like an OFF file: name it .off to read it as one)"
+                         : word == "ply" ? " (it is a PLY file: control meshes are read from OBJ and OFF files)" : ""));
+  }
   detail::check_obj_tags(mesh, [&](long at, const std::string& what) {
     throw LoadError(path + ":" + std::to_string(at) + ": " + what);
   });
@@ -211,6 +211,8 @@ void write_ply(const PolygonSoup& s, std::FILE* f) {
 
 }  // namespace
 
+
+Mesh read_mesh(const std::string& path) { return lowercase_extension(path) == ".off" ? read_off(path) : read_obj(path); }
 
 std::string lowercase_extension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
