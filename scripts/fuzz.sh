@@ -47,6 +47,7 @@ done
 target_flags() {
   case "$1" in
     obj_mesh) echo "-dict=fuzz/dict/obj.dict" ;;
+    off_mesh) echo "-dict=fuzz/dict/off.dict" ;;
     quad_json_table|quad_json_regular|curve_table_json|surface_table_verify) echo "-dict=fuzz/dict/json_tables.dict" ;;
     curve_scheme|quad_scheme|triangle_scheme) echo "-dict=fuzz/dict/scheme.dict" ;;
     scheme_param) echo "-dict=fuzz/dict/scheme.dict -max_len=65536" ;;
