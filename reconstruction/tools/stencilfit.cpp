@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
   app.add_option("--points", points_path, "the points: .ply or .off (vertices; either case), any other name `x y z` or `x y z nx ny nz` lines (.xyz, .txt)")
       ->required();
   long long control_points = 0;  // signed, so that a negative count is named rather than wrapped
-  auto* control = app.add_option("--control", control_path, "the initial control mesh (.obj, or .off by its extension) near the points; closed, or with boundaries as docs/runtime.md allows for the scheme");
+  auto* control = app.add_option("--control", control_path, "the initial control mesh (.obj, or .off or .ply by its extension) near the points; closed, or with boundaries as docs/runtime.md allows for the scheme");
   auto* made = app.add_option("--control-points", control_points,
                               "make the initial control mesh from the points, with this many vertices (at least 4)");
   control->excludes(made);

@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
   double tolerance = 1e-9, max_distance = INFINITY;
   int threads = 0;
   app.add_option("--tables", tables_spec, "a .sgs or .sgt table file, or the directory stencilgen wrote it to")->required();
-  app.add_option("--mesh", mesh_path, "control mesh (.obj, or .off by its extension): closed, or with boundaries for a quad scheme or Loop (no --signed then)")->required();
+  app.add_option("--mesh", mesh_path, "control mesh (.obj, or .off or .ply by its extension): closed, or with boundaries for a quad scheme or Loop (no --signed then)")->required();
   app.add_option("--points", points_path, "query points: .ply or .off (vertices; either case), any other name `x y z` or `x y z nx ny nz` lines (.xyz, .txt)")->required();
   app.add_option("--out", out_path, "result file (default: standard output)");
   app.add_flag("--signed", signed_distance, "signed distances: negative inside the surface (outward-oriented faces)");

@@ -161,7 +161,7 @@ int main(int argc, char** argv) {
   std::string tables_spec, mesh_path, uv, batch, face_text;
   double tolerance = 1e-12;
   app.add_option("--tables", tables_spec, "a .sgs or .sgt table file, the directory stencilgen wrote it to, or a directory of exact JSON quad tables")->required();
-  app.add_option("--mesh", mesh_path, "control mesh (.obj, or .off by its extension): polygons for a quad scheme (closed, or with boundaries: see above), triangles for a triangle scheme (closed; Loop: or with boundaries)")->required();
+  app.add_option("--mesh", mesh_path, "control mesh (.obj, or .off or .ply by its extension): polygons for a quad scheme (closed, or with boundaries: see above), triangles for a triangle scheme (closed; Loop: or with boundaries)")->required();
   app.add_option("--face", face_text, "face number, from 0 in file order");
   app.add_option("--uv", uv, "parameters U,V: exact rationals (1/3,1/2) or decimals (0.3,0.7)");
   app.add_option("--tolerance", tolerance,

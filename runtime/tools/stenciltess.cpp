@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
   int rate = 0, threads = 0, width = 1920;
   double tolerance = 0, pixels = 0, fov = 60;
   app.add_option("--tables", tables_spec, "a .sgs or .sgt table file, the directory stencilgen wrote it to, or a directory of exact JSON quad tables")->required();
-  app.add_option("--mesh", mesh_path, "control mesh (.obj, or .off by its extension): polygons for a quad scheme (closed, or with boundaries: see above), triangles for a triangle scheme (closed; Loop: or with boundaries)")->required();
+  app.add_option("--mesh", mesh_path, "control mesh (.obj, or .off or .ply by its extension): polygons for a quad scheme (closed, or with boundaries: see above), triangles for a triangle scheme (closed; Loop: or with boundaries)")->required();
   app.add_option("--out", out, "output .obj (text) or .ply (binary), written whole or not at all; with --frames a pattern such as out/f%04d.ply")->required();
   auto* r1 = app.add_option("--rate", rate, "uniform rate N (1..4096) for every face");
   auto* r2 = app.add_option("--rates", rates_file, "file with one rate per face (file order)");

@@ -37,7 +37,17 @@ Mesh read_obj(const std::string& path);
 // binary OFF and 4OFF/nOFF (other shapes of vertex). No tags (OFF has none).
 Mesh read_off(const std::string& path);
 
-// A control mesh by its extension: .off (any case) is OFF, anything else OBJ.
+// PLY (ASCII, binary little- or big-endian): the element `vertex` first, with
+// float or double x, y, z, and an element `face` with a list
+// `vertex_indices` (or `vertex_index`) of indices from 0; other elements and
+// properties are walked and not read. Refused with a LoadError naming the
+// file and the header line, text line, binary item or face: the file limits,
+// counts the file cannot hold, a file cut short or longer than its header
+// says, coordinates that are not finite, indices out of range, faces of
+// fewer than three vertices. As for OFF, no tags.
+Mesh read_ply_mesh(const std::string& path);
+
+// A control mesh by its extension (any case): .off is OFF, .ply PLY, anything else OBJ.
 Mesh read_mesh(const std::string& path);
 
 // A path's extension in lower case ("scan.PLY" gives ".ply"): what every

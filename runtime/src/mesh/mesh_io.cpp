@@ -155,7 +155,7 @@ Mesh read_obj(const std::string& path) {
     const bool off = word.size() >= 3 && word.substr(word.size() - 3) == "OFF";
     throw LoadError(path + ": no faces" +
                     (off ? " (it starts like an OFF file: name it .off to read it as one)"
-                         : word == "ply" ? " (it is a PLY file: control meshes are read from OBJ and OFF files)" : ""));
+                         : word == "ply" ? " (it is a PLY file: name it .ply to read it as one)" : ""));
   }
   detail::check_obj_tags(mesh, [&](long at, const std::string& what) {
     throw LoadError(path + ":" + std::to_string(at) + ": " + what);
@@ -212,7 +212,10 @@ void write_ply(const PolygonSoup& s, std::FILE* f) {
 }  // namespace
 
 
-Mesh read_mesh(const std::string& path) { return lowercase_extension(path) == ".off" ? read_off(path) : read_obj(path); }
+Mesh read_mesh(const std::string& path) {
+  const std::string ext = lowercase_extension(path);
+  return ext == ".off" ? read_off(path) : ext == ".ply" ? read_ply_mesh(path) : read_obj(path);
+}
 
 std::string lowercase_extension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();

@@ -1,12 +1,17 @@
-// OFF control meshes (read_off, and the tools through read_mesh): every
-// bundled OBJ mesh written as OFF by the test's own conversion reads as the
-// same mesh, the variants real writers produce read alike, and each way a
-// file can be wrong is refused with a message naming its line.
+// OFF and PLY control meshes (read_off, read_ply_mesh, and the tools through
+// read_mesh): every bundled OBJ mesh written as OFF and PLY by the test's own
+// conversion reads as the same mesh, the variants real writers produce read
+// alike, and each way a file can be wrong is refused with a message naming
+// its line, item or face.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -52,6 +57,73 @@ std::string obj_to_off(const fs::path& obj, const std::string& keyword = "OFF\n"
     out += std::to_string(vertices.size()) + " " + std::to_string(faces.size()) + " 0\n";
   for (const std::string& v : vertices) out += v + "\n";
   for (const std::string& f : faces) out += f + "\n";
+  return out;
+}
+
+// An OBJ file's vertices and faces (indices from 0), read here without the runtime.
+struct Plain {
+  std::vector<std::array<double, 3>> vertices;
+  std::vector<std::vector<long>> faces;
+};
+Plain plain_of(const fs::path& obj) {
+  Plain out;
+  std::ifstream in(obj);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    std::string tag;
+    words >> tag;
+    if (tag == "v") {
+      std::array<double, 3> p{};
+      words >> p[0] >> p[1] >> p[2];
+      out.vertices.push_back(p);
+    } else if (tag == "f") {
+      std::vector<long> face;
+      for (std::string item; words >> item;) face.push_back(std::stol(item.substr(0, item.find('/'))) - 1);
+      out.faces.push_back(face);
+    }
+  }
+  return out;
+}
+
+// The bytes of `value` in the given byte order.
+template <class T>
+std::string bytes_of(T value, bool big) {
+  std::string raw(reinterpret_cast<const char*>(&value), sizeof value);
+  if (big != (std::endian::native == std::endian::big)) std::reverse(raw.begin(), raw.end());
+  return raw;
+}
+
+// The mesh as PLY: "ascii", "binary_little_endian" or "binary_big_endian",
+// with a uchar before x on every vertex and a uchar after every face's list
+// (list uchar int in little-endian and text, list ushort uint in big-endian).
+std::string plain_to_ply(const Plain& m, const std::string& format) {
+  const bool text = format == "ascii", big = format == "binary_big_endian";
+  std::string out = "ply\nformat " + format + " 1.0\ncomment by the test\nelement vertex " + std::to_string(m.vertices.size()) +
+                    "\nproperty uchar quality\nproperty double x\nproperty double y\nproperty double z\nelement face " +
+                    std::to_string(m.faces.size()) + "\nproperty list " + (big ? "ushort uint" : "uchar int") +
+                    " vertex_indices\nproperty uchar red\nend_header\n";
+  for (const auto& p : m.vertices) {
+    if (text) {
+      std::ostringstream line;
+      line.precision(17);
+      line << "7 " << p[0] << " " << p[1] << " " << p[2] << "\n";
+      out += line.str();
+    } else {
+      out += '\7';
+      for (const double x : p) out += bytes_of(x, big);
+    }
+  }
+  for (const auto& f : m.faces) {
+    if (text) {
+      out += std::to_string(f.size());
+      for (const long i : f) out += " " + std::to_string(i);
+      out += " 200\n";
+    } else {
+      out += big ? bytes_of(static_cast<std::uint16_t>(f.size()), true) : std::string(1, static_cast<char>(f.size()));
+      for (const long i : f) out += big ? bytes_of(static_cast<std::uint32_t>(i), true) : bytes_of(static_cast<std::int32_t>(i), false);
+      out += '\310';
+    }
+  }
   return out;
 }
 
@@ -181,5 +253,98 @@ TEST_CASE("the tools read OFF control meshes and refuse bad ones with nothing wr
   CHECK(bad.status == 1);
   CHECK_THAT(bad.output, Catch::Contains("cut.off:2: 8 vertices and 6 faces cannot fit in a file of 16 bytes"));
   CHECK_FALSE(fs::exists(out));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("PLY meshes in text and both byte orders read as the OBJ meshes they were written from", "[runtime][mesh]") {
+  const fs::path dir = fs::temp_directory_path() / ("stencil-ply-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  for (const auto& entry : fs::directory_iterator(kMeshes)) {
+    if (entry.path().extension() != ".obj") continue;
+    const Mesh obj = read_obj(entry.path().string());
+    const Plain plain = plain_of(entry.path());
+    for (const char* format : {"ascii", "binary_little_endian", "binary_big_endian"}) {
+      INFO(entry.path().filename().string() << " as " << format);
+      const fs::path ply = dir / (entry.path().stem().string() + ".ply");
+      write_file(ply, plain_to_ply(plain, format));
+      Mesh m;
+      REQUIRE_NOTHROW(m = read_mesh(ply.string()));
+      CHECK(same_mesh(m, obj));
+    }
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("bad PLY meshes are refused with the line, item or face", "[runtime][mesh][robustness]") {
+  const fs::path dir = fs::temp_directory_path() / ("stencil-ply-bad-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  Plain tetra;
+  tetra.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  tetra.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  const auto refused = [&](const std::string& text, const std::string& message) {
+    write_file(dir / "bad.ply", text);
+    try {
+      read_mesh((dir / "bad.ply").string());
+      FAIL("read: " + message);
+    } catch (const LoadError& e) {
+      CHECK_THAT(e.what(), Catch::Contains(message));
+    }
+  };
+  const std::string text = plain_to_ply(tetra, "ascii");
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string s = text;
+    s.replace(s.find(from), from.size(), to);
+    return s;
+  };
+  // Header lines 1-12, vertices 13-16, faces 17-20.
+  refused(text.substr(0, text.find("3 0 2 1 200")).replace(text.find("element face 4"), std::string("element face 4\nproperty list uchar int vertex_indices\nproperty uchar red\n").size(), ""),
+          "no faces (a PLY control mesh needs an element 'face' with a list 'vertex_indices')");
+  Plain no_faces = tetra;
+  no_faces.faces.clear();
+  refused(plain_to_ply(no_faces, "ascii"), "bad.ply: no faces");
+  refused(with("3 0 2 1 200", "2 0 2 200"), "face 0 (numbered from 0) has 2 vertices; a face needs at least three");
+  refused(with("3 0 1 3 200", "3 0 1 4 200"), "face 1 (numbered from 0): vertex index 4 refers to no vertex (PLY counts them from 0; the file has 4)");
+  refused(with("3 0 1 3 200", "3 0 1 -1 200"), "vertex index -1 refers to no vertex");
+  refused(with("3 0 3 2 200", "3 0 3 2"), "bad.ply:19: face 3: fewer values than its properties declare");
+  refused(with("3 0 3 2 200", "3 0 3 2 200 1"), "bad.ply:19: face 3: more values than its properties declare");
+  refused(with("3 0 3 2 200", "3 0 3 x 200"), "bad.ply:19: 'x' is not a vertex index");
+  refused(with("3 0 3 2 200", "3 0 3 2.5 200"), "bad.ply:19: '2.5' is not a vertex index");
+  refused(with("3 1 2 3 200\n", ""), "truncated: the file ends after 3 of the 4 lines of the elements after the points (face");
+  refused(text + "3 1 2 3 200\n", "bad.ply:21: more lines than the header's 4 points and later elements declare");
+  refused(with("property list uchar int vertex_indices", "property list uchar float vertex_indices"),
+          "bad.ply:10: a face's vertex indices must be integers");
+  // Binary: a negative signed index, an index past the vertices, and a face cut short.
+  std::string binary = plain_to_ply(tetra, "binary_little_endian");
+  const std::size_t last_face = binary.size() - (1 + 3 * 4 + 1);
+  std::string negative = binary;
+  negative.replace(last_face + 1, 4, bytes_of(std::int32_t{-1}, false));
+  refused(negative, "face 3 (numbered from 0): vertex index -1 refers to no vertex");
+  std::string beyond = plain_to_ply(tetra, "binary_big_endian");
+  beyond.replace(beyond.size() - 5, 4, bytes_of(std::uint32_t{70000}, true));
+  refused(beyond, "face 3 (numbered from 0): vertex index 70000 refers to no vertex");
+  refused(binary.substr(0, binary.size() - 2), "truncated: the file ends within face 4 of 4 (binary)");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("the tools read PLY control meshes, the tessellations they write among them", "[runtime][mesh][cli]") {
+  const fs::path dir = fs::temp_directory_path() / ("stencil-ply-cli-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string tables = generated_table("catmull-clark", "--valence 3-8 --n 4", "sgs").string();
+  write_file(dir / "cube.ply", plain_to_ply(plain_of(kMeshes / "cube.obj"), "binary_big_endian"));
+  const CliResult ply = run_stencileval("--tables " + tables + " --mesh " + (dir / "cube.ply").string() + " --face 3 --uv 1/4,3/4 --normal");
+  const CliResult obj = run_stencileval("--tables " + tables + " --mesh " + (kMeshes / "cube.obj").string() + " --face 3 --uv 1/4,3/4 --normal");
+  INFO(ply.output);
+  CHECK(ply.status == 0);
+  CHECK(ply.output == obj.output);
+  // stenciltess's own PLY (binary, float coordinates, quads) is a control mesh too: the same mesh as its OBJ.
+  const std::string tess_ply = (dir / "tess.ply").string(), tess_obj = (dir / "tess.obj").string();
+  REQUIRE(run_stenciltess("--tables " + tables + " --mesh " + (kMeshes / "cube.obj").string() + " --rate 2 --out " + tess_ply).status == 0);
+  REQUIRE(run_stenciltess("--tables " + tables + " --mesh " + (kMeshes / "cube.obj").string() + " --rate 2 --out " + tess_obj).status == 0);
+  const Mesh from_ply = read_mesh(tess_ply), from_obj = read_mesh(tess_obj);
+  CHECK(from_ply.face_sizes == from_obj.face_sizes);
+  CHECK(from_ply.face_vertices == from_obj.face_vertices);
+  REQUIRE(from_ply.positions.size() == from_obj.positions.size());
+  for (std::size_t i = 0; i < from_ply.positions.size(); ++i)
+    for (int k = 0; k < 3; ++k) CHECK(from_ply.positions[i][k] == Approx(from_obj.positions[i][k]).margin(1e-7));
   fs::remove_all(dir);
 }
