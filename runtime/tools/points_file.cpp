@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "mesh/line_tokens.hpp"
 #include "mesh/ply_input.hpp"
 #include "stencil_runtime/error.hpp"
 #include "stencil_runtime/limits.hpp"
@@ -46,15 +47,7 @@ void for_each_line(const std::string& text, Each each) {
     start = end + 1;
     ++line_number;
     if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-    words.clear();
-    std::size_t i = 0;
-    while (i < line.size()) {
-      while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-      std::size_t j = i;
-      while (j < line.size() && !std::isspace(static_cast<unsigned char>(line[j]))) ++j;
-      if (j > i) words.push_back(line.substr(i, j - i));
-      i = j;
-    }
+    words = stencil_runtime::detail::split_words(line);
     if (!words.empty() && !each(line_number, words)) return;
   }
 }

@@ -1,6 +1,7 @@
 // Reading OFF meshes (Geomview's Object File Format, as CGAL, Meshlab and the
 // Princeton shape benchmark write it): the keyword, the counts, one vertex a
 // line, one face a line with its vertex count first, indices from 0.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -18,15 +19,11 @@ namespace stencil_runtime {
 
 namespace {
 
-using detail::next_token;
-
 // The words of a line before its comment, which starts at any '#' (CGAL's
 // own data has `0 0#red` after a vertex).
 std::vector<std::string_view> words_of(std::string_view line, std::size_t pos = 0) {
   line = line.substr(0, line.find('#'));
-  std::vector<std::string_view> words;
-  for (std::string_view t = next_token(line, pos); !t.empty(); t = next_token(line, pos)) words.push_back(t);
-  return words;
+  return detail::split_words(line.substr(std::min(pos, line.size())));
 }
 
 bool whole_number(std::string_view t, long long& out) {

@@ -13,6 +13,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "line_tokens.hpp"
 #include "mesh_file.hpp"
 #include "stencil_runtime/error.hpp"
 #include "stencil_runtime/limits.hpp"
@@ -21,6 +22,8 @@
 namespace stencil_runtime::detail {
 
 namespace {
+
+using detail::split_words;
 
 double checked_coordinate(double x, const std::string& where) {
   if (!std::isfinite(x) || std::fabs(x) > limits::kMaxCoordinate) {
@@ -100,19 +103,6 @@ bool next_text_line(const std::string& data, std::size_t& at, long& number, std:
   at = end + 1;
   ++number;
   return true;
-}
-
-std::vector<std::string_view> words_of(std::string_view line) {
-  std::vector<std::string_view> words;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    std::size_t j = i;
-    while (j < line.size() && !std::isspace(static_cast<unsigned char>(line[j]))) ++j;
-    if (j > i) words.push_back(line.substr(i, j - i));
-    i = j;
-  }
-  return words;
 }
 
 bool is_number(std::string_view w) {
@@ -247,7 +237,7 @@ PlyContent read_ply(const std::string& path, const std::string& data, bool faces
         throw LoadError(path + ":" + std::to_string(number + 1) + ": the file ends after " + std::to_string(p) + " of " +
                         std::to_string(count) + " points");
       const std::string where = path + ":" + std::to_string(number);
-      const std::vector<std::string_view> values = words_of(text);
+      const std::vector<std::string_view> values = split_words(text);
       if (values.size() < properties.size()) throw LoadError(where + ": expected " + std::to_string(properties.size()) + " values");
       if (values.size() > properties.size())
         throw LoadError(where + ": more than the " + std::to_string(properties.size()) + " values the header declares");
@@ -272,10 +262,10 @@ PlyContent read_ply(const std::string& path, const std::string& data, bool faces
           if (!next_text_line(data, start, number, text))
             throw LoadError(path + ": truncated: the file ends after " + std::to_string(lines) + " of the " +
                             std::to_string(later_lines) + " lines of the elements after the points (" + later.front().name + ", ...)");
-        } while (words_of(text).empty());
+        } while (split_words(text).empty());
         ++lines;
         const std::string where = path + ":" + std::to_string(number);
-        const std::vector<std::string_view> values = words_of(text);
+        const std::vector<std::string_view> values = split_words(text);
         std::size_t v = 0;
         for (std::size_t i = 0; i < e.properties.size(); ++i) {
           const Property& q = e.properties[i];
@@ -301,7 +291,7 @@ PlyContent read_ply(const std::string& path, const std::string& data, bool faces
       }
     }
     while (next_text_line(data, start, number, text))
-      if (!words_of(text).empty())
+      if (!split_words(text).empty())
         throw LoadError(path + ":" + std::to_string(number) + ": more lines than the header's " + std::to_string(count) + " points" +
                         (later.empty() ? "" : " and later elements") + " declare");
     return out;
