@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "algebra/real.hpp"
 #include "common/atomic_output.hpp"
 
 namespace sg {
@@ -33,6 +34,7 @@ void add_table_files(OutputTransaction& tx, const std::vector<std::vector<Table>
   for (const auto& by_rate : tables)
     for (const Table& t : by_rate) all.push_back(&t);
   std::vector<std::string> texts(all.size());
+  sg::prepare_real_limits();  // before threads first use Real (algebra/real.hpp)
   tbb::parallel_for(std::size_t(0), all.size(), [&](std::size_t k) { texts[k] = to_json(*all[k]); });
   for (std::size_t k = 0; k < all.size(); ++k)
     tx.add("v" + std::to_string(all[k]->valence) + "/n" + std::to_string(all[k]->n) + ".json", std::move(texts[k]));

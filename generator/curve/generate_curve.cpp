@@ -7,6 +7,7 @@
 #include <tbb/task_arena.h>
 #include <tbb/parallel_for.h>
 
+#include "algebra/real.hpp"
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "common/atomic_output.hpp"
@@ -88,6 +89,7 @@ std::vector<CurveTable> generate_curve_tables(const CurveScheme& scheme, const s
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
   const int workers = std::max(1, tbb::this_task_arena::max_concurrency());
+  sg::prepare_real_limits();  // before threads first use Real (algebra/real.hpp)
   tbb::parallel_for(
       0, workers,
       [&](int) {

@@ -4,6 +4,7 @@
 #include <mutex>
 #include <tbb/parallel_for.h>
 
+#include "algebra/real.hpp"
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "common/atomic_output.hpp"
@@ -59,6 +60,7 @@ QuadTableSet generate_quad_tables(const QuadScheme& scheme, const std::vector<in
   set.regular_tables.resize(rates.size());
   // phi' of the regular curve where it is C1: the regular patch's derivatives (docs/table-format.md).
   const DerivativeSchemes derivative = derivative_schemes(scheme.curve, 1);
+  sg::prepare_real_limits();  // before threads first use Real (algebra/real.hpp)
   tbb::parallel_for(std::size_t(0), rates.size(), [&](std::size_t r) {
     set.regular[r] = solve_by_residues(scheme.curve, 2 * rates[r]);
     set.regular_tables[r] = table_with_derivatives(scheme.curve, set.regular[r], derivative);
@@ -68,6 +70,7 @@ QuadTableSet generate_quad_tables(const QuadScheme& scheme, const std::vector<in
   const auto jobs = valence_rate_jobs(valences, rates);
   std::mutex report;
   std::vector<std::size_t> done(valences.size(), 0);
+  sg::prepare_real_limits();  // before threads first use Real (algebra/real.hpp)
   tbb::parallel_for(std::size_t(0), jobs.size(), [&](std::size_t k) {
     const auto [v, r] = jobs[k];
     const PatchGrid patch = solve_ev_patch(scheme, valences[v], 2 * rates[r], set.regular[r]);

@@ -6,6 +6,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "algebra/real.hpp"
 #include "base/error.hpp"
 #include "common/tenths_progress.hpp"
 #include "quad/ev_patch_solver.hpp"
@@ -54,6 +55,7 @@ QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valen
   std::mutex report;
   std::size_t done = 0;
   out.valences.resize(extraordinary.size());
+  sg::prepare_real_limits();  // before threads first use Real (algebra/real.hpp)
   tbb::parallel_for(std::size_t(0), extraordinary.size(), [&](std::size_t k) {
     const int v = extraordinary[k];
     QuadDescent::Valence& d = out.valences[k];
@@ -69,6 +71,7 @@ QuadDescent quad_descent(const QuadScheme& scheme, const std::vector<int>& valen
   });
   TenthsProgress sectors_done(progress, scheme.name + ": boundary, crease, corner, dart and cone sectors", sectors.size());
   out.sectors.resize(sectors.size());
+  sg::prepare_real_limits();  // before threads first use Real (algebra/real.hpp)
   tbb::parallel_for(std::size_t(0), sectors.size(), [&](std::size_t k) {
     QuadDescent::Sector& d = out.sectors[k];
     d.sector = sectors[k];

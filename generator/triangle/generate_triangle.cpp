@@ -5,6 +5,7 @@
 #include <tuple>
 #include <tbb/parallel_for.h>
 
+#include "algebra/real.hpp"
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "common/rate_spec.hpp"
@@ -28,6 +29,7 @@ TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const st
   // polynomial (sqrt(3)); Loop's quartic gives its derivatives directly.
   const bool derivatives = !regular_basis_is_polynomial(scheme);
   std::vector<BivariateGradient> gradient(rates.size());
+  sg::prepare_real_limits();  // before threads first use Real (algebra/real.hpp)
   tbb::parallel_for(std::size_t(0), rates.size(), [&](std::size_t r) {
     if (derivatives) std::tie(regular[r], gradient[r]) = solve_regular_with_gradient(scheme, 3 * rates[r]);
     else regular[r] = solve_regular(scheme, 3 * rates[r]);
@@ -38,6 +40,7 @@ TriangleTableSet generate_triangle_tables(const TriangleScheme& scheme, const st
   std::mutex report;
   std::vector<std::size_t> done(valences.size(), 0);
   std::vector<Real> worst(valences.size(), Real(0));
+  sg::prepare_real_limits();  // before threads first use Real (algebra/real.hpp)
   tbb::parallel_for(std::size_t(0), jobs.size(), [&](std::size_t k) {
     const auto [vi, r] = jobs[k];
     const int v = valences[vi];

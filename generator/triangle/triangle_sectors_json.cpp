@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "algebra/real.hpp"
 #include "base/error.hpp"
 #include "common/exact_rows.hpp"
 #include "common/hash.hpp"
@@ -51,6 +52,7 @@ TriangleSectorSet solve_triangle_sectors(const TriangleScheme& scheme, int max_f
   const std::vector<BoundarySector> sectors = triangle_sectors(max_faces, true);
   set.sectors.resize(sectors.size());
   TenthsProgress sectors_done(progress, scheme.name + ": boundary, crease, corner, dart and cone sectors", sectors.size());
+  sg::prepare_real_limits();  // before threads first use Real (algebra/real.hpp)
   tbb::parallel_for(std::size_t(0), sectors.size(), [&](std::size_t s) {
     set.sectors[s] = triangle_sector_descent(scheme, sectors[s], regular_layout);
     sectors_done.done();
