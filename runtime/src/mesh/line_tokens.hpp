@@ -1,6 +1,7 @@
 #pragma once
 // Splitting a line of a text mesh file (OBJ) into whitespace-separated tokens.
 #include <cctype>
+#include <charconv>
 #include <cstddef>
 #include <string_view>
 #include <vector>
@@ -29,6 +30,16 @@ inline std::vector<std::string_view> split_words(std::string_view line) {
     i = j;
   }
   return words;
+}
+
+// Whether the whole of `word` is an integer (a number), stored in `out`.
+inline bool whole_number(std::string_view word, long long& out) {
+  const auto [stop, err] = std::from_chars(word.data(), word.data() + word.size(), out);
+  return err == std::errc() && stop == word.data() + word.size();
+}
+inline bool real_number(std::string_view word, double& out) {
+  const auto [stop, err] = std::from_chars(word.data(), word.data() + word.size(), out);
+  return err == std::errc() && stop == word.data() + word.size();
 }
 
 }  // namespace stencil_runtime::detail

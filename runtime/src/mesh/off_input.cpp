@@ -26,15 +26,8 @@ std::vector<std::string_view> words_of(std::string_view line, std::size_t pos = 
   return detail::split_words(line.substr(std::min(pos, line.size())));
 }
 
-bool whole_number(std::string_view t, long long& out) {
-  const auto [end, err] = std::from_chars(t.data(), t.data() + t.size(), out);
-  return err == std::errc() && end == t.data() + t.size();
-}
-
-bool real_number(std::string_view t, double& out) {
-  const auto [end, err] = std::from_chars(t.data(), t.data() + t.size(), out);
-  return err == std::errc() && end == t.data() + t.size();
-}
+using detail::real_number;
+using detail::whole_number;
 
 // The keyword's prefixes name what each vertex line holds besides x y z:
 // ST texture coordinates, C a colour, N a normal; 4 (homogeneous) and n (any

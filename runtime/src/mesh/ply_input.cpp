@@ -107,12 +107,7 @@ bool next_text_line(const std::string& data, std::size_t& at, long& number, std:
 
 bool is_number(std::string_view w) {
   double x = 0;
-  const auto [stop, err] = std::from_chars(w.data(), w.data() + w.size(), x);
-  return err == std::errc() && stop == w.data() + w.size();
-}
-bool whole_number(std::string_view w, long long& out) {
-  const auto [stop, err] = std::from_chars(w.data(), w.data() + w.size(), out);
-  return err == std::errc() && stop == w.data() + w.size();
+  return real_number(w, x);
 }
 
 }  // namespace
