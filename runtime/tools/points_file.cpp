@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "mesh/coordinates.hpp"
 #include "mesh/line_tokens.hpp"
 #include "mesh/ply_input.hpp"
 #include "stencil_runtime/error.hpp"
@@ -25,14 +26,7 @@ namespace limits = stencil_runtime::limits;
 // Points files are limited like meshes (limits.hpp).
 constexpr std::size_t kMaxPointsFileBytes = std::size_t{4} << 30;
 
-double checked_coordinate(double x, const std::string& where) {
-  if (!std::isfinite(x) || std::fabs(x) > limits::kMaxCoordinate) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", x);
-    throw std::runtime_error(where + ": coordinate " + text + " is not a finite number of magnitude at most 1e37");
-  }
-  return x;
-}
+using stencil_runtime::checked_file_coordinate;
 
 // The text's lines in order, without comments ('#' to the end of the line),
 // split into words; blank lines are skipped. `each` gets the line number too.
@@ -59,7 +53,7 @@ Point parse_point(const std::vector<std::string_view>& words, const std::string&
     const auto [stop, err] = std::from_chars(w.data(), w.data() + w.size(), p[static_cast<std::size_t>(k)]);
     if (err != std::errc() || stop != w.data() + w.size())
       throw std::runtime_error(where + ": " + stencil_runtime::quoted_excerpt(w) + " is not a number");
-    checked_coordinate(p[static_cast<std::size_t>(k)], where);
+    checked_file_coordinate(p[static_cast<std::size_t>(k)], where);
   }
   return p;
 }

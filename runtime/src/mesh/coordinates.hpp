@@ -5,6 +5,7 @@
 // its own error type.
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <string>
 
 #include "stencil_runtime/error.hpp"
@@ -23,6 +24,18 @@ inline std::string coordinate_fault(const Point* points, std::size_t count, cons
         return std::string(noun) + " " + std::to_string(v) + " (numbered from 0) has the coordinate " + number_text(x) +
                "; coordinates must be finite and at most " + number_text(limits::kMaxCoordinate) + " in magnitude";
   return {};
+}
+
+// `x` where it keeps the rule, else LoadError "<where>: coordinate <x> is not
+// a finite number of magnitude at most 1e37": what the readers of points and
+// meshes in files say (a file's number, named by its line or item).
+inline double checked_file_coordinate(double x, const std::string& where) {
+  if (!std::isfinite(x) || std::fabs(x) > limits::kMaxCoordinate) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", x);
+    throw LoadError(where + ": coordinate " + text + " is not a finite number of magnitude at most 1e37");
+  }
+  return x;
 }
 
 // The diagonal of the bounding box of points[0 .. count) (0 for none): what

@@ -13,6 +13,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "coordinates.hpp"
 #include "line_tokens.hpp"
 #include "mesh_file.hpp"
 #include "stencil_runtime/error.hpp"
@@ -25,14 +26,6 @@ namespace {
 
 using detail::split_words;
 
-double checked_coordinate(double x, const std::string& where) {
-  if (!std::isfinite(x) || std::fabs(x) > limits::kMaxCoordinate) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", x);
-    throw LoadError(where + ": coordinate " + text + " is not a finite number of magnitude at most 1e37");
-  }
-  return x;
-}
 
 // Bytes of a PLY scalar type; 0 for a name that is none.
 int type_bytes(const std::string& type) {
@@ -242,7 +235,7 @@ PlyContent read_ply(const std::string& path, const std::string& data, bool faces
         if (err != std::errc() || stop != values[i].data() + values[i].size())
           throw LoadError(where + ": " + quoted_excerpt(values[i]) + " is not a number");
         for (int k = 0; k < 3; ++k)
-          if (slot[k] == static_cast<int>(i)) out.points[p][static_cast<std::size_t>(k)] = checked_coordinate(x, where);
+          if (slot[k] == static_cast<int>(i)) out.points[p][static_cast<std::size_t>(k)] = checked_file_coordinate(x, where);
       }
     }
     // The later elements, an item a line (blank lines skipped): each line
@@ -303,7 +296,7 @@ PlyContent read_ply(const std::string& path, const std::string& data, bool faces
       const int bytes = std::abs(properties[i].bytes);
       for (int k = 0; k < 3; ++k)
         if (slot[k] == static_cast<int>(i))
-          out.points[p][static_cast<std::size_t>(k)] = checked_coordinate(
+          out.points[p][static_cast<std::size_t>(k)] = checked_file_coordinate(
               real_at(data.data() + offset, bytes, big_endian), path + ": point " + std::to_string(p + 1) + " of " + std::to_string(count) + " (binary)");
       offset += static_cast<std::size_t>(bytes);
     }
